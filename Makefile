@@ -1,0 +1,24 @@
+# Everything runs inside .venv, created and filled on first use from nothing but python3.
+PYTHON ?= python3
+VENV := .venv
+VPY := $(VENV)/bin/python
+STAMP := $(VENV)/.installed-stamp
+export PYTHONHASHSEED := 0
+
+.PHONY: derive test bench clean-venv
+
+$(STAMP): pyproject.toml constraints.txt
+	test -x $(VPY) || $(PYTHON) -m venv $(VENV)
+	$(VPY) -m pip install --quiet -c constraints.txt -e '.[derive,test]'
+	touch $(STAMP)
+
+## make derive: re-derive every result with sympy and rewrite generated/ (kernels + DERIVATION.md)
+derive: $(STAMP)
+	$(VPY) -m derive --out generated
+
+## make test: run the test suite (derivation up-to-date check, kernels vs paper and vs mpmath)
+test: $(STAMP)
+	$(VPY) -m pytest -q
+
+clean-venv:
+	rm -rf $(VENV)

@@ -1,0 +1,42 @@
+"""``python -m derive --out DIR``: run every derivation, write the kernels and DERIVATION.md into DIR."""
+import argparse
+import pathlib
+
+from . import approach, gap, load, pressure
+from .emit import module_source, package_init
+from .report import Report
+
+# (module, docstring of the generated file); order = order of the report
+MODULES = [
+    (pressure, "Pressure solution (section 2): checks only, its kernel is emitted with the load."),
+    (load, "Load-contact size relation (sections 3-4): (4.4), (4.5), (2.6), (3.4), (3.5), (5.4), P* of section 6."),
+    (approach, "Approach delta (section 5): (5.3)-(5.8) with the sums (A.13)-(A.15)."),
+    (gap, "Gap function h(phi) outside the contact (5.9) and h(pi) (5.10) in closed form."),
+]
+
+
+def run(out):
+    out = pathlib.Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    report = Report()
+    emitted = []
+    for module, doc in MODULES:
+        name = module.__name__.rsplit(".", 1)[-1]
+        kernels = module.derive(report)
+        if kernels:
+            (out / f"{name}.py").write_text(module_source(name, doc, kernels))
+            emitted.append(name)
+        print(f"derived {name}: {len(kernels)} kernels")
+    (out / "__init__.py").write_text(package_init(emitted))
+    (out / "DERIVATION.md").write_text(report.markdown() + "\n")
+    print(f"wrote {out}/DERIVATION.md ({len(report.errata)} errata)")
+
+
+def main():
+    parser = argparse.ArgumentParser(prog="python -m derive", description=__doc__)
+    parser.add_argument("--out", default="generated", help="output folder (default: generated)")
+    run(parser.parse_args().out)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,14 @@
+"""jkrcyl: JKR adhesion of a cylinder in a conforming cylindrical hole, in closed form.
+
+    m = jkrcyl.Materials(G=1.0, kappa=2.0, G_I=1.0, kappa_I=2.0)
+    c = jkrcyl.Contact(R=1.0, Delta=0.01, w=1e-4, materials=m)
+    s = c.state(a)       # a = tan(eps/2): P, B, C, P_star, K, delta, h_pi, feasible, ...
+
+The kernels are emitted by ``make derive`` into jkrcyl.generated; jkrcyl.paper types the
+paper's printed formulas by hand and serves as the reference in the tests.
+"""
+from .contact import Contact, State
+from .critical import a_crit
+from .materials import Materials
+
+__all__ = ["Contact", "Materials", "State", "a_crit"]

@@ -1,0 +1,174 @@
+"""A pin in a conforming hole: physical inputs in, equilibrium states out (thin layer over the kernels).
+
+Units: any consistent set (SI: R, Delta [m], w [J/m^2], moduli [Pa], loads per unit length [N/m]).
+"""
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ._validate import contact_parameter, finite_scalar
+from .critical import a_crit
+from .generated import approach as _approach
+from .generated import gap as _gap
+from .generated import load as _load
+from .materials import Materials
+
+
+@dataclass(frozen=True)
+class Contact:
+    """Hole radius R, clearance Delta = R - R_D >= 0, work of adhesion w >= 0, and the materials."""
+
+    R: float
+    Delta: float
+    w: float
+    materials: Materials
+
+    def __post_init__(self):
+        object.__setattr__(self, "R", finite_scalar("R", self.R, low=0.0, low_open=True))
+        object.__setattr__(self, "Delta", finite_scalar("Delta", self.Delta, low=0.0))
+        object.__setattr__(self, "w", finite_scalar("w", self.w, low=0.0))
+        if not isinstance(self.materials, Materials):
+            raise ValueError(f"materials must be a jkrcyl.Materials, got {type(self.materials).__name__}")
+
+    # --- parameters of sections 3-6 ---------------------------------------------------------------
+    @property
+    def beta(self):
+        """beta* [1/Pa]."""
+        return self.materials.beta
+
+    @property
+    def theta(self):
+        """vartheta (section 4); inf for a rigid cradle."""
+        return self.materials.theta
+
+    @property
+    def A(self):
+        """A = beta*/(2 pi) of (3.5)."""
+        return self.beta / (2 * math.pi)
+
+    @property
+    def zeta(self):
+        """zeta* = sqrt(2 w R/A) of (3.6)."""
+        return math.sqrt(2 * self.w * self.R / self.A)
+
+    @property
+    def a_crit(self):
+        return a_crit(self.theta)
+
+    @property
+    def load_scale(self):
+        """P / P*: 4 pi Delta vartheta/beta* (section 6), or 4 pi Delta/beta* for vartheta = inf (7.6)."""
+        self._require_clearance("P_star")
+        th = self.theta
+        return 4 * math.pi * self.Delta * (1 if math.isinf(th) else th) / self.beta
+
+    @property
+    def M(self):
+        """M = sqrt(w A R)/(sqrt(2) Delta vartheta) (section 6); M_R* of (7.6) when vartheta = inf."""
+        self._require_clearance("M")
+        return self.zeta * self.beta / self.load_scale
+
+    def _require_clearance(self, what):
+        if self.Delta == 0:
+            raise ValueError(f"{what} is undefined for Delta = 0 (neat fit, section 7.3): "
+                             "it normalises by Delta; use the dimensional values")
+
+    def _args(self):
+        return dict(Delta=self.Delta, beta=self.beta, inv_theta=self.materials.inv_theta, zeta=self.zeta)
+
+    # --- states --------------------------------------------------------------------------------
+    def state(self, a):
+        """Equilibrium at contact parameter(s) a = tan(eps/2) > 0: see :class:`State`."""
+        arr = contact_parameter(a)
+        flat = np.ascontiguousarray(arr.ravel())
+        P, B, C, c0, c1, r0 = _load.load_state_array(R=self.R, a=flat, **self._args())
+        K, G_release = _load.stress_intensity_array(C=C, R=self.R, a=flat, beta=self.beta, c0=c0, c1=c1)
+        delta, _ = _approach.approach_array(a=flat, inv_G_I=self.materials.inv_G_I, **self._args())
+        h_pi = _gap.gap_pi_array(a=flat, **self._args())
+        shape = arr.shape
+        fields = {k: _shaped(v, shape) for k, v in dict(
+            a=flat, P=P, B=B, C=C, c0=c0, c1=c1, r0=r0, K=K, G_release=G_release, delta=delta,
+            h_pi=h_pi).items()}
+        return State(contact=self, **fields)
+
+    def pressure(self, a, phi):
+        """Pressure N(phi) of (5.4) [Pa] at one contact parameter a: (bounded, unbounded); 0 outside."""
+        if np.ndim(a) != 0:
+            raise ValueError("a must be a single contact parameter in pressure(a, phi), got an array")
+        a = float(contact_parameter(a))
+        phi = np.asarray(phi, dtype=float)
+        if not np.isfinite(phi).all():
+            raise ValueError("phi must be finite")
+        eps = 2 * math.atan(a)
+        inside = np.abs(phi) < eps
+        flat = np.ascontiguousarray(np.where(inside, phi, 0.0).ravel())
+        nb, nu = _load.pressure_array(R=self.R, a=a, phi=flat, **self._args())
+        mask = inside.ravel()
+        return _shaped(np.where(mask, nb, 0.0), phi.shape), _shaped(np.where(mask, nu, 0.0), phi.shape)
+
+    def gap(self, a, phi):
+        """Gap h(phi) of (5.9) [m]: numpy-broadcast over a and phi; 0 inside the contact."""
+        a_arr, phi_arr = np.broadcast_arrays(contact_parameter(a), np.asarray(phi, dtype=float))
+        if not np.isfinite(phi_arr).all():
+            raise ValueError("phi must be finite")
+        h = _gap.gap_array(a=np.ascontiguousarray(a_arr.ravel()), phi=np.ascontiguousarray(phi_arr.ravel()),
+                           **self._args())
+        return _shaped(h, a_arr.shape)
+
+
+def _shaped(values, shape):
+    out = np.asarray(values).reshape(shape)
+    return out[()] if out.ndim == 0 else out
+
+
+@dataclass(frozen=True)
+class State:
+    """Equilibria at the contact parameters a (arrays shaped like a).
+
+    P [N/m] (4.4), B [N/m] (4.5a), C [N/m] (4.5b), c0 [m], c1 [m] (2.6), r0 [Pa] (2.12),
+    K [Pa m^1/2] (3.4), G_release [J/m^2] (3.5), delta [m] (5.8), h_pi [m] (5.10).
+    """
+
+    contact: Contact
+    a: np.ndarray
+    P: np.ndarray
+    B: np.ndarray
+    C: np.ndarray
+    c0: np.ndarray
+    c1: np.ndarray
+    r0: np.ndarray
+    K: np.ndarray
+    G_release: np.ndarray
+    delta: np.ndarray
+    h_pi: np.ndarray
+
+    @property
+    def eps(self):
+        """Contact half-angle eps = 2 atan(a) [rad]."""
+        return 2 * np.arctan(self.a)
+
+    @property
+    def eps_star(self):
+        """Normalised half-angle eps* = 2 atan(a/a_crit)/pi (section 6)."""
+        return 2 * np.arctan(self.a / self.contact.a_crit) / math.pi
+
+    @property
+    def P_star(self):
+        """P* = P beta*/(4 pi Delta vartheta) (section 6); P_R* of (7.6) when vartheta = inf."""
+        return self.P / self.contact.load_scale
+
+    @property
+    def delta_over_Delta(self):
+        self.contact._require_clearance("delta_over_Delta")
+        return self.delta / self.contact.Delta
+
+    @property
+    def h_pi_over_Delta(self):
+        self.contact._require_clearance("h_pi_over_Delta")
+        return self.h_pi / self.contact.Delta
+
+    @property
+    def feasible(self):
+        """Gap inequality h >= 0 at every exterior angle; its minimum is min(0, h(pi)) (derive/gap.py)."""
+        return self.h_pi >= 0

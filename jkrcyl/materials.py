@@ -1,0 +1,72 @@
+"""Material pair of section 2: (G, kappa) the confining body with the hole, (G_I, kappa_I) the indenter."""
+import math
+from dataclasses import dataclass
+
+from ._validate import finite_scalar
+
+ALPHA_TOLERANCE = 1e-9   # |alpha*| / beta* below this counts as alpha* = 0
+
+
+@dataclass(frozen=True)
+class Materials:
+    """Shear moduli G, G_I [Pa] (math.inf for a rigid body) and Kolosov constants kappa, kappa_I.
+
+    kappa = 3 - 4 nu in plane strain.  The closed forms need the second Dundurs parameter
+    alpha* = (kappa - 1)/(2G) - (kappa_I - 1)/(2G_I) to vanish (section 2).
+    """
+
+    G: float
+    kappa: float
+    G_I: float
+    kappa_I: float
+
+    def __post_init__(self):
+        for name in ("G", "G_I"):
+            v = finite_scalar(name, getattr(self, name), low=0.0, low_open=True, allow_inf=True)
+            object.__setattr__(self, name, v)
+        for name in ("kappa", "kappa_I"):
+            object.__setattr__(self, name, finite_scalar(name, getattr(self, name), low=1.0))
+        if math.isinf(self.G) and math.isinf(self.G_I):
+            raise ValueError("G and G_I are both inf: at least one body must be deformable")
+        rel = abs(self.alpha_star) / self.beta
+        if rel > ALPHA_TOLERANCE:
+            raise ValueError(
+                f"alpha* = (kappa - 1)/(2G) - (kappa_I - 1)/(2G_I) = {self.alpha_star:.6g} "
+                f"(alpha*/beta* = {rel:.3g}) must be 0: the closed form of the paper holds only for "
+                "(kappa - 1)/G = (kappa_I - 1)/G_I (e.g. identical materials, or an incompressible "
+                "disk, kappa_I = 1, in a rigid cradle)")
+
+    @classmethod
+    def from_young(cls, E, nu, E_I, nu_I):
+        """Plane strain: G = E/(2(1 + nu)), kappa = 3 - 4 nu; E [Pa] (math.inf: rigid), nu in (-1, 0.5]."""
+        pairs = []
+        for e_name, e, n_name, n in (("E", E, "nu", nu), ("E_I", E_I, "nu_I", nu_I)):
+            e = finite_scalar(e_name, e, low=0.0, low_open=True, allow_inf=True)
+            n = finite_scalar(n_name, n, low=-1.0, high=0.5, low_open=True)
+            pairs.append((e / (2 * (1 + n)), 3 - 4 * n))
+        (G, kappa), (G_I, kappa_I) = pairs
+        return cls(G=G, kappa=kappa, G_I=G_I, kappa_I=kappa_I)
+
+    @property
+    def beta(self):
+        """beta* = (kappa + 1)/(2G) + (kappa_I + 1)/(2G_I) [1/Pa] (section 2)."""
+        return (self.kappa + 1) / (2 * self.G) + (self.kappa_I + 1) / (2 * self.G_I)
+
+    @property
+    def alpha_star(self):
+        """Second Dundurs parameter in compliance form, (kappa - 1)/(2G) - (kappa_I - 1)/(2G_I) [1/Pa]."""
+        return (self.kappa - 1) / (2 * self.G) - (self.kappa_I - 1) / (2 * self.G_I)
+
+    @property
+    def inv_theta(self):
+        """1/vartheta = (1 + kappa)/(G beta*); 0 for a rigid cradle (G = inf)."""
+        return (1 + self.kappa) / (self.G * self.beta)
+
+    @property
+    def theta(self):
+        """vartheta = G beta*/(1 + kappa) = 1/2 + G (kappa_I + 1)/(2 G_I (1 + kappa)) (section 4)."""
+        return math.inf if self.inv_theta == 0 else 1 / self.inv_theta
+
+    @property
+    def inv_G_I(self):
+        return 1 / self.G_I
