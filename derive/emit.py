@@ -61,31 +61,48 @@ def scalar_function(kernel):
     return "".join(lines)
 
 
-def array_function(kernel):
-    """The array form: loops the scalar kernel over the 1-D ``array_args``."""
+def _loop_function(kernel, suffix, decorator, loop, doc):
+    """A loop of the scalar kernel over the 1-D ``array_args``, one output array per output."""
     arg_syms = kernel.args()
     args = ", ".join(sym.name for sym in arg_syms)
     names = [name for name, _ in kernel.outputs]
     first = kernel.array_args[0]
     call = ", ".join(f"{s.name}[i]" if s.name in kernel.array_args else s.name for s in arg_syms)
-    doc = f"Array form of :func:`{kernel.name}`: {', '.join(kernel.array_args)} are 1-D arrays."
-    lines = [f"@njit(cache=True)\ndef {kernel.name}_array({args}):\n", _docstring(doc)]
+    lines = [f"{decorator}\ndef {kernel.name}_{suffix}({args}):\n", _docstring(doc)]
     lines.append(f"    n = {first}.shape[0]\n")
     for name in names:
         lines.append(f"    {name} = np.empty(n)\n")
-    lines.append("    for i in range(n):\n")
+    lines.append(f"    for i in {loop}(n):\n")
     lines.append(f"        {', '.join(n + '[i]' for n in names)} = {kernel.name}({call})\n")
     lines.append(f"    return {', '.join(names)}\n")
     return "".join(lines)
 
 
+def array_function(kernel):
+    """The array form: loops the scalar kernel over the 1-D ``array_args``."""
+    doc = f"Array form of :func:`{kernel.name}`: {', '.join(kernel.array_args)} are 1-D arrays."
+    return _loop_function(kernel, "array", "@njit(cache=True)", "range", doc)
+
+
+def parallel_function(kernel):
+    """The parallel array form: the loop of :func:`array_function` over ``numba.prange``.
+
+    Each iteration calls the same scalar kernel and writes only its own index, so the results are
+    bit-identical to the serial form whatever the number of threads.
+    """
+    doc = (f"Parallel form of :func:`{kernel.name}_array` (numba prange over all threads);\n"
+           "bit-identical results.")
+    return _loop_function(kernel, "parallel", "@njit(parallel=True, cache=True)", "prange", doc)
+
+
 def module_source(source, doc, kernels):
     """Complete text of one generated module."""
     parts = [BANNER.format(source=source), _docstring(doc, indent=""), "import math\n\n",
-             "import numpy as np\nfrom numba import njit\n"]
+             "import numpy as np\nfrom numba import njit, prange\n"]
     for kernel in kernels:
         parts.append("\n\n" + scalar_function(kernel))
         parts.append("\n\n" + array_function(kernel))
+        parts.append("\n\n" + parallel_function(kernel))
     return "".join(parts)
 
 

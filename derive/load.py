@@ -175,7 +175,24 @@ def derive(report):
     sol = solve_system(A, b)
     _compare_inverse(report, sol)
     kernels = _stable_kernels(report, sol)
+    _critical_contact(report)
     return kernels
+
+
+def _critical_contact(report):
+    """Section 4: the root of 2 vartheta - L - 2 a^4 at vartheta = 1, to 30 digits."""
+    denominator = sp.lambdify(a, D.subs(theta, 1), modules="mpmath")
+    with mp.workdps(checks.DPS):
+        root = mp.findroot(denominator, mp.mpf("0.9"))
+        eps_deg = 2 * mp.degrees(mp.atan(root))
+    report.result("Critical contact parameter at vartheta = 1 (section 4)",
+                  rf"a_{{crit}} = {mp.nstr(root, 12)},\quad \epsilon = {mp.nstr(eps_deg, 8)}^\circ",
+                  DIFFERS, "mpmath findroot of the denominator of (4.4)")
+    report.erratum("Section 4, a_crit at vartheta = 1",
+                   r"$a \approx 0.9135 \Rightarrow \epsilon \approx 84.823^\circ$",
+                   rf"$a = {mp.nstr(root, 8)}$, $\epsilon = {mp.nstr(eps_deg, 6)}^\circ$ "
+                   "(84.823 is 2 atan of the truncated 0.9135)",
+                   "50-digit root of 2 vartheta - log(1 + a^2) - 2 a^4 = 0")
 
 
 def _compare_system(report, A, b):

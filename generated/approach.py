@@ -6,7 +6,7 @@ Approach delta (section 5): (5.3)-(5.8) with the sums (A.13)-(A.15).
 import math
 
 import numpy as np
-from numba import njit
+from numba import njit, prange
 
 
 @njit(cache=True)
@@ -50,6 +50,20 @@ def approach_array(Delta, a, beta, inv_G_I, inv_theta, zeta):
     return delta, delta_over_Delta
 
 
+@njit(parallel=True, cache=True)
+def approach_parallel(Delta, a, beta, inv_G_I, inv_theta, zeta):
+    """
+    Parallel form of :func:`approach_array` (numba prange over all threads);
+    bit-identical results.
+    """
+    n = a.shape[0]
+    delta = np.empty(n)
+    delta_over_Delta = np.empty(n)
+    for i in prange(n):
+        delta[i], delta_over_Delta[i] = approach(Delta, a[i], beta, inv_G_I, inv_theta, zeta)
+    return delta, delta_over_Delta
+
+
 @njit(cache=True)
 def approach_parts(a, beta, inv_G_I, inv_theta):
     """
@@ -80,5 +94,19 @@ def approach_parts_array(a, beta, inv_G_I, inv_theta):
     d_Delta = np.empty(n)
     d_zeta = np.empty(n)
     for i in range(n):
+        d_Delta[i], d_zeta[i] = approach_parts(a[i], beta, inv_G_I, inv_theta)
+    return d_Delta, d_zeta
+
+
+@njit(parallel=True, cache=True)
+def approach_parts_parallel(a, beta, inv_G_I, inv_theta):
+    """
+    Parallel form of :func:`approach_parts_array` (numba prange over all threads);
+    bit-identical results.
+    """
+    n = a.shape[0]
+    d_Delta = np.empty(n)
+    d_zeta = np.empty(n)
+    for i in prange(n):
         d_Delta[i], d_zeta[i] = approach_parts(a[i], beta, inv_G_I, inv_theta)
     return d_Delta, d_zeta

@@ -6,7 +6,7 @@ Load-contact size relation (sections 3-4): (4.4), (4.5), (2.6), (3.4), (3.5), (5
 import math
 
 import numpy as np
-from numba import njit
+from numba import njit, prange
 
 
 @njit(cache=True)
@@ -62,6 +62,24 @@ def load_state_array(Delta, R, a, beta, inv_theta, zeta):
     return P, B, C, c0, c1, r0
 
 
+@njit(parallel=True, cache=True)
+def load_state_parallel(Delta, R, a, beta, inv_theta, zeta):
+    """
+    Parallel form of :func:`load_state_array` (numba prange over all threads);
+    bit-identical results.
+    """
+    n = a.shape[0]
+    P = np.empty(n)
+    B = np.empty(n)
+    C = np.empty(n)
+    c0 = np.empty(n)
+    c1 = np.empty(n)
+    r0 = np.empty(n)
+    for i in prange(n):
+        P[i], B[i], C[i], c0[i], c1[i], r0[i] = load_state(Delta, R, a[i], beta, inv_theta, zeta)
+    return P, B, C, c0, c1, r0
+
+
 @njit(cache=True)
 def normalised_load(M, a, theta):
     """
@@ -82,6 +100,19 @@ def normalised_load_array(M, a, theta):
     n = a.shape[0]
     P_star = np.empty(n)
     for i in range(n):
+        P_star[i] = normalised_load(M, a[i], theta)
+    return P_star
+
+
+@njit(parallel=True, cache=True)
+def normalised_load_parallel(M, a, theta):
+    """
+    Parallel form of :func:`normalised_load_array` (numba prange over all threads);
+    bit-identical results.
+    """
+    n = a.shape[0]
+    P_star = np.empty(n)
+    for i in prange(n):
         P_star[i] = normalised_load(M, a[i], theta)
     return P_star
 
@@ -122,6 +153,20 @@ def pressure_array(Delta, R, a, beta, inv_theta, phi, zeta):
     return N_bounded, N_unbounded
 
 
+@njit(parallel=True, cache=True)
+def pressure_parallel(Delta, R, a, beta, inv_theta, phi, zeta):
+    """
+    Parallel form of :func:`pressure_array` (numba prange over all threads);
+    bit-identical results.
+    """
+    n = phi.shape[0]
+    N_bounded = np.empty(n)
+    N_unbounded = np.empty(n)
+    for i in prange(n):
+        N_bounded[i], N_unbounded[i] = pressure(Delta, R, a, beta, inv_theta, phi[i], zeta)
+    return N_bounded, N_unbounded
+
+
 @njit(cache=True)
 def stress_intensity(C, R, a, beta, c0, c1):
     """
@@ -147,5 +192,19 @@ def stress_intensity_array(C, R, a, beta, c0, c1):
     K = np.empty(n)
     G_release = np.empty(n)
     for i in range(n):
+        K[i], G_release[i] = stress_intensity(C[i], R, a[i], beta, c0[i], c1[i])
+    return K, G_release
+
+
+@njit(parallel=True, cache=True)
+def stress_intensity_parallel(C, R, a, beta, c0, c1):
+    """
+    Parallel form of :func:`stress_intensity_array` (numba prange over all threads);
+    bit-identical results.
+    """
+    n = C.shape[0]
+    K = np.empty(n)
+    G_release = np.empty(n)
+    for i in prange(n):
         K[i], G_release[i] = stress_intensity(C[i], R, a[i], beta, c0[i], c1[i])
     return K, G_release

@@ -67,7 +67,7 @@ class Contact:
     def M(self):
         """M = sqrt(w A R)/(sqrt(2) Delta vartheta) (section 6); M_R* of (7.6) when vartheta = inf."""
         self._require_clearance("M")
-        return self.zeta * self.beta / self.load_scale
+        return self.zeta / self.load_scale
 
     def _require_clearance(self, what):
         if self.Delta == 0:
@@ -84,7 +84,9 @@ class Contact:
         flat = np.ascontiguousarray(arr.ravel())
         P, B, C, c0, c1, r0 = _load.load_state_array(R=self.R, a=flat, **self._args())
         K, G_release = _load.stress_intensity_array(C=C, R=self.R, a=flat, beta=self.beta, c0=c0, c1=c1)
-        delta, _ = _approach.approach_array(a=flat, inv_G_I=self.materials.inv_G_I, **self._args())
+        d_Delta, d_zeta = _approach.approach_parts_array(
+            a=flat, beta=self.beta, inv_G_I=self.materials.inv_G_I, inv_theta=self.materials.inv_theta)
+        delta = self.Delta * d_Delta + self.zeta * d_zeta         # (5.8), linear in (Delta, zeta)
         h_pi = _gap.gap_pi_array(a=flat, **self._args())
         shape = arr.shape
         fields = {k: _shaped(v, shape) for k, v in dict(
