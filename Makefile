@@ -3,9 +3,10 @@ PYTHON ?= python3
 VENV := .venv
 VPY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed-stamp
+BENCH_STAMP := $(VENV)/.bench-stamp
 export PYTHONHASHSEED := 0
 
-.PHONY: derive test bench clean-venv
+.PHONY: derive test bench figures clean-venv
 
 $(STAMP): pyproject.toml constraints.txt
 	test -x $(VPY) || $(PYTHON) -m venv $(VENV)
@@ -19,6 +20,18 @@ derive: $(STAMP)
 ## make test: run the test suite (derivation up-to-date check, kernels vs paper and vs mpmath)
 test: $(STAMP)
 	$(VPY) -m pytest -q
+
+$(BENCH_STAMP): $(STAMP)
+	$(VPY) -m pip install --quiet -c constraints.txt -e '.[derive,test,bench]'
+	touch $(BENCH_STAMP)
+
+## make bench: time the full state (n = 1e6) against lambdify, numpy, mpmath, quad and a floor
+bench: $(BENCH_STAMP)
+	$(VPY) benchmarks/bench_state.py
+
+## make figures: draw the paper's Figures 2-12 (PNG, PDF, CSV) into figures/
+figures: $(STAMP)
+	$(VENV)/bin/jkrcyl figures --out figures
 
 clean-venv:
 	rm -rf $(VENV)

@@ -2,7 +2,8 @@
 import argparse
 import pathlib
 
-from . import approach, gap, load, pressure
+from . import approach, derivatives, gap, load, pressure
+from . import state
 from .emit import module_source, package_init
 from .report import Report
 
@@ -12,6 +13,8 @@ MODULES = [
     (load, "Load-contact size relation (sections 3-4): (4.4), (4.5), (2.6), (3.4), (3.5), (5.4), P* of section 6."),
     (approach, "Approach delta (section 5): (5.3)-(5.8) with the sums (A.13)-(A.15)."),
     (gap, "Gap function h(phi) outside the contact (5.9) and h(pi) (5.10) in closed form."),
+    (derivatives, "Slopes dP/da, d delta/da and dG/da at fixed load and fixed grip (sections 6, 8.2, 8.3)."),
+    (state, "Fused equilibrium state: load_state + approach + gap_pi in one kernel (no new physics)."),
 ]
 
 

@@ -2,4 +2,4 @@
 # Regenerate: make derive
 """Kernels emitted by make derive."""
 
-__all__ = ["load", "approach", "gap"]
+__all__ = ["load", "approach", "gap", "derivatives", "state"]

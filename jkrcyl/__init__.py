@@ -9,6 +9,7 @@ paper's printed formulas by hand and serves as the reference in the tests.
 """
 from .contact import Contact, State
 from .critical import a_crit
+from .equilibria import zero_load_contact, zero_load_max_M
 from .materials import Materials
 
-__all__ = ["Contact", "Materials", "State", "a_crit"]
+__all__ = ["Contact", "Materials", "State", "a_crit", "zero_load_contact", "zero_load_max_M"]

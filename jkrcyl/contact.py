@@ -94,6 +94,19 @@ class Contact:
             h_pi=h_pi).items()}
         return State(contact=self, **fields)
 
+    # --- sections 6 and 8 (jkrcyl.equilibria) -------------------------------------------------------
+    def curve(self, regime="sub-critical", n=2000):
+        """Equilibrium branch in normalised form (M, P*, delta/Delta, ...): jkrcyl.equilibria.curve."""
+        from . import equilibria
+        M, th, gb = equilibria.from_contact(self)
+        return equilibria.curve(M, th, regime=regime, n=n, gb=gb)
+
+    def adherence(self, control="load"):
+        """Adherence points (P* minima for control='load', d delta/da = 0 for 'grip'): jkrcyl.equilibria.adherence."""
+        from . import equilibria
+        M, th, gb = equilibria.from_contact(self)
+        return equilibria.adherence(M, th, control=control, gb=gb)
+
     def pressure(self, a, phi):
         """Pressure N(phi) of (5.4) [Pa] at one contact parameter a: (bounded, unbounded); 0 outside."""
         if np.ndim(a) != 0:

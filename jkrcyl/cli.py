@@ -1,0 +1,203 @@
+"""``jkrcyl``: equilibrium curves, adherence forces and the paper's figures from the command line.
+
+    jkrcyl figures --out figures            # Figures 2-12 as PNG, PDF and CSV
+    jkrcyl curve --M 0.3 --theta 1          # one equilibrium branch as CSV (or --format json)
+    jkrcyl curve --E 1e6 --nu 0.45 --E-I inf --nu-I 0.3 --R 0.01 --Delta 1e-4 --w 0.05
+    jkrcyl adherence --M 0.3 --theta 1      # fixed-load and fixed-grip adherence, zero-load contact
+
+Errors are one line on stderr naming the bad parameter; exit status 2.
+"""
+import argparse
+import json
+import math
+import sys
+
+import numpy as np
+
+from . import equilibria as eq
+
+EXIT_USAGE = 2
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):
+        sys.stderr.write(f"{self.prog}: error: {message}\n")
+        raise SystemExit(EXIT_USAGE)
+
+
+def _float(text):
+    try:
+        return float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+
+
+def _add_problem(p):
+    g = p.add_argument_group("normalised inputs (section 6)")
+    g.add_argument("--M", type=_float, help="adhesion parameter M = sqrt(wAR)/(sqrt(2) Delta vartheta) "
+                   "(M_R* when --theta inf)")
+    g.add_argument("--theta", type=_float, default=1.0, help="vartheta >= 0.5, or inf (default 1)")
+    g.add_argument("--gb", type=_float, default=None,
+                   help="(1/G_I)/beta*, used by delta/Delta only (default: incompressible pair, 1 - 1/(2 vartheta))")
+    h = p.add_argument_group("physical inputs (SI units; replace --M/--theta/--gb)")
+    for name, helptext in (("E", "Young's modulus of the body with the hole [Pa] (inf: rigid)"),
+                           ("nu", "its Poisson ratio"), ("E-I", "Young's modulus of the cylinder [Pa] (inf: rigid)"),
+                           ("nu-I", "its Poisson ratio"), ("R", "hole radius [m]"),
+                           ("Delta", "clearance R - R_D [m], > 0"), ("w", "work of adhesion [J/m^2]")):
+        h.add_argument(f"--{name}", type=_float, help=helptext)
+
+
+def _resolve(args):
+    """(M, theta, gb) from either input set."""
+    phys = [args.E, args.nu, args.E_I, args.nu_I, args.R, args.Delta, args.w]
+    if any(v is not None for v in phys):
+        names = ("E", "nu", "E-I", "nu-I", "R", "Delta", "w")
+        missing = [n for n, v in zip(names, phys) if v is None]
+        if missing:
+            raise ValueError(f"--{missing[0]} is required with physical inputs")
+        if args.M is not None:
+            raise ValueError("M: give either --M or the physical inputs, not both")
+        from .contact import Contact
+        from .materials import Materials
+        mat = Materials.from_young(args.E, args.nu, args.E_I, args.nu_I)
+        if args.Delta == 0:
+            raise ValueError("Delta must be > 0 here (M and P* divide by Delta; neat fit: see jkrcyl.special)")
+        c = Contact(R=args.R, Delta=args.Delta, w=args.w, materials=mat)
+        return eq.from_contact(c)
+    if args.M is None:
+        raise ValueError("M is required (--M, or the physical inputs --E --nu --E-I --nu-I --R --Delta --w)")
+    M, th, gb, *_ = eq._params(args.M, args.theta, args.gb)
+    return M, th, gb
+
+
+def _cmd_curve(args):
+    M, th, gb = _resolve(args)
+    n = args.n
+    if n < 2:
+        raise ValueError(f"n must be >= 2, got {n}")
+    cv = eq.curve(M, th, regime=args.regime, n=n, gb=gb)
+    table = cv.table()
+    out = open(args.output, "w") if args.output else sys.stdout
+    try:
+        if args.format == "json":
+            json.dump({"M": M, "theta": th, "gb": gb, "regime": args.regime,
+                       **{k: [None if not math.isfinite(x) else x for x in v.tolist()] for k, v in table.items()}},
+                      out)
+            out.write("\n")
+        else:
+            out.write(f"# M={M!r} theta={th!r} gb={gb!r} regime={args.regime}\n")
+            out.write(",".join(table) + "\n")
+            for row in zip(*table.values()):
+                out.write(",".join(repr(float(x)) for x in row) + "\n")
+    finally:
+        if out is not sys.stdout:
+            out.close()
+    return 0
+
+
+def _point_dict(p):
+    return {k: getattr(p, k) for k in ("control", "regime", "kind", "a", "eps", "eps_star", "P_star",
+                                        "delta_over_Delta", "h_pi_over_Delta", "feasible")}
+
+
+def _cmd_adherence(args):
+    M, th, gb = _resolve(args)
+    load = eq.adherence(M, th, "load", gb=gb)
+    grip = eq.adherence(M, th, "grip", gb=gb)
+    a0 = eq.zero_load_contact(M, th)
+    Mmax = eq.zero_load_max_M(th)[0]
+    if args.format == "json":
+        json.dump({"M": M, "theta": th, "gb": gb, "load": [_point_dict(p) for p in load],
+                   "grip": [_point_dict(p) for p in grip], "zero_load_a0": a0,
+                   "zero_load_M_max": None if math.isinf(Mmax) else Mmax}, sys.stdout)
+        sys.stdout.write("\n")
+        return 0
+    print(f"M = {M:.17g}, theta = {th:g}, gb = {gb:.17g}")
+    print("fixed-load adherence (minimum of P* per branch):")
+    for p in load or []:
+        print(f"  {p.regime:14s} a = {p.a:.17g}  eps = {p.eps:.12g}  P* = {p.P_star:.17g}  "
+              f"delta/Delta = {p.delta_over_Delta:.12g}  feasible = {p.feasible}")
+    if not load:
+        print("  none (no minimum of P* on any branch)")
+    print("fixed-grip stationary points (d delta/da = 0):")
+    for p in grip:
+        print(f"  {p.regime:14s} {p.kind} a = {p.a:.17g}  P* = {p.P_star:.17g}  "
+              f"delta/Delta = {p.delta_over_Delta:.17g}  feasible = {p.feasible}")
+    if not grip:
+        print("  none")
+    print("zero-load contact (8.1): " + (", ".join(f"a0 = {x:.17g}" for x in a0) if a0 else "none"))
+    if not math.isinf(Mmax):
+        print(f"  (8.1) has roots for M <= {Mmax:.17g}")
+    return 0
+
+
+def _cmd_figures(args):
+    from . import figures
+
+    def bar(i, n, name):
+        width = 30
+        k = int(width * i / n)
+        sys.stderr.write(f"\r[{'#' * k}{'.' * (width - k)}] {i}/{n} {name:8s}")
+        if i == n:
+            sys.stderr.write("\n")
+        sys.stderr.flush()
+
+    only = None
+    if args.only:
+        only = [s.strip() for s in args.only.split(",") if s.strip()]
+        bad = [s for s in only if s not in figures.FIGURES]
+        if bad:
+            raise ValueError(f"only: unknown figure {bad[0]!r} (choose from {', '.join(figures.FIGURES)})")
+    if args.n is not None and args.n < 4:
+        raise ValueError(f"n must be >= 4, got {args.n}")
+    written = figures.draw_all(args.out, n=args.n, only=only, progress=None if args.quiet else bar)
+    print(f"wrote {len(written)} files to {args.out}")
+    return 0
+
+
+def build_parser():
+    p = _Parser(prog="jkrcyl", description=__doc__.split("\n\n")[0])
+    sub = p.add_subparsers(dest="command", metavar="command", title="commands (figures, curve, adherence)", parser_class=_Parser)
+    sub.required = True
+    f = sub.add_parser("figures", help="draw the paper's Figures 2-12 (PNG, PDF, CSV)",
+                       description="Draw Figures 2-12 into OUT as figNN.png, figNN.pdf and figNN.csv "
+                                   "(CSV columns: panel, series, x_name, x, y_name, y, feasible).")
+    f.add_argument("--out", default="figures", help="output folder (default: figures)")
+    f.add_argument("--n", type=int, default=None, help="points per curve (default: per figure, 400-600)")
+    f.add_argument("--only", default=None, help="comma-separated subset, e.g. fig02,fig11")
+    f.add_argument("--quiet", action="store_true", help="no progress bar")
+    f.set_defaults(func=_cmd_figures)
+    c = sub.add_parser("curve", help="one equilibrium branch as CSV or JSON",
+                       description="Equilibrium branch: columns " + ", ".join(eq.Curve.COLUMNS) +
+                                   " (feasible, stable_* as 0/1).")
+    _add_problem(c)
+    c.add_argument("--regime", choices=eq.REGIMES, default="sub-critical", help="branch (default sub-critical)")
+    c.add_argument("--n", type=int, default=200, help="number of points (default 200)")
+    c.add_argument("--format", choices=("csv", "json"), default="csv", help="output format (default csv)")
+    c.add_argument("--output", "-o", default=None, help="file to write (default: stdout)")
+    c.set_defaults(func=_cmd_curve)
+    a = sub.add_parser("adherence", help="adherence forces and the zero-load contact",
+                       description="Fixed-load adherence (P* minima), fixed-grip points (d delta/da = 0) "
+                                   "and the zero-load contact parameters of (8.1).")
+    _add_problem(a)
+    a.add_argument("--format", choices=("text", "json"), default="text", help="output format (default text)")
+    a.set_defaults(func=_cmd_adherence)
+    return p
+
+
+def main(argv=None):
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return args.func(args)
+    except ValueError as exc:
+        msg = str(exc).splitlines()[0] if str(exc) else "invalid input"
+        sys.stderr.write(f"jkrcyl {args.command}: error: {msg}\n")
+        return EXIT_USAGE
+    except OSError as exc:
+        sys.stderr.write(f"jkrcyl {args.command}: error: out: {exc}\n")
+        return EXIT_USAGE
+
+
+if __name__ == "__main__":
+    sys.exit(main())

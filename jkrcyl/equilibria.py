@@ -1,0 +1,305 @@
+"""Equilibrium curves, stability and adherence forces of sections 6 and 8 (dimensionless).
+
+Everything here is a function of the normalised adhesion M, vartheta and, for the approach only,
+the compliance ratio ``gb = (1/G_I)/beta*``.  Normalisation (section 6):
+
+    M = sqrt(w A R)/(sqrt(2) Delta vartheta),   P* = P beta*/(4 pi Delta vartheta).
+
+For the rigid cradle vartheta = inf (section 7.2) the same names carry M_R* = sqrt(w A R)/(sqrt(2) Delta)
+and P_R* = P beta*/(4 pi Delta) of (7.6), as :class:`jkrcyl.Contact` does.
+
+Stability: an equilibrium is stable at fixed load when dG/da|_P > 0 and at fixed grip when
+dG/da|_delta > 0 (G > w shrinks the contact); both derivatives are emitted kernels
+(derive/derivatives.py).  Along the curve dG/da|_P = -(dG/dP) dP/da with dG/dP < 0, so fixed-load
+stability is exactly dP*/da > 0 and the adherence force at fixed load is a minimum of P*.
+
+Root finding: sign changes of the slope kernels on a fine grid, then bisection to adjacent
+doubles (no scipy).  Where no root exists the result is an empty list.
+"""
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ._validate import finite_scalar, theta as _check_theta
+from .critical import a_crit as _a_crit
+from .generated import derivatives as _der
+from .generated import gap as _gap
+from .generated import load as _load
+
+REGIMES = ("sub-critical", "super-critical")
+CONTROLS = ("load", "grip")
+RUBBERY_A_MAX = 3.0      # vartheta = inf: curves run over 0 < a < RUBBERY_A_MAX (a_crit = inf)
+
+
+def default_gb(theta):
+    """(1/G_I)/beta* for the incompressible alpha* = 0 pair kappa = kappa_I = 1, G/G_I = 2 vartheta - 1.
+
+    vartheta = 1/2 is a rigid indenter (gb = 0), vartheta = 1 identical incompressible bodies
+    (gb = 1/2), vartheta = inf a rigid cradle (gb = 1).  Only the approach delta depends on gb.
+    """
+    th = _check_theta(theta)
+    return 1.0 if math.isinf(th) else 1.0 - 1.0 / (2.0 * th)
+
+
+def _params(M, theta, gb):
+    M = finite_scalar("M", M, low=0.0)
+    th = _check_theta(theta)
+    gb = default_gb(th) if gb is None else finite_scalar("gb", gb, low=0.0)
+    inv_t = 0.0 if math.isinf(th) else 1.0 / th
+    m = M if math.isinf(th) else M * th          # m = M vartheta = zeta beta/(4 pi Delta)
+    scale = 1.0 if math.isinf(th) else th        # P* = p/scale
+    return M, th, gb, inv_t, m, scale
+
+
+def _check_regime(regime, th):
+    if regime not in REGIMES:
+        raise ValueError(f"regime must be one of {', '.join(REGIMES)}, got {regime!r}")
+    if regime == "super-critical" and math.isinf(th):
+        raise ValueError("regime: no super-critical equilibria for theta = inf (a_crit = inf, section 7.2)")
+
+
+def _a_of(eps_star, th):
+    """a = a_crit tan(pi eps*/2); for vartheta = inf, eps* is eps/pi (a = tan(pi eps*/2))."""
+    ac = 1.0 if math.isinf(th) else _a_crit(th)
+    return ac * np.tan(np.pi * np.asarray(eps_star, dtype=float) / 2)
+
+
+def _eps_star(a, th):
+    ac = 1.0 if math.isinf(th) else _a_crit(th)
+    return 2 * np.arctan(np.asarray(a) / ac) / np.pi
+
+
+def _branch_range(regime, th):
+    """Open interval of eps* for a branch."""
+    if math.isinf(th):
+        return 0.0, 2 * math.atan(RUBBERY_A_MAX) / math.pi
+    return (0.0, 0.5) if regime == "sub-critical" else (0.5, 1.0)
+
+
+def _grid(regime, th, n):
+    lo, hi = _branch_range(regime, th)
+    s = lo + (hi - lo) * (np.arange(n) + 0.5) / n
+    return _a_of(s, th)
+
+
+def _star(a, m, inv_t, gb):
+    a = np.ascontiguousarray(np.atleast_1d(np.asarray(a, dtype=float)))
+    # (1/w) dG/da is undefined without adhesion (G = w = 0): nan there; m = 1e-150 leaves p, delta exact
+    p, dp, dn, ddn, gP, gd = _der.equilibrium_star_array(a=a, gb=gb, inv_theta=inv_t, m=m if m > 0 else 1e-150)
+    if m == 0:
+        gP, gd = np.full_like(a, np.nan), np.full_like(a, np.nan)
+    h = _gap.gap_pi_array(Delta=1.0, a=a, beta=1.0, inv_theta=inv_t, zeta=4 * math.pi * m)
+    return dict(p=p, dp=dp, dn=dn, ddn=ddn, gP=gP, gd=gd, h=h)
+
+
+@dataclass(frozen=True)
+class Curve:
+    """One branch of equilibria (numpy arrays over the contact parameter a, increasing).
+
+    eps [rad] = 2 atan(a); eps_star = 2 atan(a/a_crit)/pi (eps/pi when vartheta = inf);
+    P_star (P_R* when vartheta = inf); delta_over_Delta; h_pi_over_Delta = h(pi)/Delta;
+    feasible = gap inequality (h(pi) >= 0); stable_load = dG/da|_P > 0; stable_grip = dG/da|_delta > 0;
+    dP_star_da, ddelta_da: slopes; dG_da_P, dG_da_delta: (1/w) dG/da.
+    """
+
+    M: float
+    theta: float
+    gb: float
+    regime: str
+    a: np.ndarray
+    eps: np.ndarray
+    eps_star: np.ndarray
+    P_star: np.ndarray
+    delta_over_Delta: np.ndarray
+    h_pi_over_Delta: np.ndarray
+    feasible: np.ndarray
+    stable_load: np.ndarray
+    stable_grip: np.ndarray
+    dP_star_da: np.ndarray
+    ddelta_da: np.ndarray
+    dG_da_P: np.ndarray
+    dG_da_delta: np.ndarray
+
+    COLUMNS = ("a", "eps", "eps_star", "P_star", "delta_over_Delta", "h_pi_over_Delta", "feasible",
+               "stable_load", "stable_grip")
+
+    def table(self):
+        """Columns of :attr:`COLUMNS` as a dict of arrays (booleans as 0/1)."""
+        return {k: np.asarray(getattr(self, k), dtype=float) for k in self.COLUMNS}
+
+
+def curve(M, theta, regime="sub-critical", n=2000, gb=None, a=None):
+    """The equilibrium branch ``regime`` at (M, vartheta): n points uniform in eps*, or at given a."""
+    M, th, gb, inv_t, m, scale = _params(M, theta, gb)
+    _check_regime(regime, th)
+    if a is None:
+        n = int(finite_scalar("n", n, low=2))
+        a = _grid(regime, th, n)
+    a = np.ascontiguousarray(np.asarray(a, dtype=float))
+    st = _star(a, m, inv_t, gb)
+    return Curve(M=M, theta=th, gb=gb, regime=regime, a=a, eps=2 * np.arctan(a), eps_star=_eps_star(a, th),
+                 P_star=st["p"] / scale, delta_over_Delta=st["dn"], h_pi_over_Delta=st["h"],
+                 feasible=st["h"] >= 0, stable_load=st["gP"] > 0, stable_grip=st["gd"] > 0,
+                 dP_star_da=st["dp"] / scale, ddelta_da=st["ddn"], dG_da_P=st["gP"], dG_da_delta=st["gd"])
+
+
+@dataclass(frozen=True)
+class Point:
+    """A stationary point on a branch: P* minimum (control = load) or d delta/da = 0 (control = grip).
+
+    kind: 'min' or 'max' of P* (load) or of delta/Delta (grip) along the branch.
+    """
+
+    control: str
+    regime: str
+    kind: str
+    M: float
+    theta: float
+    a: float
+    eps: float
+    eps_star: float
+    P_star: float
+    delta_over_Delta: float
+    h_pi_over_Delta: float
+    feasible: bool
+
+
+def _bisect(f, lo, hi):
+    """Root of f in [lo, hi] with f(lo) f(hi) < 0, to adjacent doubles (or exact zero)."""
+    flo = f(lo)
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if mid <= lo or mid >= hi:
+            break
+        fm = f(mid)
+        if fm == 0:
+            return mid
+        if (fm < 0) == (flo < 0):
+            lo, flo = mid, fm
+        else:
+            hi = mid
+    return lo if abs(flo) <= abs(f(hi)) else hi
+
+
+def _roots(f_arr, f_one, a_grid):
+    """Sign changes of f on the grid refined by bisection: list of (a, sign of f right of the root)."""
+    v = f_arr(a_grid)
+    out = []
+    for i in np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0]:
+        r = _bisect(f_one, float(a_grid[i]), float(a_grid[i + 1]))
+        out.append((r, 1 if v[i + 1] > 0 else -1))
+    return out
+
+
+ROOT_GRID = 4000
+
+
+def stationary_points(M, theta, control="load", regime="sub-critical", gb=None, n=ROOT_GRID):
+    """All points of one branch where dP*/da = 0 (load) or d(delta/Delta)/da = 0 (grip)."""
+    if control not in CONTROLS:
+        raise ValueError(f"control must be 'load' or 'grip', got {control!r}")
+    M, th, gb, inv_t, m, scale = _params(M, theta, gb)
+    _check_regime(regime, th)
+    key = "dp" if control == "load" else "ddn"
+    f_arr = lambda x: _star(x, m, inv_t, gb)[key]
+    f_one = lambda x: float(_star(np.array([x]), m, inv_t, gb)[key][0])
+    out = []
+    for r, sgn in _roots(f_arr, f_one, _grid(regime, th, n)):
+        st = _star(np.array([r]), m, inv_t, gb)
+        out.append(Point(control=control, regime=regime, kind="min" if sgn > 0 else "max", M=M, theta=th,
+                         a=r, eps=2 * math.atan(r), eps_star=float(_eps_star(r, th)),
+                         P_star=float(st["p"][0] / scale), delta_over_Delta=float(st["dn"][0]),
+                         h_pi_over_Delta=float(st["h"][0]), feasible=bool(st["h"][0] >= 0)))
+    return out
+
+
+def adherence(M, theta, control="load", gb=None, regimes=None):
+    """Adherence points, sub-critical branch first.
+
+    control='load': per branch, the lowest local minimum of P* (the 'x' of Fig. 3), if any.
+    control='grip': every point with d delta/da = 0 (the 'o' of Fig. 3; .kind says min or max).
+    """
+    th = _check_theta(theta)
+    regimes = (("sub-critical",) if math.isinf(th) else REGIMES) if regimes is None else regimes
+    out = []
+    for regime in regimes:
+        pts = stationary_points(M, th, control, regime, gb)
+        if control == "load":
+            mins = [p for p in pts if p.kind == "min"]
+            if mins:
+                out.append(min(mins, key=lambda p: p.P_star))
+        else:
+            out += pts
+    return out
+
+
+def solve_load(M, theta, P_star, regime="sub-critical", gb=None, n=ROOT_GRID):
+    """Contact parameters a on a branch where P*(a) = P_star (sorted; [] if none)."""
+    M, th, gb, inv_t, m, scale = _params(M, theta, gb)
+    _check_regime(regime, th)
+    target = finite_scalar("P_star", P_star)
+    f_arr = lambda x: _star(x, m, inv_t, gb)["p"] / scale - target
+    f_one = lambda x: float(f_arr(np.array([x]))[0])
+    grid = _grid(regime, th, n)
+    return sorted(r for r, _ in _roots(f_arr, f_one, grid))
+
+
+def solve_approach(M, theta, delta_over_Delta, regime="sub-critical", gb=None, n=ROOT_GRID):
+    """Contact parameters a on a branch where delta/Delta = the given value (sorted)."""
+    M, th, gb, inv_t, m, scale = _params(M, theta, gb)
+    _check_regime(regime, th)
+    target = finite_scalar("delta_over_Delta", delta_over_Delta)
+    f_arr = lambda x: _star(x, m, inv_t, gb)["dn"] - target
+    f_one = lambda x: float(f_arr(np.array([x]))[0])
+    return sorted(r for r, _ in _roots(f_arr, f_one, _grid(regime, th, n)))
+
+
+# --- zero load (8.1) ----------------------------------------------------------------------------
+def zero_load_equation(a0, M, theta):
+    """Left side of (8.1): a0^(3/2)/M - a0^2 - 2 vartheta + log(1 + a0^2)."""
+    return a0**1.5 / M - a0**2 - 2 * theta + math.log1p(a0 * a0)
+
+
+def zero_load_contact(M, theta):
+    """Sorted contact parameters a0 > 0 of the non-trivial zero-load equilibria (8.1); [] if none.
+
+    For vartheta = inf (M = M_R*), (7.6) gives the single root a0 = (2 M_R*)^(2/3).
+    Exact tangency (M equal to :func:`zero_load_max_M`) counts as no root unless hit exactly.
+    """
+    M = finite_scalar("M", M, low=0.0)
+    th = _check_theta(theta)
+    if M == 0:
+        return []
+    if math.isinf(th):
+        return [(2 * M) ** (2.0 / 3.0)]
+    # (8.1) times M: g(a) = a^1.5 - M (a^2 + 2 theta - log1p(a^2)); negative at 0 and at infinity
+    g = lambda x: x**1.5 - M * (x * x + 2 * th - math.log1p(x * x))
+    hi = max(10.0, 4.0 / (M * M))
+    grid = np.geomspace(1e-12, hi, 20000)
+    v = grid**1.5 - M * (grid**2 + 2 * th - np.log1p(grid**2))
+    roots = [_bisect(g, float(grid[i]), float(grid[i + 1]))
+             for i in np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0]]
+    return sorted(roots)
+
+
+def zero_load_max_M(theta):
+    """The largest M with a zero-load contact (8.1): max over a of a^(3/2)/(a^2 + 2 vartheta - log(1 + a^2)).
+
+    Returns (M_max, a at the maximum).  (8.1) has two roots for M < M_max and none for M > M_max.
+    """
+    th = _check_theta(theta)
+    if math.isinf(th):
+        return math.inf, math.inf
+    # d/da log of the ratio: 1.5/a - (2a - 2a/(1+a^2))/(a^2 + 2 th - L) = 0
+    h = lambda x: 1.5 * (x * x + 2 * th - math.log1p(x * x)) - x * (2 * x - 2 * x / (1 + x * x))
+    lo, hi = 1e-6, 1.0
+    while h(hi) > 0:
+        hi *= 2
+    a_m = _bisect(h, lo, hi)
+    return a_m**1.5 / (a_m**2 + 2 * th - math.log1p(a_m**2)), a_m
+
+
+def from_contact(contact):
+    """(M, vartheta, gb) of a :class:`jkrcyl.Contact` (M is M_R* when vartheta = inf)."""
+    return contact.M, contact.theta, contact.materials.inv_G_I / contact.beta

@@ -1,0 +1,84 @@
+"""Issue 5: the `jkrcyl` command line, end to end in a subprocess."""
+import csv
+import json
+import os
+import pathlib
+import subprocess
+import sys
+
+import pytest
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+
+
+def run(*args):
+    env = dict(os.environ, MPLBACKEND="Agg")
+    return subprocess.run([sys.executable, "-m", "jkrcyl.cli", *args], cwd=ROOT, env=env,
+                          capture_output=True, text=True, timeout=120)
+
+
+@pytest.mark.parametrize("sub", [[], ["figures"], ["curve"], ["adherence"]])
+def test_help_everywhere(sub):
+    r = run(*sub, "--help")
+    assert r.returncode == 0 and "usage: jkrcyl" in r.stdout
+
+
+def test_figures_written_with_csv(tmp_path):
+    r = run("figures", "--out", str(tmp_path), "--n", "24", "--only", "fig02,fig04,fig10")
+    assert r.returncode == 0, r.stderr
+    assert "3/3" in r.stderr                      # progress bar
+    for name in ("fig02", "fig04", "fig10"):
+        for ext in ("png", "pdf", "csv"):
+            assert (tmp_path / f"{name}.{ext}").stat().st_size > 0
+        with open(tmp_path / f"{name}.csv") as fh:
+            rows = list(csv.reader(fh))
+        assert rows[0] == ["panel", "series", "x_name", "x", "y_name", "y", "feasible"]
+        assert len(rows) > 10 and all(len(row) == 7 for row in rows)
+        float(rows[1][3]), float(rows[1][5])
+    assert not (tmp_path / "fig03.png").exists()
+
+
+def test_curve_csv_and_json(tmp_path):
+    r = run("curve", "--M", "0.3", "--theta", "1", "--n", "5")
+    assert r.returncode == 0, r.stderr
+    lines = r.stdout.strip().splitlines()
+    assert lines[0].startswith("#")
+    header = lines[1].split(",")
+    assert header == ["a", "eps", "eps_star", "P_star", "delta_over_Delta", "h_pi_over_Delta", "feasible",
+                      "stable_load", "stable_grip"]
+    assert len(lines) == 7 and all(len(ln.split(",")) == len(header) for ln in lines[2:])
+    out = tmp_path / "c.json"
+    r = run("curve", "--M", "0.5", "--regime", "super-critical", "--n", "4", "--format", "json", "-o", str(out))
+    assert r.returncode == 0, r.stderr
+    data = json.loads(out.read_text())
+    assert data["regime"] == "super-critical" and len(data["P_star"]) == 4
+    r = run("curve", "--E", "1e6", "--nu", "0.5", "--E-I", "inf", "--nu-I", "0.3", "--R", "0.01",
+            "--Delta", "1e-5", "--w", "0.05", "--n", "3")
+    assert r.returncode == 0, r.stderr
+
+
+def test_adherence_text_and_json():
+    r = run("adherence", "--M", "0.3")
+    assert r.returncode == 0 and "fixed-load adherence" in r.stdout and "a0 = " in r.stdout
+    r = run("adherence", "--M", "0.8", "--format", "json")
+    data = json.loads(r.stdout)
+    assert data["zero_load_a0"] == [] and [p["regime"] for p in data["load"]] == ["super-critical"]
+
+
+@pytest.mark.parametrize("args, name", [
+    (["curve", "--M", "-1"], "M"),
+    (["curve", "--M", "0.3", "--theta", "0.2"], "theta"),
+    (["curve", "--M", "x"], "--M"),
+    (["curve", "--M", "0.3", "--n", "1"], "n"),
+    (["curve", "--M", "0.3", "--theta", "inf", "--regime", "super-critical"], "regime"),
+    (["curve"], "M"),
+    (["curve", "--E", "1e6", "--nu", "0.3"], "--E-I"),
+    (["adherence", "--M", "0.3", "--gb", "-2"], "gb"),
+    (["figures", "--only", "fig99"], "only"),
+    (["bogus"], "command"),
+])
+def test_bad_input_one_line_exit_2(args, name):
+    r = run(*args)
+    assert r.returncode == 2
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1 and name in lines[0], r.stderr

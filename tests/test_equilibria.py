@@ -1,0 +1,241 @@
+"""Issue 5: derivative kernels, stability, adherence and the claims of sections 6-8.
+
+References are mpmath evaluations of the paper's printed closed forms (jkrcyl.paper: (4.4),
+(4.5), (2.6), (3.4), (5.8)), differentiated numerically with mp.diff at 30 digits -- never the
+kernels.  Off the equilibrium (fixed P or fixed delta without the Griffith condition) the pressure
+solution is the printed one with a fictitious zeta' (P, B, C and delta are affine in zeta and
+zeta enters only through the Griffith row), solved for so that P or delta takes the given value.
+"""
+import math
+
+import mpmath as mp
+import numpy as np
+import pytest
+
+import jkrcyl
+from jkrcyl import equilibria as eq
+from jkrcyl import paper as pp
+from jkrcyl import special
+from jkrcyl.generated import derivatives as der
+
+mp.mp.dps = 30
+R, DELTA = mp.mpf("1.5"), mp.mpf("0.01")
+# (beta, vartheta, G_I) of alpha* = 0 pairs: identical (G = 1, kappa = 2), stiff hole (G = 10,
+# kappa = 2; G_I = 1, kappa_I = 1.1)
+PAIRS = [(mp.mpf(3), mp.mpf(1), mp.mpf(1)),
+         (mp.mpf(3) / 20 + mp.mpf("2.1") / 2, (10 * (mp.mpf(3) / 20 + mp.mpf("2.1") / 2)) / 3, mp.mpf(1))]
+A_VALUES = ("0.05", "0.4", "0.8", "1.3", "3")
+
+
+def _zeta_for(a, beta, th, P=None, delta=None, GI=None):
+    if P is not None:
+        f = lambda z: pp.P_44(a, DELTA, beta, th, z, mp) - P
+    else:
+        f = lambda z: pp.delta_58(a, DELTA, R, beta, th, GI, z, mp) - delta
+    f0, f1 = f(0), f(1)
+    return -f0 / (f1 - f0)
+
+
+def _G(a, beta, th, z):
+    B = pp.B_45a(a, DELTA, R, beta, th, z, mp)
+    P = pp.P_44(a, DELTA, beta, th, z, mp)
+    C = pp.C_45b(a, DELTA, R, beta, th, z, mp)
+    c0, c1 = pp.c0_c1_26(B, P, DELTA, R, beta, th)
+    return mp.pi / 4 * beta / (2 * mp.pi) * pp.K_34(a, c0, c1, C, R, beta, mp) ** 2
+
+
+def _close(x, y, tol=1e-9):
+    assert abs(float(x) - float(y)) <= tol * max(abs(float(y)), 1e-12), (x, y)
+
+
+@pytest.mark.parametrize("pair", range(len(PAIRS)))
+@pytest.mark.parametrize("a_txt", A_VALUES)
+def test_slope_kernels_vs_mpmath_differences(pair, a_txt):
+    beta, th, GI = PAIRS[pair]
+    a = mp.mpf(a_txt)
+    zeta = mp.mpf("0.02")
+    w = zeta**2 * beta / (4 * mp.pi * R)
+    args = dict(Delta=float(DELTA), a=float(a), beta=float(beta), inv_G_I=float(1 / GI), inv_theta=float(1 / th),
+                zeta=float(zeta))
+    dP, dd = der.load_slopes(**args)
+    _close(dP, mp.diff(lambda s: pp.P_44(s, DELTA, beta, th, zeta, mp), a))
+    _close(dd, mp.diff(lambda s: pp.delta_58(s, DELTA, R, beta, th, GI, zeta, mp), a))
+    gP, gd, gdP = der.release_rate_slopes(R=float(R), **args)
+    P_eq = pp.P_44(a, DELTA, beta, th, zeta, mp)
+    d_eq = pp.delta_58(a, DELTA, R, beta, th, GI, zeta, mp)
+    ref_P = mp.diff(lambda s: _G(s, beta, th, _zeta_for(s, beta, th, P=P_eq)), a) / w
+    ref_d = mp.diff(lambda s: _G(s, beta, th, _zeta_for(s, beta, th, delta=d_eq, GI=GI)), a) / w
+    _close(gP, ref_P, 1e-8)
+    _close(gd, ref_d, 1e-8)
+    # on the equilibrium G = w
+    _close(_G(a, beta, th, zeta) / w, 1, 1e-13)
+
+
+@pytest.mark.parametrize("a_txt", A_VALUES)
+def test_dimensionless_kernel_vs_mpmath(a_txt):
+    beta, th, GI = PAIRS[0]
+    a = mp.mpf(a_txt)
+    M = mp.mpf("0.35")
+    zeta = 4 * mp.pi * DELTA * th * M / beta
+    w = zeta**2 * beta / (4 * mp.pi * R)
+    p, dp, dn, ddn, gP, gd = der.equilibrium_star(a=float(a), gb=float(1 / GI / beta), inv_theta=float(1 / th),
+                                                  m=float(M * th))
+    Pstar = lambda s: pp.P_44(s, DELTA, beta, th, zeta, mp) * beta / (4 * mp.pi * DELTA * th)
+    dnf = lambda s: pp.delta_58(s, DELTA, R, beta, th, GI, zeta, mp) / DELTA
+    _close(p, Pstar(a) * th)
+    _close(dp, mp.diff(Pstar, a) * th)
+    _close(dn, dnf(a))
+    _close(ddn, mp.diff(dnf, a))
+    P_eq = pp.P_44(a, DELTA, beta, th, zeta, mp)
+    _close(gP, mp.diff(lambda s: _G(s, beta, th, _zeta_for(s, beta, th, P=P_eq)), a) / w, 1e-8)
+
+
+@pytest.mark.parametrize("a_txt", ("0.3", "0.8", "1.5", "3"))
+def test_release_rate_is_the_energy_derivative(a_txt):
+    """G of (3.4)-(3.5) at fixed P (off equilibrium) equals d(U - P delta)/d(2 R eps), with the
+    elastic energy U = (1/2) int N u = (delta P - Delta (R B - P))/2 (u = delta cos phi - Delta (1 - cos phi)
+    inside the contact, (5.2)).  So the total energy is stationary where G = w and has a minimum
+    (stable at fixed load) exactly where dG/da|_P > 0."""
+    beta, th, GI = PAIRS[0]
+    a = mp.mpf(a_txt)
+
+    def Pi(s, P):
+        z = _zeta_for(s, beta, th, P=P)
+        B = pp.B_45a(s, DELTA, R, beta, th, z, mp)
+        d = pp.delta_58(s, DELTA, R, beta, th, GI, z, mp)
+        return (d * P - DELTA * (R * B - P)) / 2 - P * d
+
+    for P in (mp.mpf("-0.01"), mp.mpf("0.02")):
+        dPi = mp.diff(lambda s: Pi(s, P), a) / (2 * R * 2 / (1 + a**2))
+        _close(dPi, _G(a, beta, th, _zeta_for(a, beta, th, P=P)), 1e-12)
+
+
+def test_fixed_load_stability_is_sign_of_slope_times_regime():
+    """dG/da|_P = -(dG/dP) dP/da and dK/dP is proportional to -(2 vartheta - L - 2a^4): stable at
+    fixed load where dP*/da > 0 below a_crit and where dP*/da < 0 above it."""
+    for M in (0.3, 0.5, 0.8):
+        for regime, sign in (("sub-critical", 1), ("super-critical", -1)):
+            cv = eq.curve(M, 1.0, regime, n=300)
+            ok = np.abs(cv.dP_star_da) > 1e-9
+            assert np.array_equal(cv.stable_load[ok], (sign * cv.dP_star_da > 0)[ok])
+
+
+def test_a_crit_and_the_rounded_angle():
+    assert abs(jkrcyl.a_crit(1.0) - 0.913573) < 5e-7
+    assert abs(math.degrees(2 * math.atan(0.9135)) - 84.823) < 1e-3
+    assert abs(math.degrees(2 * math.atan(jkrcyl.a_crit(1.0))) - 84.827) < 1e-3
+
+
+def test_zero_load_contact():
+    for M in (0.001, 0.005, 0.02):
+        a0 = eq.zero_load_contact(M, 1.0)
+        assert len(a0) == 2
+        assert abs(a0[0] / (2 * M) ** (2 / 3) - 1) < 2 * (2 * M) ** (4 / 3)   # snap-in a0 ~ (2 vartheta M)^(2/3)
+    for M in (0.1, 0.3, 0.6):
+        for x in eq.zero_load_contact(M, 1.0):
+            assert abs(pp.zero_load_81(x, M, 1.0)) < 1e-12 * max(1, x * x)
+            # P* vanishes there (the same equation times M)
+            assert abs(eq.curve(M, 1.0, "sub-critical" if x < jkrcyl.a_crit(1) else "super-critical",
+                                a=[x]).P_star[0]) < 1e-12
+    M_max, a_at = eq.zero_load_max_M(1.0)
+    assert 0.64 < M_max < 0.65 and a_at > jkrcyl.a_crit(1.0)
+    assert len(eq.zero_load_contact(M_max * 0.999, 1.0)) == 2
+    assert eq.zero_load_contact(M_max * 1.001, 1.0) == []
+    assert eq.zero_load_contact(0.8, 1.0) == [] and eq.zero_load_contact(0.0, 1.0) == []
+    assert eq.zero_load_contact(0.5, math.inf) == [1.0]
+
+
+def test_fig11_claims():
+    # sub-critical: a P* minimum at M = 0.3 (stable and unstable branches), none at M = 0.5
+    sub3 = eq.stationary_points(0.3, 1.0, "load", "sub-critical")
+    assert [p.kind for p in sub3] == ["min"] and sub3[0].P_star < 0
+    assert eq.stationary_points(0.5, 1.0, "load", "sub-critical") == []
+    cv = eq.curve(0.3, 1.0, "sub-critical", n=400)
+    assert cv.stable_load.any() and (~cv.stable_load).any()
+    assert not eq.curve(0.5, 1.0, "sub-critical", n=400).stable_load.any()
+    # super-critical: detachment minimum below zero at M = 0.5, above zero at M = 0.8
+    (s5,) = eq.adherence(0.5, 1.0, "load", regimes=("super-critical",))
+    (s8,) = eq.adherence(0.8, 1.0, "load", regimes=("super-critical",))
+    assert s5.P_star < 0 < s8.P_star
+    for M in (0.5, 0.8):
+        cv = eq.curve(M, 1.0, "super-critical", n=400)
+        assert cv.stable_load.any()
+        # what holds (paper: 'unstable branch at smaller contact angles'): the stable branch is the
+        # one at SMALLER angles, below the P* minimum, where dP*/da < 0
+        (amin,) = [p.a for p in eq.adherence(M, 1.0, "load", regimes=("super-critical",))]
+        assert cv.stable_load[cv.a < amin * 0.99].all() and not cv.stable_load[cv.a > amin * 1.01].any()
+    # paper: 'at M = 0.3 there are stable super-critical states' -- P* increases monotonically there,
+    # so no super-critical state is stable at fixed load
+    cv = eq.curve(0.3, 1.0, "super-critical", n=1000)
+    assert (cv.dP_star_da > 0).all() and not cv.stable_load.any()
+
+
+def test_adherence_to_full_precision():
+    for M, th in ((0.1, 1.0), (0.3, 0.5), (0.5, 1.0), (0.5, math.inf)):
+        for p in eq.adherence(M, th, "load"):
+            reg = p.regime
+            here = eq.curve(M, th, reg, a=[p.a]).P_star[0]
+            for f in (1 - 1e-7, 1 + 1e-7):
+                assert eq.curve(M, th, reg, a=[p.a * f]).P_star[0] >= here
+            assert abs(eq.curve(M, th, reg, a=[p.a]).dP_star_da[0]) < 1e-12 * max(1, abs(here) * 1e3)
+        for p in eq.adherence(M, th, "grip"):
+            assert abs(eq.curve(M, th, p.regime, a=[p.a]).ddelta_da[0]) < 1e-10
+
+
+def test_no_point_gives_empty_results():
+    assert eq.adherence(0.5, 1.0, "load", regimes=("sub-critical",)) == []
+    assert eq.adherence(0.0, 1.0, "load") == []
+    assert eq.solve_load(0.3, 1.0, -5.0, "sub-critical") == [] or all(
+        eq.curve(0.3, 1.0, "sub-critical", a=[x]).P_star[0] < -4 for x in eq.solve_load(0.3, 1.0, -5.0))
+
+
+def test_delta_zero_at_M1_has_positive_load():
+    """Section 8.2 / Fig. 5c: delta = 0 at M = 1 lies at eps = 2.41 with P > 0 (identical bodies, nu = 0.3)."""
+    gb = 1 / 2.8
+    (a, *_) = eq.solve_approach(1.0, 1.0, 0.0, "super-critical", gb=gb)
+    assert abs(2 * math.atan(a) - 2.41) < 0.01
+    assert eq.curve(1.0, 1.0, "super-critical", a=[a], gb=gb).P_star[0] > 0
+    # 'only negative resultants P occur when delta = 0 in Fig. 3b' (sub-critical, small M)
+    for M in (0.1, 0.2, 0.3):
+        for x in eq.solve_approach(M, 1.0, 0.0, "sub-critical", gb=gb):
+            assert eq.curve(M, 1.0, "sub-critical", a=[x], gb=gb).P_star[0] < 0
+
+
+def test_half_plane_adherence_vs_cylinder_fig10():
+    """Fig. 10: the half plane under-predicts the adherence force where the cylinder detaches on the
+    sub-critical branch; it does not once the detachment minimum is super-critical at larger M."""
+    for th, Ms_below, Ms_above in ((1.0, (0.05, 0.1, 0.2, 0.3, 0.4), (0.5, 0.6)),
+                                   (0.5, (0.05, 0.2, 0.4, 0.55, 0.6), (0.65, 0.7))):
+        for M in Ms_below + Ms_above:
+            cyl = min(p.P_star for p in eq.adherence(M, th, "load"))
+            half = special.half_plane_adherence(M, th)[1]
+            assert (cyl < half) == (M in Ms_below), (th, M, cyl, half)
+
+
+def test_contact_delegations():
+    m = jkrcyl.Materials(G=1.0, kappa=2.0, G_I=1.0, kappa_I=2.0)
+    c = jkrcyl.Contact(R=1.0, Delta=0.01, w=1e-4, materials=m)
+    for regime in eq.REGIMES:
+        cv = c.curve(regime=regime, n=50)
+        s = c.state(cv.a)
+        np.testing.assert_allclose(cv.P_star, s.P_star, rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(cv.delta_over_Delta, s.delta_over_Delta, rtol=1e-11, atol=1e-12)
+        np.testing.assert_allclose(cv.h_pi_over_Delta, s.h_pi_over_Delta, rtol=1e-11, atol=1e-12)
+        assert np.array_equal(cv.feasible, s.feasible)
+    for p in c.adherence("load") + c.adherence("grip"):
+        assert {p.regime} <= set(eq.REGIMES) and isinstance(p.feasible, bool)
+        assert math.isfinite(p.a) and math.isfinite(p.eps) and math.isfinite(p.P_star)
+    assert jkrcyl.zero_load_contact is eq.zero_load_contact
+
+
+def test_bad_inputs_name_the_parameter():
+    with pytest.raises(ValueError, match="regime"):
+        eq.curve(0.3, 1.0, "hyper")
+    with pytest.raises(ValueError, match="regime"):
+        eq.curve(0.3, math.inf, "super-critical")
+    with pytest.raises(ValueError, match="control"):
+        eq.adherence(0.3, 1.0, "torque")
+    with pytest.raises(ValueError, match="^M "):
+        eq.zero_load_contact(-1, 1.0)
+    with pytest.raises(ValueError, match="theta"):
+        eq.curve(0.3, 0.2)
