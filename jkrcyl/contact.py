@@ -9,9 +9,9 @@ import numpy as np
 
 from ._validate import contact_parameter, finite_scalar
 from .critical import a_crit
-from .generated import approach as _approach
 from .generated import gap as _gap
 from .generated import load as _load
+from .generated import state as _state
 from .materials import Materials
 
 
@@ -82,12 +82,9 @@ class Contact:
         """Equilibrium at contact parameter(s) a = tan(eps/2) > 0: see :class:`State`."""
         arr = contact_parameter(a)
         flat = np.ascontiguousarray(arr.ravel())
-        P, B, C, c0, c1, r0 = _load.load_state_array(R=self.R, a=flat, **self._args())
+        P, B, C, c0, c1, r0, delta, h_pi = _state.full_state_array(
+            R=self.R, a=flat, inv_G_I=self.materials.inv_G_I, **self._args())
         K, G_release = _load.stress_intensity_array(C=C, R=self.R, a=flat, beta=self.beta, c0=c0, c1=c1)
-        d_Delta, d_zeta = _approach.approach_parts_array(
-            a=flat, beta=self.beta, inv_G_I=self.materials.inv_G_I, inv_theta=self.materials.inv_theta)
-        delta = self.Delta * d_Delta + self.zeta * d_zeta         # (5.8), linear in (Delta, zeta)
-        h_pi = _gap.gap_pi_array(a=flat, **self._args())
         shape = arr.shape
         fields = {k: _shaped(v, shape) for k, v in dict(
             a=flat, P=P, B=B, C=C, c0=c0, c1=c1, r0=r0, K=K, G_release=G_release, delta=delta,
