@@ -47,16 +47,38 @@ def _docstring(text, indent="    "):
     return f'{indent}"""\n{body}\n{indent}"""\n'
 
 
+def _assignment(target, expr, branch_names):
+    """``target = expr``, with every Piecewise (innermost first) hoisted into an if/elif/else block."""
+    lines = []
+    while True:
+        pieces = [p for p in sp.postorder_traversal(expr) if isinstance(p, sp.Piecewise)]
+        if not pieces:
+            break
+        piece, name = pieces[0], next(branch_names)
+        for i, (value, cond) in enumerate(piece.args):
+            if cond == sp.true:
+                lines.append("    else:\n" if i else "    if True:\n")
+            else:
+                lines.append(f"    {'elif' if i else 'if'} {code(cond)}:\n")
+            lines.append(f"        {name} = {code(value)}\n")
+        if piece.args[-1][1] != sp.true:
+            lines.append(f"    else:\n        {name} = math.nan\n")
+        expr = expr.xreplace({piece: name})
+    lines.append(f"    {target} = {code(expr)}\n")
+    return lines
+
+
 def scalar_function(kernel):
-    """The scalar @njit function: cse assignments, then the outputs."""
+    """The scalar @njit function: cse assignments, then the outputs; branches as if/else blocks."""
     args = ", ".join(sym.name for sym in kernel.args())
     replacements, reduced = _cse(kernel)
     lines = [f"@njit(cache=True)\ndef {kernel.name}({args}):\n", _docstring(kernel.doc)]
+    branch_names = sp.numbered_symbols("b")
     for sym, expr in replacements:
-        lines.append(f"    {sym} = {code(expr)}\n")
+        lines += _assignment(sym, expr, branch_names)
     names = [name for name, _ in kernel.outputs]
     for name, expr in zip(names, reduced):
-        lines.append(f"    {name} = {code(expr)}\n")
+        lines += _assignment(name, expr, branch_names)
     lines.append(f"    return {', '.join(names)}\n")
     return "".join(lines)
 

@@ -11,6 +11,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
+from jkrcyl import paper
 from jkrcyl.generated.approach import approach, approach_array, approach_parts
 
 # alpha* = 0 material pairs (G, kappa, G_I, kappa_I): (kappa - 1)/G = (kappa_I - 1)/G_I
@@ -103,24 +104,11 @@ def delta_exact(a, beta, t, g, Delta, zeta, Rv=1):
 
 
 def delta_58(a, beta, t, g, Delta, zeta):
-    """(5.8) hand-typed in float64, first term read as B R (kappa+1)/(4 pi) * 1/(2G) = B R beta t/(8 pi).
-
-    B, P of (4.4), (4.5a), C of (4.5b) (all divided through by vartheta), c0, c1 of (2.6).
-    """
-    E, L, sa = math.sqrt(1 + a * a), math.log1p(a * a), math.sqrt(a)
-    D = 2 - t * (L + 2 * a**4)
-    P = 2 * E**2 * (4 * math.pi * Delta * a**2 / beta - zeta * sa * (2 + t * (a**2 - L))) / D
-    B = 4 / (R * beta) * (2 * math.pi * Delta * (L + 2 * a**4) - zeta * beta * sa * (1 + 2 * a**2)) / D
-    C = (8 * math.pi * Delta / (R * beta) * ((1 - 2 * a**2) * (E - 1) + 2 * a**4) / D
-         - zeta * sa / R * (E * (t * (2 - 2 * a**4 + 3 * L) - 6)
-                            + 2 * (4 - t * (1 + 2 * L) + 2 * a**2 * (t * (a**2 - L) + 2))) / D)
-    c0, c1 = -Delta - R * beta * t * B / (8 * math.pi), beta * P / (2 * math.pi)
-    eps = 2 * math.atan(a)
-    Ls = math.log(math.sin(eps / 2))
-    return (B * R * beta * t / (8 * math.pi) + P / (4 * math.pi) * (beta / 2 - g)
-            - (5 / 4 * c0 + c0 * Ls + 19 / 16 * c1 + 17 / 8 * c1 * Ls) - c1 / 16 * (5 + 6 * Ls) * math.cos(2 * eps)
-            + 1 / (4 * math.pi) * (3 + 4 * Ls) * (4 * (c0 + c1) * math.pi - beta * R * C) * math.cos(eps / 2)**3
-            - 1 / 4 * (6 * c1 * (1 + Ls) + c0 * (7 + 12 * Ls)) * math.cos(eps))
+    """(5.8) hand-typed (jkrcyl.paper.delta_58) in float64; vartheta = 1/t, with 1e300 standing in
+    for the rigid cradle t = 0 (every 1/vartheta term of (4.4)-(5.8) is then below one ulp)."""
+    theta = 1 / t if t else 1e300
+    G_I = 1 / g if g else math.inf
+    return paper.delta_58(a, Delta, R, beta, theta, G_I, zeta)
 
 
 def kernel_delta(a, G, kappa, G_I, kappa_I, w, Delta=DELTA):
