@@ -6,7 +6,7 @@ STAMP := $(VENV)/.installed-stamp
 BENCH_STAMP := $(VENV)/.bench-stamp
 export PYTHONHASHSEED := 0
 
-.PHONY: derive test bench figures clean-venv
+.PHONY: derive test bench figures atlas clean-venv
 
 $(STAMP): pyproject.toml constraints.txt
 	test -x $(VPY) || $(PYTHON) -m venv $(VENV)
@@ -32,6 +32,10 @@ bench: $(BENCH_STAMP)
 ## make figures: draw the paper's Figures 2-12 (PNG, PDF, CSV) into figures/
 figures: $(STAMP)
 	$(VENV)/bin/jkrcyl figures --out figures
+
+## make atlas: regime atlas over (M, vartheta), 1000 x 1000 + vartheta = inf, into atlas/ (npz, CSV, PNG, PDF)
+atlas: $(STAMP)
+	$(VENV)/bin/jkrcyl atlas --out atlas
 
 clean-venv:
 	rm -rf $(VENV)

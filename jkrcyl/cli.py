@@ -4,6 +4,7 @@
     jkrcyl curve --M 0.3 --theta 1          # one equilibrium branch as CSV (or --format json)
     jkrcyl curve --E 1e6 --nu 0.45 --E-I inf --nu-I 0.3 --R 0.01 --Delta 1e-4 --w 0.05
     jkrcyl adherence --M 0.3 --theta 1      # fixed-load and fixed-grip adherence, zero-load contact
+    jkrcyl atlas --out atlas                # regime map over (M, vartheta): atlas.npz, atlas.csv, PNG, PDF
 
 Errors are one line on stderr naming the bad parameter; exit status 2.
 """
@@ -155,9 +156,33 @@ def _cmd_figures(args):
     return 0
 
 
+def _cmd_atlas(args):
+    import time
+    from . import atlas
+    if args.n_M < 2 or args.n_theta < 2:
+        raise ValueError(f"n-M and n-theta must be >= 2, got {args.n_M} and {args.n_theta}")
+    import pathlib
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    Ms, th = atlas.default_grid(args.n_M, args.n_theta, M_max=args.M_max, theta_min=args.theta_min,
+                                theta_max=args.theta_max, with_inf=not args.no_inf)
+    t0 = time.perf_counter()
+    res = atlas.classify(Ms, th, progress=None if args.quiet else atlas.text_progress())
+    t1 = time.perf_counter()
+    atlas.write_npz(out / "atlas.npz", res)
+    if not args.no_csv:
+        atlas.write_csv(out / "atlas.csv", res)
+    files = atlas.draw(res, str(out / "atlas"))
+    t2 = time.perf_counter()
+    print(f"classified {Ms.size} x {th.size} pairs in {t1 - t0:.2f} s (output {t2 - t1:.2f} s); "
+          f"wrote atlas.npz{'' if args.no_csv else ', atlas.csv'}, {', '.join(pathlib.Path(f).name for f in files)} "
+          f"to {out}")
+    return 0
+
+
 def build_parser():
     p = _Parser(prog="jkrcyl", description=__doc__.split("\n\n")[0])
-    sub = p.add_subparsers(dest="command", metavar="command", title="commands (figures, curve, adherence)", parser_class=_Parser)
+    sub = p.add_subparsers(dest="command", metavar="command", title="commands (figures, curve, adherence, atlas)", parser_class=_Parser)
     sub.required = True
     f = sub.add_parser("figures", help="draw the paper's Figures 2-12 (PNG, PDF, CSV)",
                        description="Draw Figures 2-12 into OUT as figNN.png, figNN.pdf and figNN.csv "
@@ -182,6 +207,22 @@ def build_parser():
     _add_problem(a)
     a.add_argument("--format", choices=("text", "json"), default="text", help="output format (default text)")
     a.set_defaults(func=_cmd_adherence)
+    t = sub.add_parser("atlas", help="regime atlas over (M, vartheta): npz, CSV and a regime map",
+                       description="Classify every (M, vartheta) pair of a grid: sub-critical and super-critical "
+                                   "fixed-load detachment (feasible or not), overclosure before detachment, "
+                                   "zero-load contact (8.1), adherence force. The last row is vartheta = inf, "
+                                   "where M means M_R* and P* means P_R* of (7.6). Writes atlas.npz, atlas.csv, "
+                                   "atlas.png and atlas.pdf into OUT (see jkrcyl.atlas for the fields).")
+    t.add_argument("--out", default="atlas", help="output folder (default: atlas)")
+    t.add_argument("--n-M", type=int, default=1000, help="grid points in M (default 1000)")
+    t.add_argument("--n-theta", type=int, default=1000, help="grid points in vartheta, plus the inf row (default 1000)")
+    t.add_argument("--M-max", type=_float, default=2.0, help="M range [0, M_MAX] (default 2)")
+    t.add_argument("--theta-min", type=_float, default=0.5, help="smallest vartheta (default 0.5)")
+    t.add_argument("--theta-max", type=_float, default=5.0, help="largest finite vartheta (default 5)")
+    t.add_argument("--no-inf", action="store_true", help="leave out the vartheta = inf row")
+    t.add_argument("--no-csv", action="store_true", help="skip atlas.csv (the npz holds the same data)")
+    t.add_argument("--quiet", action="store_true", help="no progress bar")
+    t.set_defaults(func=_cmd_atlas)
     return p
 
 

@@ -1,0 +1,166 @@
+"""Issue 6, item 3: the regime atlas against jkrcyl.equilibria and a dense-curve check; CLI end to end."""
+import math
+import os
+import pathlib
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from jkrcyl import atlas as A
+from jkrcyl import equilibria as eq
+from jkrcyl.critical import a_crit
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+
+
+def m_sub(th):
+    """M where the sub-critical P* minimum runs into a_crit: numerator of P* zero at a_crit."""
+    ac = a_crit(th)
+    return 1 / (math.sqrt(ac) * (1 + 2 * ac * ac))
+
+
+def _samples():
+    pts = []
+    for th in (0.5, 1.0, 2.3, 5.0):
+        ms, mz = m_sub(th), eq.zero_load_max_M(th)[0]
+        pts += [(0.05, th), (ms * 0.99, th), (ms * 1.01, th), (mz * 0.995, th), (mz * 1.005, th), (1.7, th)]
+    pts += [(0.0, 1.0), (0.2, math.inf), (0.79, math.inf), (0.81, math.inf), (1.5, math.inf)]
+    return pts
+
+
+SAMPLES = _samples()
+
+
+@pytest.fixture(scope="module")
+def atlas_rows():
+    out = {}
+    for th in sorted({t for _, t in SAMPLES}):
+        Ms = sorted(M for M, t in SAMPLES if t == th)
+        res = A.classify(np.array(Ms), np.array([th]))
+        for j, M in enumerate(Ms):
+            out[(M, th)] = {k: res[k][0, j] for k in A.FIELDS_BOOL + A.FIELDS_INT + A.FIELDS_FLOAT}
+    return out
+
+
+def _dense_minima(M, th, regime):
+    """Local minima of P* on a dense curve (independent of root finding): list of (a, P*)."""
+    if math.isinf(th):
+        a = np.geomspace(1e-8, eq.RUBBERY_A_MAX * (1 - 1e-9), 40001)
+    else:
+        ac = a_crit(th)
+        s = np.concatenate([np.geomspace(1e-8, 0.5, 20000, endpoint=False), 1 - np.geomspace(0.5, 1e-9, 20000)])
+        a = ac * s if regime == "sub-critical" else ac * (1 + np.concatenate(
+            [np.geomspace(1e-9, 1, 20000, endpoint=False), np.geomspace(2, 1e4, 20000) - 1]))
+    P = eq.curve(M, th, regime, a=a).P_star
+    i = np.nonzero((P[1:-1] < P[:-2]) & (P[1:-1] < P[2:]))[0] + 1
+    return [(a[k], P[k]) for k in i]
+
+
+def _feasible(M, th, a, regime="sub-critical"):
+    return bool(eq.curve(M, th, regime, a=[a]).feasible[0])
+
+
+@pytest.mark.parametrize("M,th", SAMPLES)
+def test_atlas_agrees_with_equilibria(atlas_rows, M, th):
+    r = atlas_rows[(M, th)]
+    regs = ("sub-critical",) if math.isinf(th) else eq.REGIMES
+    ref = {p.regime: p for p in eq.adherence(M, th, "load", regimes=regs)}
+    # (1) sub-critical detachment: existence, location, P*, feasibility
+    sub = ref.get("sub-critical")
+    dense = _dense_minima(M, th, "sub-critical")
+    assert r["sub_min"] == (sub is not None) == bool(dense), (r["sub_min"], sub, dense)
+    if sub is not None:
+        assert abs(r["sub_a"] - sub.a) <= 1e-7 * sub.a
+        assert abs(r["sub_P"] - sub.P_star) <= 1e-12 * max(1.0, abs(sub.P_star))
+        assert r["sub_feasible"] == sub.feasible
+        assert abs(r["sub_P"] - min(p for _, p in dense)) <= 1e-6 * max(1.0, abs(r["sub_P"]))
+    else:
+        assert r["sub_a"] == r["sub_P"] == 0.0 and not r["sub_feasible"]
+    # (2) super-critical detachment (P* minimum with P* < 0)
+    sup = ref.get("super-critical")
+    if math.isinf(th):
+        assert not r["sup_min"] and not r["sup_detach"]
+    else:
+        dense = _dense_minima(M, th, "super-critical")
+        assert r["sup_min"] == (sup is not None) == bool(dense)
+        if sup is not None:
+            assert abs(r["sup_P"] - sup.P_star) <= 1e-12 * max(1.0, abs(sup.P_star))
+            assert r["sup_detach"] == (sup.P_star < 0)
+            assert r["sup_feasible"] == (sup.feasible and sup.P_star < 0)
+    # (3) overclosure before sub-critical detachment: dense feasibility along the branch
+    if math.isinf(th):
+        a_end = sub.a if sub is not None else eq.RUBBERY_A_MAX * (1 - 1e-9)
+    else:
+        a_end = sub.a if sub is not None else a_crit(th) * (1 - 1e-9)
+    a = np.linspace(1e-6, a_end, 20001)
+    feas = eq.curve(M, th, "sub-critical", a=a).feasible
+    assert r["overclosure"] == (not feas.all())
+    if r["overclosure"]:
+        aoc = r["a_overclosure"]
+        assert abs(aoc - a[np.argmin(feas)]) <= 2 * (a[1] - a[0])
+        assert _feasible(M, th, aoc * (1 - 1e-9)) and not _feasible(M, th, aoc * (1 + 1e-9))
+    else:
+        assert r["a_overclosure"] == 0.0
+    # (4) zero-load contact (8.1)
+    a0 = eq.zero_load_contact(M, th)
+    assert r["zero_load"] == bool(a0) and r["n_a0"] == len(a0)
+    if a0:
+        assert abs(r["a0_small"] - a0[0]) <= 1e-12 * a0[0] and abs(r["a0_large"] - a0[-1]) <= 1e-12 * a0[-1]
+    # (5) adherence force: lowest feasible detachment point
+    cands = [p for p in ref.values() if p.feasible and (p.regime == "sub-critical" or p.P_star < 0)]
+    assert r["adherence"] == bool(cands)
+    if cands:
+        best = min(cands, key=lambda p: p.P_star)
+        assert abs(r["P_adh"] - best.P_star) <= 1e-12 * max(1.0, abs(best.P_star))
+        assert r["adh_branch"] == (1 if best.regime == "sub-critical" else 2)
+    else:
+        assert r["P_adh"] == 0.0 and r["a_adh"] == 0.0 and r["adh_branch"] == 0
+
+
+def test_transitions_are_sampled(atlas_rows):
+    """The samples straddle the transitions: sub-critical minimum on one side only, zero-load likewise."""
+    for th in (0.5, 1.0, 2.3, 5.0):
+        ms, mz = m_sub(th), eq.zero_load_max_M(th)[0]
+        assert atlas_rows[(ms * 0.99, th)]["sub_min"] and not atlas_rows[(ms * 1.01, th)]["sub_min"]
+        assert atlas_rows[(mz * 0.995, th)]["zero_load"] and not atlas_rows[(mz * 1.005, th)]["zero_load"]
+
+
+def test_no_nan_and_masks_zero_values():
+    Ms, th = A.default_grid(40, 30)
+    res = A.classify(Ms, th)
+    for k in A.FIELDS_FLOAT:
+        assert np.isfinite(res[k]).all(), k
+    for mask, fields in (("sub_min", ("sub_a", "sub_P")), ("sup_min", ("sup_a", "sup_P")),
+                         ("overclosure", ("a_overclosure",)), ("zero_load", ("a0_small", "a0_large")),
+                         ("adherence", ("a_adh", "P_adh"))):
+        for f in fields:
+            assert (res[f][~res[mask]] == 0).all(), f
+    assert (res["P_adh"][res["adherence"]] < 0).all()
+
+
+def test_parallel_and_serial_bit_identical():
+    Ms, th = A.default_grid(37, 23)
+    p = A.classify(Ms, th, parallel=True)
+    s = A.classify(Ms, th, parallel=False, chunk_rows=5)
+    for k in A.FIELDS_BOOL + A.FIELDS_INT + A.FIELDS_FLOAT:
+        assert np.array_equal(p[k], s[k]), k
+
+
+def test_cli_atlas_end_to_end(tmp_path):
+    env = dict(os.environ, MPLBACKEND="Agg")
+    r = subprocess.run([sys.executable, "-m", "jkrcyl.cli", "atlas", "--out", str(tmp_path), "--n-M", "20",
+                        "--n-theta", "15"], cwd=ROOT, env=env, capture_output=True, text=True, timeout=180)
+    assert r.returncode == 0, r.stderr
+    assert "16/16 rows" in r.stderr                       # progress bar (15 rows + inf)
+    for name in ("atlas.npz", "atlas.csv", "atlas.png", "atlas.pdf"):
+        assert (tmp_path / name).stat().st_size > 0
+    z = np.load(tmp_path / "atlas.npz")
+    assert z["sub_min"].shape == (16, 20) and math.isinf(z["theta"][-1])
+    lines = (tmp_path / "atlas.csv").read_text().splitlines()
+    assert lines[0].startswith("#") and lines[1].split(",") == list(A.CSV_COLUMNS)
+    assert len(lines) == 2 + 16 * 20 and all(len(x.split(",")) == len(A.CSV_COLUMNS) for x in lines[2:])
+    bad = subprocess.run([sys.executable, "-m", "jkrcyl.cli", "atlas", "--out", str(tmp_path), "--n-M", "1"],
+                         cwd=ROOT, env=env, capture_output=True, text=True, timeout=60)
+    assert bad.returncode == 2 and len(bad.stderr.strip().splitlines()) == 1
