@@ -41,6 +41,7 @@ import time
 import numpy as np
 from numba import njit, prange
 
+from .critical import a_crit_kernel
 from .generated.derivatives import load_slopes as _load_slopes
 from .generated.gap import gap_pi as _gap_pi
 from .generated.load import load_state as _load_state
@@ -153,21 +154,6 @@ def _root(kind, lo, hi, flo, fhi, p1, p2, p3):
         else:
             hi, fhi = mid, fm
     return lo if abs(flo) <= abs(fhi) else hi
-
-
-@njit(cache=True)
-def a_crit_nb(theta):
-    """a_crit(vartheta) (jkrcyl.critical.a_crit, same Newton iteration); inf for vartheta = inf."""
-    if math.isinf(theta):
-        return math.inf
-    u = max(math.sqrt(theta), 2.0 * theta)
-    for _ in range(200):
-        f = 2.0 * theta - math.log1p(u) - 2.0 * u * u
-        step = f / (1.0 / (1.0 + u) + 4.0 * u)
-        u += step
-        if abs(step) <= 1e-16 * u:
-            break
-    return math.sqrt(u)
 
 
 @njit(cache=True)
@@ -370,7 +356,7 @@ def _row_constants(thetas):
     mm = np.empty(n)
     am = np.empty(n)
     for i in range(n):
-        ac[i] = a_crit_nb(thetas[i])
+        ac[i] = a_crit_kernel(thetas[i])
         mm[i], am[i] = zero_load_max_nb(thetas[i])
     return ac, mm, am
 
