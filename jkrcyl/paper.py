@@ -141,3 +141,17 @@ def delta_58(a, Delta, R, beta, theta, G_I, zeta, lib=math):
             - c1 / 16 * (5 + 6 * Ls) * lib.cos(2 * eps)
             + 1 / (4 * lib.pi) * (3 + 4 * Ls) * (4 * (c0 + c1) * lib.pi - beta * R * C) * lib.cos(eps / 2)**3
             - (6 * c1 * (1 + Ls) + c0 * (7 + 12 * Ls)) * lib.cos(eps) / 4)
+
+
+def load_solution_t(a, Delta, R, beta, inv_theta, zeta, lib=math):
+    """(4.4) and (4.5a) divided through by vartheta (as the paper does for vartheta -> inf in (7.5)),
+    c0, c1 of (2.6) and r0 from the Griffith condition (3.6b): r0 = -E zeta sqrt(a)/(pi R).
+
+    inv_theta = 1/vartheta, so the rigid cradle is inv_theta = 0.  Returns a dict P, B, c0, c1, r0.
+    """
+    t, Ev, Lv, sa = inv_theta, E(a, lib), L(a, lib), lib.sqrt(a)
+    D = 2 - t * (Lv + 2 * a**4)
+    P = 2 * Ev**2 * (4 * lib.pi * Delta * a**2 / beta - zeta * sa * (2 + t * (a**2 - Lv))) / D
+    B = 4 / (R * beta) * (2 * lib.pi * Delta * (Lv + 2 * a**4) - zeta * beta * sa * (1 + 2 * a**2)) / D
+    return dict(P=P, B=B, c0=-Delta - R * beta * t * B / (8 * lib.pi), c1=beta * P / (2 * lib.pi),
+                r0=-Ev * zeta * sa / (lib.pi * R))

@@ -37,16 +37,9 @@ def zeta_of_w(w, beta):
 
 # --- references from the paper, in mpmath ------------------------------------------------------------
 def load_state(a, Delta, beta, t, zeta, Rv=R):
-    """(4.4), (4.5a) divided through by vartheta, c0 and c1 of (2.6), r0 from the Griffith condition (3.6b)."""
+    """(4.4), (4.5a) over vartheta, (2.6), r0 of (3.6b): jkrcyl.paper.load_solution_t at mp.dps."""
     a, Delta, beta, t, zeta, Rv = map(mp.mpf, (a, Delta, beta, t, zeta, Rv))
-    E, L = mp.sqrt(1 + a**2), mp.log(1 + a**2)
-    D = 2 - t * (L + 2 * a**4)
-    P = 2 * E**2 * (4 * mp.pi * Delta * a**2 / beta - zeta * mp.sqrt(a) * (2 + t * (a**2 - L))) / D
-    B = 4 / (Rv * beta) * (2 * mp.pi * Delta * (L + 2 * a**4) - zeta * beta * mp.sqrt(a) * (1 + 2 * a**2)) / D
-    c0 = -Delta - Rv * beta * t * B / (8 * mp.pi)
-    c1 = beta * P / (2 * mp.pi)
-    r0 = -E * zeta * mp.sqrt(a) / (mp.pi * Rv)
-    return dict(P=P, B=B, c0=c0, c1=c1, r0=r0)
+    return paper.load_solution_t(a, Delta, Rv, beta, t, zeta, lib=mp)
 
 
 def pressure_54(a, beta, st, Rv=R):

@@ -15,6 +15,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
+from jkrcyl import paper
 from jkrcyl.generated import gap as G
 
 # three material pairs with alpha* = 0 (h depends on beta*, vartheta only; delta on kappa_I, G_I too):
@@ -28,14 +29,11 @@ R, DELTA = 1.0, 1e-3
 
 
 def mp_state(a, beta, t, zeta, delta_=DELTA):
+    """The load solution at mp.dps: jkrcyl.paper.load_solution_t ((4.4), (4.5a), (2.6), (3.6b))."""
     a, beta, t, zeta, d = (mp.mpf(v) for v in (a, beta, t, zeta, delta_))
-    E, L, sa = mp.sqrt(1 + a * a), mp.log1p(a * a), mp.sqrt(a)
-    D = 2 - t * (L + 2 * a**4)
-    P = 2 * E**2 * (4 * mp.pi * d * a**2 / beta - zeta * sa * (2 + t * (a**2 - L))) / D     # (4.4)
-    B = 4 / (R * beta) * (2 * mp.pi * d * (L + 2 * a**4) - zeta * beta * sa * (1 + 2 * a**2)) / D   # (4.5a)
-    return dict(a=a, E=E, eps=2 * mp.atan(a), P=P, B=B, beta=beta, Delta=d, k=4 / (R * beta),
-                c0=-d - R * beta * B * t / (8 * mp.pi), c1=beta * P / (2 * mp.pi),   # (2.6)
-                r0=-E * zeta * sa / (mp.pi * R))                                   # (3.6b)
+    st = paper.load_solution_t(a, d, mp.mpf(R), beta, t, zeta, lib=mp)
+    st.update(a=a, E=mp.sqrt(1 + a * a), eps=2 * mp.atan(a), beta=beta, Delta=d, k=4 / (R * beta))
+    return st
 
 
 def mp_int_N(st, f, breaks=()):
