@@ -14,6 +14,8 @@ from .generated import load as _load
 from .generated import state as _state
 from .materials import Materials
 
+PARALLEL_MIN = 20000   # state() uses the prange kernel from this many contact parameters on
+
 
 @dataclass(frozen=True)
 class Contact:
@@ -82,7 +84,9 @@ class Contact:
         """Equilibrium at contact parameter(s) a = tan(eps/2) > 0: see :class:`State`."""
         arr = contact_parameter(a)
         flat = np.ascontiguousarray(arr.ravel())
-        P, B, C, c0, c1, r0, delta, h_pi = _state.full_state_array(
+        # prange over both cores for long inputs: bit-identical to the serial loop (tests/test_parallel.py)
+        kernel = _state.full_state_parallel if flat.size >= PARALLEL_MIN else _state.full_state_array
+        P, B, C, c0, c1, r0, delta, h_pi = kernel(
             R=self.R, a=flat, inv_G_I=self.materials.inv_G_I, **self._args())
         K, G_release = _load.stress_intensity_array(C=C, R=self.R, a=flat, beta=self.beta, c0=c0, c1=c1)
         shape = arr.shape

@@ -65,3 +65,14 @@ def test_pressure_parts_sum_to_load():
     assert np.all(nu == 0)
     P = c.R * np.sum(nb * np.cos(phi)) * (2 * eps / n)
     assert P == pytest.approx(float(c.state(a).P), rel=1e-6)
+
+
+def test_long_inputs_use_the_parallel_kernel_bit_identically():
+    """Contact.state switches to full_state_parallel at PARALLEL_MIN points; results do not change."""
+    from jkrcyl import contact as contact_module
+    c = jkrcyl.Contact(R=1.0, Delta=0.01, w=1e-4, materials=MAT)
+    a = np.geomspace(1e-6, 1e3, contact_module.PARALLEL_MIN + 7)
+    long = c.state(a)
+    short = [c.state(a[i:i + 5000]) for i in range(0, a.size, 5000)]
+    for name in ("P", "B", "C", "delta", "h_pi", "K"):
+        assert np.array_equal(getattr(long, name), np.concatenate([getattr(s, name) for s in short])), name
