@@ -1,7 +1,7 @@
 """The paper's printed formulas, typed by hand: the reference the tests compare the kernels with.
 
-Every function takes ``lib`` (``math`` for float64, ``mpmath`` for high precision) so that a test
-can evaluate the printed formula at 50 digits.  Names carry the equation number.  Where the
+Every function takes ``lib`` (``math`` for float64, ``numpy`` for arrays, ``mpmath`` for high
+precision) so that a test can evaluate the printed formula at 50 digits.  Names carry the equation number.  Where the
 derivation proved the print wrong, the corrected form is used and the comment says so
 (see generated/DERIVATION.md, Errata).  Symbols: vartheta -> theta, zeta* -> zeta, beta* -> beta.
 """
@@ -14,8 +14,8 @@ def E(a, lib=math):
 
 
 def L(a, lib=math):
-    """L = log(1 + a^2) (section 4)."""
-    return lib.log(1 + a * a)
+    """L = log(1 + a^2) (section 4), evaluated as log1p so tiny a keeps its digits."""
+    return lib.log1p(a * a)
 
 
 def a_crit_equation(a, theta, lib=math):

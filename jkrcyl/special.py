@@ -12,31 +12,27 @@ import math
 
 import numpy as np
 
+from . import paper
 from ._validate import contact_parameter, finite_scalar, theta as _check_theta
 from .critical import a_crit as _a_crit
+from .equilibria import _bisect
 from .generated import gap as _gap
 
 
-# --- (7.1), (7.2) -------------------------------------------------------------------------------
+# --- (7.1), (7.2), (7.4): the printed formulas of jkrcyl.paper, on arrays ------------------------------
 def adhesionless_load(a, Delta, G, kappa, beta):
     """(7.1): P|_{w=0} = 8 pi Delta G a^2 (1 + a^2)/(2 G beta* - (L + 2a^4)(1 + kappa)) [N/m]."""
-    a = contact_parameter(a)
-    L = np.log1p(a * a)
-    return 8 * np.pi * Delta * G * a**2 * (1 + a**2) / (2 * G * beta - (L + 2 * a**4) * (1 + kappa))
+    return paper.P_71(contact_parameter(a), Delta, G, kappa, beta, lib=np)
 
 
 def adhesionless_BR_over_P(a):
     """(7.2): B R/P|_{w=0} = (log(1 + a^2) + 2 a^4)/(a^2 (1 + a^2)); -> 1 as a -> 0."""
-    a = contact_parameter(a)
-    return (np.log1p(a * a) + 2 * a**4) / (a**2 * (1 + a**2))
+    return paper.BR_over_P_72(contact_parameter(a), lib=np)
 
 
-# --- half plane (7.3)-(7.4), section 8.1 ------------------------------------------------------------
-def half_plane_load(a_h, R, R_D, A, w):
-    """(7.4): P_h = a_h^2 R_D/(2 A R* R) - sqrt(4 a_h w/A), 1/R* = 1/R_D - 1/R, a_h = 2 a R [N/m]."""
-    a_h = np.asarray(a_h, dtype=float)
-    R_star = 1 / (1 / R_D - 1 / R)
-    return a_h**2 / (2 * A * R_star) * R_D / R - np.sqrt(4 * a_h * w / A)
+def half_plane_load(a, Delta, R, beta, w):
+    """(7.4): P_h = a_h^2 R_D/(2 A R* R) - sqrt(4 a_h w/A), a_h = 2 a R, 1/R* = 1/R_D - 1/R [N/m]."""
+    return paper.P_74(contact_parameter(a), Delta, R, beta, w, lib=np)
 
 
 def half_plane_P_star(a, M, theta):
@@ -55,21 +51,16 @@ def half_plane_adherence(M, theta):
 
 # --- rubbery cylinder, vartheta = inf (7.5)-(7.7) -------------------------------------------------
 def rubbery_load(a, Delta, beta, w, R):
-    """(7.5): P = 4 pi (1 + a^2) Delta a^2/beta* - 2 (1 + a^2) sqrt(2 w a R/A), A = beta*/(2 pi) [N/m]."""
-    a = contact_parameter(a)
+    """(7.5): P = 4 pi (1 + a^2) Delta a^2/beta* - 2 (1 + a^2) sqrt(2 w a R/A), A = beta*/(2 pi) [N/m];
+    the same as (7.6) times 4 pi Delta/beta* with M_R* = sqrt(w A R)/(sqrt(2) Delta)."""
     A = beta / (2 * np.pi)
-    return 4 * np.pi * (1 + a**2) * Delta * a**2 / beta - 2 * (1 + a**2) * np.sqrt(2 * w * a * R / A)
+    M_R = math.sqrt(w * A * R) / (math.sqrt(2) * Delta)
+    return 4 * np.pi * Delta / beta * rubbery_P_star(a, M_R)
 
 
 def rubbery_P_star(a, M_R):
     """(7.6): P_R* = (1 + a^2)(a^2 - 2 M_R* sqrt(a)), P_R* = P beta*/(4 pi Delta), M_R* = sqrt(w A R)/(sqrt(2) Delta)."""
-    a = contact_parameter(a)
-    return (1 + a**2) * (a**2 - 2 * M_R * np.sqrt(a))
-
-
-def lift_off_equation(a, M_R):
-    """(7.7): 4 a^(7/2) - 5 M_R* a^2 + 2 a^(3/2) - M_R* (= sqrt(a) dP_R*/da)."""
-    return 4 * a**3.5 - 5 * M_R * a**2 + 2 * a**1.5 - M_R
+    return paper.P_R_star_76(contact_parameter(a), M_R, lib=np)
 
 
 def rubbery_lift_off(M_R):
@@ -81,19 +72,11 @@ def rubbery_lift_off(M_R):
     M_R = finite_scalar("M_R", M_R, low=0.0)
     if M_R == 0:
         return math.nan, math.nan
-    f = lambda x: lift_off_equation(x, M_R)
+    f = lambda x: paper.lift_off_77(x, M_R)
     lo, hi = 0.0, 1.0
     while f(hi) <= 0:
         lo, hi = hi, 2 * hi
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if mid <= lo or mid >= hi:
-            break
-        if f(mid) <= 0:
-            lo = mid
-        else:
-            hi = mid
-    a = lo if abs(f(lo)) <= abs(f(hi)) else hi
+    a = _bisect(f, lo, hi)
     return a, float(rubbery_P_star(a, M_R))
 
 

@@ -2,6 +2,7 @@
 general kernels in the corresponding limit."""
 import math
 
+import mpmath as mp
 import numpy as np
 import pytest
 
@@ -13,6 +14,12 @@ from jkrcyl import special
 A = np.array([1e-3, 0.05, 0.3, 0.7, 0.9])
 
 
+def _mp(formula, *args):
+    """A printed formula of jkrcyl.paper evaluated at 50 digits."""
+    with mp.workdps(50):
+        return float(formula(*(mp.mpf(v) for v in args), lib=mp))
+
+
 def _identical():
     return jkrcyl.Materials(G=1.0, kappa=2.0, G_I=1.0, kappa_I=2.0)
 
@@ -21,12 +28,12 @@ def test_adhesionless_71_72():
     m = _identical()
     c = jkrcyl.Contact(R=1.5, Delta=0.01, w=0.0, materials=m)
     P = special.adhesionless_load(A, c.Delta, m.G, m.kappa, m.beta)
-    np.testing.assert_allclose(P, [pp.P_71(x, c.Delta, m.G, m.kappa, m.beta) for x in A], rtol=1e-14)
+    # float64 evaluation of the printed (7.1) vs the same print at 50 digits
+    np.testing.assert_allclose(P, [_mp(pp.P_71, x, c.Delta, m.G, m.kappa, m.beta) for x in A], rtol=1e-14)
     s = c.state(A)
     np.testing.assert_allclose(P, s.P, rtol=1e-12)
     BR = special.adhesionless_BR_over_P(A)
-    # the printed form in jkrcyl.paper uses log(1 + a^2) (cancels at a = 1e-3); special uses log1p
-    np.testing.assert_allclose(BR, [pp.BR_over_P_72(x) for x in A], rtol=1e-9)
+    np.testing.assert_allclose(BR, [_mp(pp.BR_over_P_72, x) for x in A], rtol=1e-9)
     np.testing.assert_allclose(BR, s.B * c.R / s.P, rtol=1e-11)
     assert abs(special.adhesionless_BR_over_P(1e-5) - 1) < 1e-9      # -> 1 as a -> 0
 
@@ -35,8 +42,8 @@ def test_half_plane_74_and_small_a_limit():
     R, Delta, w, beta = 1.5, 0.01, 2e-4, 3.0
     A_ = beta / (2 * math.pi)
     a = np.array([1e-4, 1e-3, 1e-2])
-    got = special.half_plane_load(2 * a * R, R, R - Delta, A_, w)
-    np.testing.assert_allclose(got, [pp.P_74(x, Delta, R, beta, w) for x in a], rtol=1e-13)
+    got = special.half_plane_load(a, Delta, R, beta, w)
+    np.testing.assert_allclose(got, [_mp(pp.P_74, x, Delta, R, beta, w) for x in a], rtol=1e-13)
     # (7.3c) P_h beta = 4 pi Delta a^2 - 2 beta sqrt(a) zeta, i.e. (7.4) with R_D/(R R*) = Delta/R^2
     zeta = math.sqrt(2 * w * R / A_)
     np.testing.assert_allclose(got, (4 * math.pi * Delta * a**2 - 2 * beta * np.sqrt(a) * zeta) / beta, rtol=1e-12)
@@ -68,7 +75,7 @@ def test_rubbery_75_76_77_and_general_kernels():
     M_R = 0.35
     a = np.array([0.01, 0.2, 0.6, 1.5, 2.5])
     P_R = special.rubbery_P_star(a, M_R)
-    np.testing.assert_allclose(P_R, [pp.P_R_star_76(x, M_R) for x in a], rtol=1e-14)
+    np.testing.assert_allclose(P_R, [_mp(pp.P_R_star_76, x, M_R) for x in a], rtol=1e-14)
     # vartheta = inf in the general kernels (inv_theta = 0)
     np.testing.assert_allclose(eq.curve(M_R, math.inf, a=a).P_star, P_R, rtol=1e-12, atol=1e-15)
     # vartheta -> inf: vartheta P* at M = M_R/vartheta tends to P_R*
@@ -82,7 +89,9 @@ def test_rubbery_75_76_77_and_general_kernels():
     # lift-off (7.7) = the minimum of P_R*: same point as the general adherence search
     for M in (0.05, 0.35, 2.0):
         a_l, P_l = special.rubbery_lift_off(M)
-        assert abs(special.lift_off_equation(a_l, M)) < 1e-13 * max(1, M)
+        # sqrt(a) dP_R*/da of (7.6), differentiated by hand, vanishes there as well
+        slope = 2 * a_l * (a_l**2 - 2 * M * math.sqrt(a_l)) + (1 + a_l**2) * (2 * a_l - M / math.sqrt(a_l))
+        assert abs(math.sqrt(a_l) * slope) < 1e-13 * max(1, M)
         assert abs(pp.lift_off_77(a_l, M)) < 1e-13 * max(1, M)
         (p,) = eq.adherence(M, math.inf, "load")
         assert abs(p.a - a_l) < 1e-12 * a_l and abs(p.P_star - P_l) < 1e-13 * abs(P_l)
