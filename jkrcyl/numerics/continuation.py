@@ -1,0 +1,119 @@
+"""Pseudo-arclength continuation of the zero set of a scalar function on the plane (issue 12).
+
+The two-patch equilibria at fixed (M, vartheta) are the curves F(eps, eps_top) = 0 of one scalar residual
+in the half-angles (jkrcyl.twopatch); this module follows such a curve from a point on it until it leaves a
+domain or closes on itself.  Predictor: a step h along the unit tangent t (perpendicular to grad F);
+corrector: Newton on [F(y) = 0, t . (y - x) = h] (Keller's pseudo-arclength).  Gradients by central
+differences, so F need only be a callable.  No plane grid: cost is proportional to the curve length.
+"""
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+FD_STEP = 1e-6
+
+
+def gradient(f, x, fx=None, h=FD_STEP):
+    """Central-difference gradient of f at the 2-vector x."""
+    g = np.empty(2)
+    for i in range(2):
+        e = np.zeros(2)
+        e[i] = min(h, 0.1 * abs(x[i])) or h      # stay on the positive side of a half-angle
+        g[i] = (f(x + e) - f(x - e)) / (2 * e[i])
+    return g
+
+
+def _tangent(g, prev=None):
+    t = np.array([-g[1], g[0]]) / math.hypot(*g)
+    return -t if prev is not None and t @ prev < 0 else t
+
+
+def project(f, x, direction=None, tol=1e-12, maxit=30):
+    """Newton from x onto f = 0: along grad f, or along the unit vector ``direction`` when given."""
+    x = np.array(x, dtype=float)
+    for _ in range(maxit):
+        fx = f(x)
+        g = gradient(f, x)
+        d = g / (g @ g) if direction is None else direction / (g @ direction)
+        step = fx * d
+        if not np.all(np.isfinite(step)):
+            return x, False
+        x = x - step
+        if np.abs(step).max() <= tol * max(1.0, np.abs(x).max()):
+            return x, True
+    return x, abs(f(x)) < 1e-8
+
+
+@dataclass
+class Path:
+    """A traced curve: points (k, 2), the reason it stopped at each end ('boundary', 'loop', 'steps')."""
+
+    points: np.ndarray
+    end: str
+    boundary: object = None           # the boundary callable's label at the end point, if any
+    info: dict = field(default_factory=dict)
+
+
+def trace(f, x0, t0, inside, clip, h0=0.02, h_min=1e-7, h_max=0.08, tol=1e-11, max_steps=2000):
+    """Follow f = 0 from the point x0 (on the curve) in the direction of t0.
+
+    inside(x) -> bool: the domain; clip(x_in, x_out) -> (x_on_boundary, label): the curve's exit point
+    between an inside point and an outside one (the caller knows its boundaries).  Stops on leaving the
+    domain ('boundary'), on returning to x0 ('loop') or after max_steps ('steps').
+    """
+    x = np.asarray(x0, dtype=float)
+    t = _tangent(gradient(f, x), t0)
+    pts, h, travelled = [x.copy()], h0, 0.0
+    for _ in range(max_steps):
+        y, ok = _correct(f, x, t, h, tol, inside)
+        if not ok:
+            h /= 2
+            if h < h_min:
+                return Path(np.array(pts), "stalled")
+            continue
+        if not inside(y):
+            yb, label = clip(x, y)
+            if yb is not None:
+                pts.append(yb)
+            return Path(np.array(pts), "boundary", label)
+        travelled += np.linalg.norm(y - x)
+        if travelled > 4 * h and np.linalg.norm(y - pts[0]) < 0.6 * h and len(pts) > 4:
+            pts.append(pts[0].copy())
+            return Path(np.array(pts), "loop")
+        t_new = _tangent(gradient(f, y), t)
+        # too sharp a turn: the step skipped part of the curve
+        if t_new @ t < 0.9:
+            h /= 2
+            if h < h_min:
+                return Path(np.array(pts), "stalled")
+            continue
+        x, t = y, t_new
+        pts.append(x.copy())
+        h = min(h * 1.5, h_max)
+    return Path(np.array(pts), "steps")
+
+
+def _correct(f, x, t, h, tol, inside, maxit=8):
+    """Newton on F(y) = 0, t.(y - x) = h from the predictor x + h t (stops early once y leaves the domain:
+    the caller then clips the curve at the boundary)."""
+    y = x + h * t
+    for _ in range(maxit):
+        if not inside(y):
+            return y, True
+        fy = f(y)
+        g = gradient(f, y)
+        J = np.array([g, t])
+        r = np.array([fy, t @ (y - x) - h])
+        try:
+            dy = np.linalg.solve(J, r)
+        except np.linalg.LinAlgError:
+            return y, False
+        if not np.all(np.isfinite(dy)):
+            return y, False
+        y = y - dy
+        if np.abs(dy).max() > 2 * h + 1e-3:
+            return y, False
+        if np.abs(dy).max() <= tol * max(1.0, np.abs(y).max()):
+            return y, True
+    return y, abs(f(y)) < 1e-9
