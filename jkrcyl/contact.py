@@ -108,6 +108,18 @@ class Contact:
         M, th, gb = equilibria.from_contact(self)
         return equilibria.adherence(M, th, control=control, gb=gb)
 
+    def two_patch(self, n=None):
+        """Two-patch branches (second contact at the top of the hole): jkrcyl.equilibria.two_patch."""
+        from . import equilibria
+        M, th, gb = equilibria.from_contact(self)
+        return equilibria.two_patch(M, th, n=n, gb=gb)
+
+    def confined_events(self):
+        """What follows when the gap closes at phi = pi under slow pulling: jkrcyl.twopatch.confined_events."""
+        from . import equilibria, twopatch
+        M, th, gb = equilibria.from_contact(self)
+        return twopatch.confined_events(M, th, gb=gb)
+
     def pressure(self, a, phi):
         """Pressure N(phi) of (5.4) [Pa] at one contact parameter a: (bounded, unbounded); 0 outside."""
         if np.ndim(a) != 0:

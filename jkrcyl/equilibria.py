@@ -300,6 +300,16 @@ def zero_load_max_M(theta):
     return a_m**1.5 / (a_m**2 + 2 * th - math.log1p(a_m**2)), a_m
 
 
+def two_patch(M, theta, n=None, gb=None):
+    """Two-patch equilibrium branches (top contact at phi = pi, issue 12): :func:`jkrcyl.twopatch.branches`.
+
+    A list of :class:`jkrcyl.twopatch.TwoPatchCurve` (Curve fields plus a_top, stable_load, stable_grip);
+    n points per branch (default: the continuation steps).
+    """
+    from . import twopatch
+    return twopatch.branches(M, theta, gb=gb, n=n)
+
+
 def from_contact(contact):
     """(M, vartheta, gb) of a :class:`jkrcyl.Contact` (M is M_R* when vartheta = inf)."""
     return contact.M, contact.theta, contact.materials.inv_G_I / contact.beta

@@ -38,23 +38,31 @@ from .numerics import continuation as _cont
 
 N_NODES = 24            # collocation nodes per arc (spectral: 1e-12 at moderate arcs, see tests)
 EPS_AXIS = 1e-7         # smallest half-angle traced: a branch reaching it ends on the single-patch state
-GAP_FULL = 2e-3         # eps + eps_top >= pi - GAP_FULL: the branch has run into full contact
+GAP_FULL = 0.02         # eps + eps_top >= pi - GAP_FULL: the branch has run into full contact
+NODES_PER_GAP = 24      # near-touching arcs: the density varies on the scale of the gap g between them,
+                        # Chebyshev needs ~ 24 sqrt(eps/g) nodes for 1e-10 (Bernstein ellipse through the gap)
 GAP_SAMPLES = 400       # exterior angles per state for the dense gap check h >= 0
 
 _ENGINE = None
 
 
 def _engine():
-    """The one numerical engine for contact arcs (H3's jkrcyl.numerics.arcs), via this adapter only."""
+    """The numerical engine for contact arcs, via this adapter only: jkrcyl.numerics.arcs when it provides
+    ``two_patch_linear`` (the any-alpha* engine), else the alpha* = 0 log-kernel engine numerics.arcs_log."""
     global _ENGINE
     if _ENGINE is None:
-        from .numerics import arcs
-        _ENGINE = arcs.two_patch_linear
+        try:
+            from .numerics.arcs import two_patch_linear as engine
+        except ImportError:
+            from .numerics.arcs_log import two_patch_linear as engine
+        _ENGINE = engine
     return _ENGINE
 
 
 def _linear(eps, eps_top, theta, gb, n):
     """Affine pieces at fixed arcs: q0, q1 = [P*, B*, k_bot, k_top] for (Delta-case, unit delta/Delta)."""
+    g = math.pi - eps - eps_top
+    n = max(n, int(NODES_PER_GAP * math.sqrt(max(eps, eps_top) / g))) if g > 0 else n
     return _engine()(eps, eps_top, theta, gb, n)
 
 
@@ -322,8 +330,11 @@ def _trace_both(f, clip, x0, t0, paths, h0):
     return pts, (bw.boundary or bw.end, fw.boundary or fw.end)
 
 
-def branches(M, theta, gb=None, n=N_NODES, h0=0.02):
+def branches(M, theta, gb=None, n=None, nodes=N_NODES, h0=0.02):
     """Every branch of two-patch equilibria at (M, vartheta): a list of :class:`TwoPatchCurve`.
+
+    n: points per branch, equally spaced in arclength in the half-angle plane (default: the continuation
+    steps); nodes: collocation nodes per arc.
 
     Starts: each single-patch onset h(pi) = 0 (a_top -> 0), its mirror (a -> 0), then the roots of F along
     the rows eps_top in SCAN_TOP (curves touching neither axis: loops, branches ending in full contact).
@@ -331,7 +342,7 @@ def branches(M, theta, gb=None, n=N_NODES, h0=0.02):
     M, th, gb = _params(M, theta, gb)
     # clamped so that Newton iterates straying across an axis or the full-contact line stay evaluable
     lo, hi = 0.1 * EPS_AXIS, math.pi - 0.1 * GAP_FULL
-    f = lambda x: residual(max(x[0], lo), max(x[1], lo), M, th, gb, n) if x[0] + x[1] < hi else math.nan
+    f = lambda x: residual(max(x[0], lo), max(x[1], lo), M, th, gb, nodes) if x[0] + x[1] < hi else math.nan
     clip = _clipper(f)
     found = []          # (points, ends)
     starts = []
@@ -346,9 +357,12 @@ def branches(M, theta, gb=None, n=N_NODES, h0=0.02):
         found.append((np.vstack([x0[None, :] * 0 + x, pts.points[1:]]), ("single" if x0[1] == EPS_AXIS else "mirror",
                                                                            pts.boundary or pts.end)))
     for et in SCAN_TOP:
-        es = np.linspace(EPS_AXIS * 10, math.pi - et - GAP_FULL * 2, SCAN_POINTS)
-        if es[-1] <= es[0]:
+        top = math.pi - et
+        if top - 0.3 <= 0.05:
             continue
+        # uniform, then geometric towards the full-contact line (branches hugging it)
+        es = np.concatenate([np.linspace(1e-3, top - 0.3, SCAN_POINTS),
+                             top - np.geomspace(0.3, 1.05 * GAP_FULL, 12)[1:]])
         v = np.array([f(np.array([e, et])) for e in es])
         for i in np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0]:
             x, ok = _cont.project(f, np.array([0.5 * (es[i] + es[i + 1]), et]), direction=np.array([1.0, 0.0]))
@@ -356,7 +370,23 @@ def branches(M, theta, gb=None, n=N_NODES, h0=0.02):
                 continue
             pts, ends = _trace_both(f, clip, x, np.array([0.0, 1.0]), [], h0)
             found.append((pts, ends))
-    return [_curve(p, ends, M, th, gb, n) for p, ends in found]
+    found = [(p if n is None else _resample(f, p, n), ends) for p, ends in found if len(p) >= 4]
+    return [_curve(p, ends, M, th, gb, nodes) for p, ends in found]
+
+
+def _resample(f, points, n):
+    """n points equally spaced in arclength along the traced polyline, each projected back onto F = 0."""
+    seg = np.linalg.norm(np.diff(points, axis=0), axis=1)
+    s = np.concatenate([[0.0], np.cumsum(seg)])
+    t = np.linspace(0.0, s[-1], n)
+    out = np.column_stack([np.interp(t, s, points[:, 0]), np.interp(t, s, points[:, 1])])
+    for i in range(1, n - 1):                      # the ends are exact already
+        d = points[min(np.searchsorted(s, t[i]), len(points) - 1)] - points[max(np.searchsorted(s, t[i]) - 1, 0)]
+        normal = np.array([-d[1], d[0]]) / (np.linalg.norm(d) or 1.0)
+        y, ok = _cont.project(f, out[i], direction=normal)
+        if ok:
+            out[i] = y
+    return out
 
 
 class _P:
@@ -376,3 +406,203 @@ def _curve(points, ends, M, th, gb, n):
                          P_star=arr("P_star"), delta_over_Delta=arr("delta_over_Delta"), gap_min=arr("gap_min"),
                          feasible=arr("gap_min") >= -1e-9, stable_load=stab[:, 0], stable_grip=stab[:, 1],
                          G_bot=arr("G_bot"), G_top=arr("G_top"), ends=tuple(ends))
+
+
+# --- full contact -------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class FullContact:
+    """The pin in contact all round (eps + eps_top = pi): n(phi) = N0 + N1 cos(phi), no edge, no Griffith.
+
+    P_star = pi N1, B_star = 2 pi N0; energy U* = [(1 + delta/Delta) P* - B*]/2 as for the arcs;
+    tension_everywhere: n < 0 all round (|P*| < -pi N0 = 1).
+    """
+
+    theta: float
+    gb: float
+    P_star: float
+    delta_over_Delta: float
+    N0: float
+    N1: float
+
+    @property
+    def B_star(self):
+        return 2 * math.pi * self.N0
+
+    @property
+    def energy(self):
+        return 0.5 * ((1 + self.delta_over_Delta) * self.P_star - self.B_star)
+
+    @property
+    def tension_everywhere(self):
+        return abs(self.N1) < -self.N0
+
+    def pressure(self, phi):
+        return self.N0 + self.N1 * np.cos(np.asarray(phi, dtype=float))
+
+
+def _full_contact_law(theta, gb):
+    """(N0, c) with n = N0 + N1 cos(phi) and delta/Delta = -1 + c P*: H2's closed form (numerics.green).
+
+    Without it: the kernel of (5.2) acting on the Fourier modes 1 and cos(phi) of the whole circle gives
+    N0 = -1/pi and delta/Delta + 1 = -vartheta (gb - 1/2) P* (c = 0: the identical-material degeneracy).
+    """
+    try:
+        from .numerics import green
+        return green.full_contact_law(theta, gb)
+    except (ImportError, AttributeError):
+        return -1.0 / math.pi, -theta * (gb - 0.5)
+
+
+def full_contact(theta, P_star=None, delta_over_Delta=None, gb=None):
+    """Full contact at a given load P* or approach delta/Delta (exactly one of them)."""
+    from .equilibria import default_gb
+    th = _check_theta(theta)
+    gb = default_gb(th) if gb is None else finite_scalar("gb", gb, low=0.0)
+    if (P_star is None) == (delta_over_Delta is None):
+        raise ValueError("P_star: give exactly one of P_star and delta_over_Delta")
+    N0, c = _full_contact_law(th, gb)
+    if P_star is not None:
+        P = finite_scalar("P_star", P_star)
+        d = -1.0 + c * P
+    else:
+        d = finite_scalar("delta_over_Delta", delta_over_Delta)
+        if c == 0:
+            if d != -1.0:
+                raise ValueError("delta_over_Delta: full contact needs delta/Delta = -1 when gb = 1/2")
+            raise ValueError("P_star: undetermined by delta/Delta when gb = 1/2 (give P_star)")
+        P = (d + 1.0) / c
+    return FullContact(theta=th, gb=gb, P_star=P, delta_over_Delta=d, N0=N0, N1=P / math.pi)
+
+
+# --- confined-regime events ---------------------------------------------------------------------------
+REGIMES = {
+    "detachment": "the fixed-load adherence point comes first (gap at pi still open) and a further pull makes "
+                  "G > w: the contact shrinks, the pin leaves the bottom and, in the hole, lands on the top "
+                  "(the mirrored single patch at the same load)",
+    "zip-full": "the fixed-load adherence point comes first, but there a further pull makes G < w: the "
+                "contact grows past h(pi) = 0 and zips round into full contact (no detachment)",
+    "snap-in-full": "the gap closes at pi first; the two-patch state growing from there is unstable under "
+                    "load: the top contact snaps in and the path runs into full contact",
+    "snap-in-transfer": "the gap closes at pi first; the two-patch branch is unstable under load and leads to "
+                        "the mirrored single patch (the pin is transferred to the top)",
+    "two-patch": "the gap closes at pi first and a two-patch state stable under load follows",
+    "no-path": "no stable single-patch state to start from (no stable, feasible equilibrium at any load)",
+}
+
+
+@dataclass(frozen=True)
+class ConfinedEvents:
+    """What happens to the pin under slow upward loading (load control) at (M, vartheta).
+
+    regime: a key of :data:`REGIMES`; start: (a, P*) where the load path starts (the stable zero-load
+    contact, else the stable state of largest P*); P_fold: P* at the fixed-load adherence point met first
+    (nan if the gap closes first); P_top_contact: P* at which the top contact forms on that path (nan if
+    the fold comes first); onsets: every single-patch state with h(pi) = 0 as (eps, P*, delta/Delta,
+    stable under load); grip_detachment: a feasible fixed-grip stationary point (min of delta) before
+    the gap closes, i.e. the pin can be held free in the hole (true detachment under grip control);
+    two_patch_stable_load / _grip: any two-patch state stable under load / grip; full_contact: some
+    two-patch branch runs into full contact; branches: the :class:`TwoPatchCurve` list.
+    """
+
+    M: float
+    theta: float
+    regime: str
+    start: tuple
+    P_fold: float
+    P_top_contact: float
+    onsets: tuple
+    grip_detachment: bool
+    two_patch_stable_load: bool
+    two_patch_stable_grip: bool
+    full_contact: bool
+    branches: tuple
+
+    @property
+    def description(self):
+        return REGIMES[self.regime]
+
+
+def _load_path(M, th, gb):
+    """Stable, feasible single-patch states and the first event when P* decreases from the start."""
+    from . import equilibria as eq
+    segs = []
+    for regime in eq.REGIMES:
+        c = eq.curve(M, th, regime, n=3000, gb=gb)
+        segs.append(c)
+    a0s = eq.zero_load_contact(M, th)
+    start = None
+    for c in segs:
+        ok = c.stable_load & c.feasible
+        for x in a0s:
+            i = int(np.searchsorted(c.a, x))
+            if 0 < i < c.a.size and ok[i - 1] and ok[min(i, c.a.size - 1)]:
+                start = (c, i)
+    if start is None:
+        best = None
+        for c in segs:
+            ok = np.nonzero(c.stable_load & c.feasible)[0]
+            if ok.size and (best is None or c.P_star[ok].max() > best[0]):
+                best = (c.P_star[ok].max(), c, int(ok[np.argmax(c.P_star[ok])]))
+        if best is None:
+            return None
+        start = best[1:]
+    c, i = start
+    step = -1 if i > 0 and c.P_star[i - 1] < c.P_star[i] else 1     # the direction of decreasing P*
+    j = i
+    while 0 <= j + step < c.a.size:
+        k = j + step
+        if not c.feasible[k]:
+            return c, i, "top", j
+        if not c.stable_load[k] or c.P_star[k] >= c.P_star[j]:
+            return c, i, "fold", j
+        j = k
+    return c, i, "none", j
+
+
+def _grows_under_pull(eps, th, gb, n):
+    """At fixed single arc eps: does a lower P* lower G (dG/dP* > 0), so that the contact grows?
+
+    G is proportional to k^2 with k = k0 + d k1 and P* = P0 + d P1 along the approach d: dG/dP* ~ k k1/P1.
+    """
+    lin = _linear(eps, 0.0, th, gb, n)
+    return lin.q1[2] / lin.q1[0] > 0
+
+
+def confined_events(M, theta, gb=None, n=N_NODES):
+    """Classify the confined regime at (M, vartheta): see :class:`ConfinedEvents` and :data:`REGIMES`."""
+    M, th, gb = _params(M, theta, gb)
+    bs = tuple(branches(M, th, gb, nodes=n))
+    onsets = []
+    from . import equilibria as eq
+    for e in onset_angles(M, th, gb):
+        a = math.tan(e / 2)
+        regime = "sub-critical" if a < eq._a_crit(th) else "super-critical"
+        c = eq.curve(M, th, regime, a=np.array([a]), gb=gb)
+        onsets.append((e, float(c.P_star[0]), float(c.delta_over_Delta[0]), bool(c.stable_load[0])))
+    path = _load_path(M, th, gb)
+    grip_pts = [p for p in eq.adherence(M, th, "grip", gb=gb) if p.kind == "min" and p.feasible]
+    any_load = any(b.stable_load.any() for b in bs)
+    any_grip = any(b.stable_grip.any() for b in bs)
+    full = any("full" in b.ends for b in bs)
+    nan = math.nan
+    if path is None:
+        return ConfinedEvents(M, th, "no-path", (nan, nan), nan, nan, tuple(onsets), bool(grip_pts), any_load,
+                              any_grip, full, bs)
+    c, i, event, j = path
+    start = (float(c.a[i]), float(c.P_star[i]))
+    if event in ("fold", "none"):
+        P_fold = float(c.P_star[j])
+        regime = "zip-full" if _grows_under_pull(float(c.eps[j]), th, gb, n) else "detachment"
+        return ConfinedEvents(M, th, regime, start, P_fold, nan, tuple(onsets), bool(grip_pts), any_load,
+                              any_grip, full, bs)
+    P_on = float(c.P_star[j])
+    e_on = float(c.eps[j])
+    near = [b for b in bs if abs(b.eps[0] - e_on) < 0.05 and b.eps_top[0] < 1e-3 and b.ends[0] == "single"]
+    if near and near[0].stable_load[:3].any():
+        regime = "two-patch"
+    elif near and near[0].ends[1] == "full":
+        regime = "snap-in-full"
+    else:
+        regime = "snap-in-transfer"
+    return ConfinedEvents(M, th, regime, start, nan, P_on, tuple(onsets), bool(grip_pts), any_load, any_grip,
+                          full, bs)
