@@ -4,6 +4,7 @@
     jkrcyl curve --M 0.3 --theta 1          # one equilibrium branch as CSV (or --format json)
     jkrcyl curve --E 1e6 --nu 0.45 --E-I inf --nu-I 0.3 --R 0.01 --Delta 1e-4 --w 0.05
     jkrcyl adherence --M 0.3 --theta 1      # fixed-load and fixed-grip adherence, zero-load contact
+    jkrcyl two-patch --M 0.4 --theta 1      # two-patch branches (top contact formed) as CSV or JSON
     jkrcyl atlas --out atlas                # regime map over (M, vartheta): atlas.npz, atlas.csv, PNG, PDF
 
 Errors are one line on stderr naming the bad parameter; exit status 2.
@@ -96,6 +97,36 @@ def _cmd_curve(args):
     return 0
 
 
+def _cmd_two_patch(args):
+    from . import twopatch
+    M, th, gb = _resolve(args)
+    if args.n is not None and args.n < 4:
+        raise ValueError(f"n must be >= 4, got {args.n}")
+    bs = twopatch.branches(M, th, gb=gb, n=args.n)
+    clean = lambda v: [None if not math.isfinite(x) else x for x in v.tolist()]
+    if args.format == "json":
+        json.dump({"M": M, "theta": th, "gb": gb, "branches": [
+            {"ends": list(b.ends), **{k: clean(v) for k, v in b.table().items()}} for b in bs]}, sys.stdout)
+        sys.stdout.write("\n")
+        return 0
+    print(f"# M={M!r} theta={th!r} gb={gb!r} branches={len(bs)}")
+    for i, b in enumerate(bs):
+        t = b.table()
+        print(f"# branch {i}: ends {b.ends[0]} -> {b.ends[1]}")
+        print("branch," + ",".join(t))
+        for row in zip(*t.values()):
+            print(f"{i}," + ",".join(repr(float(x)) for x in row))
+    return 0
+
+
+def _confined_dict(ev):
+    nan = lambda x: None if not math.isfinite(x) else x
+    return {"regime": ev.regime, "description": ev.description, "P_fold": nan(ev.P_fold),
+            "P_top_contact": nan(ev.P_top_contact), "onsets": [list(o) for o in ev.onsets],
+            "grip_detachment": ev.grip_detachment, "two_patch_stable_load": ev.two_patch_stable_load,
+            "two_patch_stable_grip": ev.two_patch_stable_grip, "full_contact": ev.full_contact}
+
+
 def _point_dict(p):
     return {k: getattr(p, k) for k in ("control", "regime", "kind", "a", "eps", "eps_star", "P_star",
                                         "delta_over_Delta", "h_pi_over_Delta", "feasible")}
@@ -107,8 +138,12 @@ def _cmd_adherence(args):
     grip = eq.adherence(M, th, "grip", gb=gb)
     a0 = eq.zero_load_contact(M, th)
     Mmax = eq.zero_load_max_M(th)[0]
+    confined = None
+    if not math.isinf(th) and M > 0:
+        from . import twopatch
+        confined = _confined_dict(twopatch.confined_events(M, th, gb=gb))
     if args.format == "json":
-        json.dump({"M": M, "theta": th, "gb": gb, "load": [_point_dict(p) for p in load],
+        json.dump({"M": M, "theta": th, "gb": gb, "confined": confined, "load": [_point_dict(p) for p in load],
                    "grip": [_point_dict(p) for p in grip], "zero_load_a0": a0,
                    "zero_load_M_max": None if math.isinf(Mmax) else Mmax}, sys.stdout)
         sys.stdout.write("\n")
@@ -129,6 +164,17 @@ def _cmd_adherence(args):
     print("zero-load contact (8.1): " + (", ".join(f"a0 = {x:.17g}" for x in a0) if a0 else "none"))
     if not math.isinf(Mmax):
         print(f"  (8.1) has roots for M <= {Mmax:.17g}")
+    if confined:
+        print(f"confined regime (slow upward loading, jkrcyl.twopatch): {confined['regime']}")
+        print(f"  {confined['description']}")
+        for key in ("P_fold", "P_top_contact"):
+            if confined[key] is not None:
+                print(f"  {key} = {confined[key]:.12g}")
+        for e, P, d, st in confined["onsets"]:
+            print(f"  gap closes at pi (single patch): eps = {e:.12g}  P* = {P:.12g}  delta/Delta = {d:.12g}"
+                  f"  stable under load = {st}")
+        print(f"  two-patch states stable under load: {confined['two_patch_stable_load']}, under grip: "
+              f"{confined['two_patch_stable_grip']}; pin can be held free (grip): {confined['grip_detachment']}")
     return 0
 
 
@@ -182,7 +228,7 @@ def _cmd_atlas(args):
 
 def build_parser():
     p = _Parser(prog="jkrcyl", description=__doc__.split("\n\n")[0])
-    sub = p.add_subparsers(dest="command", metavar="command", title="commands (figures, curve, adherence, atlas)", parser_class=_Parser)
+    sub = p.add_subparsers(dest="command", metavar="command", title="commands (figures, curve, adherence, two-patch, atlas)", parser_class=_Parser)
     sub.required = True
     f = sub.add_parser("figures", help="draw the paper's Figures 2-12 (PNG, PDF, CSV)",
                        description="Draw Figures 2-12 into OUT as figNN.png, figNN.pdf and figNN.csv "
@@ -207,6 +253,16 @@ def build_parser():
     _add_problem(a)
     a.add_argument("--format", choices=("text", "json"), default="text", help="output format (default text)")
     a.set_defaults(func=_cmd_adherence)
+    tw = sub.add_parser("two-patch", help="two-patch equilibria (second contact at the top of the hole)",
+                        description="Every branch of two-patch equilibria (bottom arc a, top arc a_top) at (M, "
+                                    "vartheta): CSV rows per branch (column 'branch') or JSON; columns "
+                                    + ", ".join(("a", "a_top", "eps", "eps_top", "eps_star", "eps_top_star",
+                                                 "P_star", "delta_over_Delta", "gap_min", "feasible",
+                                                 "stable_load", "stable_grip")) + ".")
+    _add_problem(tw)
+    tw.add_argument("--n", type=int, default=None, help="points per branch (default: continuation steps)")
+    tw.add_argument("--format", choices=("csv", "json"), default="csv", help="output format (default csv)")
+    tw.set_defaults(func=_cmd_two_patch)
     t = sub.add_parser("atlas", help="regime atlas over (M, vartheta): npz, CSV and a regime map",
                        description="Classify every (M, vartheta) pair of a grid: sub-critical and super-critical "
                                    "fixed-load detachment (feasible or not), overclosure before detachment, "

@@ -72,7 +72,8 @@ def _residual_pieces(eps, eps_top, M, theta, gb, n):
     q0, q1 = lin.q0, lin.q1
     m = M / math.pi
     D = (q0[2] - m) * q1[3] - (q0[3] - m) * q1[2]
-    return D / math.hypot(q1[2], q1[3]), lin
+    # k0, k1 ~ 1/det(A): D/|k1| ~ sign(det) x smooth, so the sign factor makes F smooth across det = 0
+    return lin.sign_det * D / math.hypot(q1[2], q1[3]), lin
 
 
 def residual(eps, eps_top, M, theta, gb, n=N_NODES):
@@ -171,29 +172,34 @@ def _params(M, theta, gb):
     return M, th, gb
 
 
-def solve(M, theta, eps_top, gb=None, eps_guess=None, n=N_NODES, tol=1e-13):
-    """A two-patch equilibrium with the given top half-angle: the bottom half-angle by Newton on F.
+def solve(M, theta, eps_top=None, eps=None, gb=None, guess=None, n=N_NODES, tol=1e-13):
+    """A two-patch equilibrium with ONE half-angle given (eps_top or eps): the other by Newton on F.
 
-    Returns a :class:`TwoPatchState`; ValueError if Newton does not converge (no equilibrium near the guess).
+    guess: starting value of the unknown half-angle.  Returns a :class:`TwoPatchState`; ValueError if
+    Newton does not converge (no equilibrium near the guess).
     """
     M, th, gb = _params(M, theta, gb)
-    eps_top = finite_scalar("eps_top", eps_top, low=0.0, high=math.pi, low_open=True)
-    if eps_top >= math.pi:
-        raise ValueError(f"eps_top must be in (0, pi), got {eps_top:g}")
-    f = lambda e: residual(e, eps_top, M, th, gb, n)
-    e = float(eps_guess) if eps_guess is not None else 0.5 * (math.pi - eps_top)
-    for _ in range(40):
-        h = 1e-7 * max(1.0, e)
-        fe = f(e)
-        step = fe * 2 * h / (f(e + h) - f(e - h))
-        e_new = min(max(e - step, 0.5 * e), 0.5 * (e + math.pi - eps_top))
-        if abs(e_new - e) <= tol * e:
-            e = e_new
+    if (eps_top is None) == (eps is None):
+        raise ValueError("eps_top: give exactly one of eps_top and eps")
+    name, given = ("eps_top", eps_top) if eps is None else ("eps", eps)
+    given = finite_scalar(name, given, low=0.0, low_open=True)
+    if given >= math.pi:
+        raise ValueError(f"{name} must be in (0, pi), got {given:g}")
+    f = (lambda x: residual(x, given, M, th, gb, n)) if eps is None else (lambda x: residual(given, x, M, th, gb, n))
+    x = float(guess) if guess is not None else 0.5 * (math.pi - given)
+    for _ in range(30):
+        h = 1e-7 * x
+        fx, fp = f(x), f(x + h)
+        step = fx * h / (fp - fx)
+        x_new = min(max(x - step, 0.5 * x), 0.5 * (x + math.pi - given - SCAN_GAP))
+        if abs(x_new - x) <= tol * x:
+            x = x_new
             break
-        e = e_new
+        x = x_new
     else:
-        raise ValueError(f"eps_guess: no two-patch equilibrium found near eps = {e!r}")
-    return equilibrium_state(e, eps_top, M, th, gb, n)
+        raise ValueError(f"guess: no two-patch equilibrium found near {x!r}")
+    e, et = (x, given) if eps is None else (given, x)
+    return equilibrium_state(e, et, M, th, gb, n)
 
 
 # --- stability ------------------------------------------------------------------------------------
@@ -211,13 +217,17 @@ def hessian(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, h=1e-6):
     dk = np.empty((2, 2))
     h0, h1 = min(h, 0.1 * eps), min(h, 0.1 * eps_top)        # relative steps near an axis
     dk[:, 0] = (k(eps + h0, eps_top) - k(eps - h0, eps_top)) / (2 * h0)
-    dk[:, 1] = (k(eps, eps_top + h1) - k(eps, eps_top - h1)) / (2 * h1)
+    # eps_top = 0: the single arc; the top row/column is decoupled (set to the identity)
+    dk[:, 1] = (k(eps, eps_top + h1) - k(eps, eps_top - h1)) / (2 * h1) if eps_top > 0 else 0.0
     c = 4 * theta * math.pi ** 2
     H = np.empty((3, 3))
     He = c * kk[:, None] * dk
     H[:2, :2] = 0.5 * (He + He.T)
     H[:2, 2] = H[2, :2] = c * kk * lin.q1[2:4]
     H[2, 2] = lin.q1[0]
+    if eps_top == 0:
+        H[1, :] = H[:, 1] = 0.0
+        H[1, 1] = 1.0
     return H, He
 
 
@@ -231,7 +241,9 @@ def stability(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES):
 
 # --- branches -----------------------------------------------------------------------------------------
 SCAN_TOP = (0.05, 0.3, 0.7, 1.2, 1.8, 2.5)    # eps_top rows scanned for branches not reached otherwise
-SCAN_POINTS = 48
+SCAN_POINTS = 32
+SCAN_GAP = 0.1          # rows stop this far from full contact: with resolved gaps no branch hugs that line
+                        # (F keeps one sign there, tending to 0 linearly in the gap; see the tests)
 
 
 @dataclass(frozen=True)
@@ -312,7 +324,7 @@ def onset_angles(M, theta, gb=None):
     from scipy.optimize import brentq
     out = []
     for regime in eq.REGIMES:
-        a = eq._grid(regime, theta, 2000)
+        a = eq._grid(regime, theta, 600)
         h = eq.curve(M, theta, regime, a=a, gb=gb).h_pi_over_Delta
         hp = lambda x: float(eq.curve(M, theta, regime, a=np.array([x]), gb=gb).h_pi_over_Delta[0])
         for i in np.nonzero(np.sign(h[:-1]) * np.sign(h[1:]) < 0)[0]:
@@ -340,6 +352,8 @@ def branches(M, theta, gb=None, n=None, nodes=N_NODES, h0=0.02):
     the rows eps_top in SCAN_TOP (curves touching neither axis: loops, branches ending in full contact).
     """
     M, th, gb = _params(M, theta, gb)
+    if n is not None:
+        n = int(finite_scalar("n", n, low=4))
     # clamped so that Newton iterates straying across an axis or the full-contact line stay evaluable
     lo, hi = 0.1 * EPS_AXIS, math.pi - 0.1 * GAP_FULL
     f = lambda x: residual(max(x[0], lo), max(x[1], lo), M, th, gb, nodes) if x[0] + x[1] < hi else math.nan
@@ -357,12 +371,10 @@ def branches(M, theta, gb=None, n=None, nodes=N_NODES, h0=0.02):
         found.append((np.vstack([x0[None, :] * 0 + x, pts.points[1:]]), ("single" if x0[1] == EPS_AXIS else "mirror",
                                                                            pts.boundary or pts.end)))
     for et in SCAN_TOP:
-        top = math.pi - et
-        if top - 0.3 <= 0.05:
+        top = math.pi - et - SCAN_GAP
+        if top <= 0.05:
             continue
-        # uniform, then geometric towards the full-contact line (branches hugging it)
-        es = np.concatenate([np.linspace(1e-3, top - 0.3, SCAN_POINTS),
-                             top - np.geomspace(0.3, 1.05 * GAP_FULL, 12)[1:]])
+        es = np.linspace(1e-3, top, SCAN_POINTS)
         v = np.array([f(np.array([e, et])) for e in es])
         for i in np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0]:
             x, ok = _cont.project(f, np.array([0.5 * (es[i] + es[i + 1]), et]), direction=np.array([1.0, 0.0]))
@@ -606,3 +618,77 @@ def confined_events(M, theta, gb=None, n=N_NODES):
         regime = "snap-in-transfer"
     return ConfinedEvents(M, th, regime, start, nan, P_on, tuple(onsets), bool(grip_pts), any_load, any_grip,
                           full, bs)
+
+
+# --- figure: load-approach paths through the confined regime ------------------------------------------
+def draw_confined(path, Ms=(0.3, 0.4, 0.5, 0.8), theta=1.0, gb=None):
+    """docs/confined.png: P* against delta/Delta for each M -- single patch at the bottom and (mirrored) at
+    the top, two-patch branches, full contact -- solid where stable under load, dashed where stable only
+    under grip, dotted where unstable, grey where the gap inequality fails; the load path's jump marked."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from . import equilibria as eq
+    th = _check_theta(theta)
+    gb = eq.default_gb(th) if gb is None else gb
+    fig, axs = plt.subplots(1, len(Ms), figsize=(4.2 * len(Ms), 4.4), sharey=True)
+    for ax, M in zip(np.atleast_1d(axs), Ms):
+        ev = confined_events(M, th, gb)
+        for regime in eq.REGIMES:
+            c = eq.curve(M, th, regime, n=1500, gb=gb)
+            for sign, color, label in ((1, "C0", "single patch, bottom"), (-1, "C1", "single patch, top (mirror)")):
+                d = c.delta_over_Delta if sign == 1 else -2 - c.delta_over_Delta
+                _styled(ax, d, sign * c.P_star, c.stable_load, c.stable_grip, c.feasible, color,
+                        label if regime == "sub-critical" else None)
+        for k, b in enumerate(ev.branches):
+            _styled(ax, b.delta_over_Delta, b.P_star, b.stable_load, b.stable_grip, b.feasible, "C2",
+                    "two patches" if k == 0 else None)
+        fc = [full_contact(th, P_star=p, gb=gb) for p in (-3.0, 3.0)]
+        ax.plot([f.delta_over_Delta for f in fc], [f.P_star for f in fc], "k-.", lw=1, label="full contact")
+        for e, P, d, _ in ev.onsets:
+            ax.plot([d, -2 - d], [P, -P], "kD", ms=4, label="gap closes at pi" if e == ev.onsets[0][0] else None)
+        _mark_jump(ax, ev, M, th, gb)
+        ax.set_xlim(-2.5, 0.5)
+        ax.set_ylim(-2.0, 2.0)
+        ax.axhline(0, color="0.8", lw=0.5)
+        ax.set_title(f"M = {M:g}, vartheta = {th:g}: {ev.regime}", fontsize=9)
+        ax.set_xlabel("delta / Delta")
+    np.atleast_1d(axs)[0].set_ylabel("P*")
+    np.atleast_1d(axs)[0].legend(fontsize=6, loc="lower left")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def _styled(ax, x, y, load, grip, feasible, color, label):
+    for mask, style, lw in ((feasible & load, "-", 1.6), (feasible & grip & ~load, "--", 1.2),
+                            (feasible & ~grip & ~load, ":", 1.2)):
+        ax.plot(np.where(mask, x, np.nan), np.where(mask, y, np.nan), style, color=color, lw=lw,
+                label=label if style == "-" else None)
+    ax.plot(np.where(~feasible, x, np.nan), np.where(~feasible, y, np.nan), "-", color="0.85", lw=0.8)
+
+
+def _mark_jump(ax, ev, M, th, gb):
+    """The load path: start (o), the event (x) and the jump at fixed load (arrow)."""
+    from . import equilibria as eq
+    ax.plot(*_state_of(ev.start[0], M, th, gb), "ko", ms=4)
+    if ev.regime in ("detachment", "zip-full"):
+        pts = [p for p in eq.adherence(M, th, "load", gb=gb) if abs(p.P_star - ev.P_fold) < 1e-6]
+        if not pts:
+            return
+        x0, P = pts[0].delta_over_Delta, pts[0].P_star
+        if ev.regime == "zip-full":
+            x1 = full_contact(th, P_star=P, gb=gb).delta_over_Delta
+        else:
+            a = eq.solve_load(M, th, -P, gb=gb)               # the mirrored single patch at the same load
+            x1 = -2 - float(eq.curve(M, th, a=np.array([a[-1]]), gb=gb).delta_over_Delta[0]) if a else x0
+        ax.plot([x0], [P], "kx", ms=7)
+        ax.annotate("", xy=(x1, P), xytext=(x0, P), arrowprops=dict(arrowstyle="->", color="k", lw=1))
+
+
+def _state_of(a, M, th, gb):
+    from . import equilibria as eq
+    regime = "sub-critical" if a < eq._a_crit(th) else "super-critical"
+    c = eq.curve(M, th, regime, a=np.array([a]), gb=gb)
+    return [float(c.delta_over_Delta[0])], [float(c.P_star[0])]

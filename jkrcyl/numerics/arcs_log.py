@@ -16,6 +16,7 @@ keep full relative accuracy.  Spectral in the nodes per arc for separated arcs.
 import math
 
 import numpy as np
+from scipy.linalg import lu_factor, lu_solve
 
 LOG2 = math.log(2.0)
 
@@ -101,7 +102,12 @@ class Linear:
         self.sys = Arcs([(0.0, eps), (math.pi, eps_top)], theta, gb, n)
         sy = self.sys
         rhs = np.column_stack([-(1 - sy.cos), sy.cos])
-        U = np.linalg.solve(sy.A, rhs)
+        lu, piv = lu_factor(sy.A)
+        U = lu_solve((lu, piv), rhs)
+        # sign of det(A): the fixed-arc problem is singular on curves of the (eps, eps_top) plane (a_crit for
+        # one arc); the caller multiplies its Griffith residual by it to keep that residual smooth across them
+        swaps = np.count_nonzero(piv != np.arange(piv.size))
+        self.sign_det = float((-1) ** swaps * np.prod(np.sign(np.diag(lu))))
         self.u0, self.u1 = U[:, 0], U[:, 1]
         self.q0, self.q1 = self._q(self.u0), self._q(self.u1)
 

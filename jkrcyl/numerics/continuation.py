@@ -15,12 +15,12 @@ FD_STEP = 1e-6
 
 
 def gradient(f, x, fx=None, h=FD_STEP):
-    """Central-difference gradient of f at the 2-vector x."""
+    """Gradient of f at the 2-vector x: forward differences when f(x) is given, else central."""
     g = np.empty(2)
     for i in range(2):
         e = np.zeros(2)
         e[i] = min(h, 0.1 * abs(x[i])) or h      # stay on the positive side of a half-angle
-        g[i] = (f(x + e) - f(x - e)) / (2 * e[i])
+        g[i] = (f(x + e) - f(x - e)) / (2 * e[i]) if fx is None else (f(x + e) - fx) / e[i]
     return g
 
 
@@ -35,7 +35,10 @@ def project(f, x, direction=None, tol=1e-12, maxit=30):
     for _ in range(maxit):
         fx = f(x)
         g = gradient(f, x)
-        d = g / (g @ g) if direction is None else direction / (g @ direction)
+        den = g @ g if direction is None else g @ direction
+        if not np.isfinite(den) or den == 0:
+            return x, False
+        d = (g if direction is None else direction) / den
         step = fx * d
         if not np.all(np.isfinite(step)):
             return x, False
@@ -102,7 +105,7 @@ def _correct(f, x, t, h, tol, inside, maxit=8):
         if not inside(y):
             return y, True
         fy = f(y)
-        g = gradient(f, y)
+        g = gradient(f, y, fy)
         J = np.array([g, t])
         r = np.array([fy, t @ (y - x) - h])
         try:

@@ -1,0 +1,234 @@
+"""Two contact arcs and full contact (issue 12): jkrcyl.twopatch on the arc engine.
+
+References, all independent of the two-arc solve under test:
+* the closed-form single patch (4.4), (5.8), (5.10) through jkrcyl.equilibria (kernels checked against
+  mpmath in test_load/test_approach/test_gap) -- the a_top -> 0 and a -> 0 limits and the stability flags;
+* the mirror symmetry phi -> phi + pi, which the engine does not use (the arcs sit at 0 and pi);
+* finite differences of the elastic energy U* = [(1 + delta/Delta) P* - B*]/2 (pressure times rigid overlap),
+  never the edge coefficients k, for the energy release rate G = w;
+* scipy.integrate.quad of the pressure (2.2) and of the displacement integral (5.2) for the gap;
+* the full-contact law as the limit of two arcs whose gaps close.
+"""
+import json
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import quad
+from scipy.optimize import brentq
+
+from jkrcyl import Contact, Materials, cli
+from jkrcyl import equilibria as eq
+from jkrcyl import twopatch as tp
+
+THETA = 1.0
+GB = eq.default_gb(THETA)
+
+
+def onset(M, theta=THETA, regime="sub-critical", bracket=(0.5, 0.91)):
+    """Closed-form single patch with h(pi) = 0: (a, P*, delta/Delta) from (4.4), (5.8), (5.10)."""
+    h = lambda a: float(eq.curve(M, theta, regime, a=np.array([a])).h_pi_over_Delta[0])
+    a = brentq(h, *bracket, xtol=1e-16, rtol=1e-15)
+    c = eq.curve(M, theta, regime, a=np.array([a]))
+    return a, float(c.P_star[0]), float(c.delta_over_Delta[0])
+
+
+@pytest.fixture(scope="module")
+def branches_04():
+    return eq.two_patch(0.4, THETA)
+
+
+# --- the engine against the closed form --------------------------------------------------------------
+@pytest.mark.parametrize("theta, gb", [(1.0, 0.5), (2.0, 0.3), (0.7, 0.9)])
+@pytest.mark.parametrize("a", [0.2, 0.6, 1.3])
+def test_single_arc_engine_matches_closed_form(theta, gb, a):
+    M = 0.35
+    regime = "sub-critical" if a < eq._a_crit(theta) else "super-critical"
+    ref = eq.curve(M, theta, regime, a=np.array([a]), gb=gb)
+    lin = tp._linear(2 * math.atan(a), 0.0, theta, gb, 32)
+    d = (M / math.pi - lin.q0[2]) / lin.q1[2]        # Griffith k = M/pi
+    assert d == pytest.approx(ref.delta_over_Delta[0], rel=1e-11, abs=1e-12)
+    assert lin.q0[0] + d * lin.q1[0] == pytest.approx(ref.P_star[0], rel=1e-11, abs=1e-12)
+    assert lin.gap(math.pi, d)[0] == pytest.approx(ref.h_pi_over_Delta[0], rel=1e-10, abs=1e-12)
+
+
+# --- continuity at the two ends of a branch ----------------------------------------------------------
+@pytest.mark.parametrize("M", [0.4, 0.5])
+def test_top_arc_to_zero_tends_to_single_patch_with_closed_gap(M):
+    a_on, P_on, d_on = onset(M)
+    s = tp.solve(M, THETA, eps_top=1e-20, guess=2 * math.atan(a_on))
+    assert s.G_bot == pytest.approx(1, abs=1e-9)
+    assert s.a == pytest.approx(a_on, rel=1e-8)
+    assert s.P_star == pytest.approx(P_on, rel=1e-8)
+    assert s.delta_over_Delta == pytest.approx(d_on, rel=1e-8)
+
+
+def test_bottom_arc_to_zero_tends_to_mirrored_single_patch():
+    M = 0.4
+    a_on, P_on, d_on = onset(M)
+    s = tp.solve(M, THETA, eps=1e-20, guess=2 * math.atan(a_on))
+    assert s.a_top == pytest.approx(a_on, rel=1e-8)
+    assert s.P_star == pytest.approx(-P_on, rel=1e-8)
+    assert s.delta_over_Delta == pytest.approx(-2 - d_on, rel=1e-8)
+
+
+def test_branch_from_onset_ends_on_both_single_patches(branches_04):
+    a_on, P_on, _ = onset(0.4)
+    b = [b for b in branches_04 if b.ends == ("single", "mirror")]
+    assert len(b) == 1
+    b = b[0]
+    assert b.eps[0] == pytest.approx(2 * math.atan(a_on), abs=1e-3)     # ends at a_top = EPS_AXIS
+    assert b.eps_top[-1] == pytest.approx(2 * math.atan(a_on), abs=1e-3)
+    assert np.max(np.abs(b.G_bot - 1)) < 1e-8 and np.max(np.abs(b.G_top - 1)) < 1e-8
+
+
+# --- symmetry --------------------------------------------------------------------------------------
+def test_mirror_maps_equilibria_onto_equilibria(branches_04):
+    M = 0.4
+    for b in branches_04:
+        for i in np.linspace(1, b.a.size - 2, 5).astype(int):
+            e, et = b.eps[i], b.eps_top[i]
+            m = tp.equilibrium_state(et, e, M, THETA, GB)          # the swapped arcs, solved afresh
+            assert abs(tp.residual(et, e, M, THETA, GB)) < 1e-9
+            assert m.P_star == pytest.approx(-b.P_star[i], rel=1e-8, abs=1e-10)
+            assert m.delta_over_Delta == pytest.approx(-2 - b.delta_over_Delta[i], rel=1e-8, abs=1e-10)
+
+
+def test_branch_crosses_equal_arcs_at_zero_load_and_centred_pin(branches_04):
+    b = [b for b in branches_04 if b.ends == ("single", "mirror")][0]
+    i = np.nonzero(np.diff(np.sign(b.eps - b.eps_top)))[0][0]
+    e = brentq(lambda x: tp.residual(x, x, 0.4, THETA, GB), min(b.eps[i], b.eps_top[i]) - 0.05,
+               max(b.eps[i + 1], b.eps_top[i + 1]) + 0.05, xtol=1e-15)
+    s = tp.equilibrium_state(e, e, 0.4, THETA, GB)
+    assert abs(s.P_star) < 1e-10
+    assert s.delta_over_Delta == pytest.approx(-1, abs=1e-10)
+
+
+# --- energy ------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("M, theta, gb, eps_top, guess", [(0.4, 1.0, 0.5, 0.5, 1.0), (0.3, 2.0, 0.75, 1.95, 0.8)])
+def test_energy_release_at_each_patch_equals_w(M, theta, gb, eps_top, guess):
+    """G = (1/2R) dU/d eps at fixed delta, i.e. G/w = (dU*/d eps)/(2 vartheta M^2), from the energy alone."""
+    s = tp.solve(M, theta, eps_top=eps_top, gb=gb, guess=guess)
+    d = s.delta_over_Delta
+    U = lambda e, et: tp.fixed_arcs(e, et, d, M, theta, gb).energy
+    h = 1e-5
+    for dU in ((U(s.eps + h, s.eps_top) - U(s.eps - h, s.eps_top)) / (2 * h),
+               (U(s.eps, s.eps_top + h) - U(s.eps, s.eps_top - h)) / (2 * h)):
+        assert dU / (2 * theta * M * M) == pytest.approx(1, abs=1e-6)
+
+
+def test_load_is_conjugate_to_approach():
+    """dU*/d(delta/Delta) = P* at fixed arcs (Clapeyron, not used by the solver)."""
+    e, et, d, h = 1.1, 0.6, -0.9, 1e-5
+    U = lambda x: tp.fixed_arcs(e, et, x, 0.4, 1.7, 0.4).energy
+    assert (U(d + h) - U(d - h)) / (2 * h) == pytest.approx(tp.fixed_arcs(e, et, d, 0.4, 1.7, 0.4).P_star,
+                                                           rel=1e-8)
+
+
+def test_full_contact_is_the_limit_of_closing_gaps_and_energy_consistent():
+    th, gb, d = 2.0, 0.75, -0.5
+    fc = tp.full_contact(th, delta_over_Delta=d, gb=gb)
+    s = tp.fixed_arcs(1.6, math.pi - 1.6 - 0.01, d, 0.4, th, gb)      # two arcs, gaps of 0.01 rad
+    assert s.P_star == pytest.approx(fc.P_star, rel=1e-4)
+    assert s.B_star == pytest.approx(fc.B_star, rel=1e-4)
+    assert s.energy == pytest.approx(fc.energy, rel=1e-4)
+    h = 1e-6
+    dU = (tp.full_contact(th, delta_over_Delta=d + h, gb=gb).energy
+          - tp.full_contact(th, delta_over_Delta=d - h, gb=gb).energy) / (2 * h)
+    assert dU == pytest.approx(fc.P_star, rel=1e-8)
+    # N0 = -1/pi: entirely in tension for |P*| < 1
+    assert tp.full_contact(th, P_star=0.99, gb=gb).tension_everywhere
+    assert not tp.full_contact(th, P_star=1.01, gb=gb).tension_everywhere
+
+
+# --- pressure, gap, convergence ---------------------------------------------------------------------
+@pytest.fixture(scope="module")
+def state():
+    return tp.solve(0.4, THETA, eps_top=0.5, guess=1.0)
+
+
+def test_pressure_integrates_to_the_load(state):
+    """(2.2): R int N cos(phi) dphi = P, by quad in phi = c + e cos(t) (removes the 1/sqrt end singularities)."""
+    total = 0.0
+    for c, e in ((0.0, state.eps), (math.pi, state.eps_top)):
+        f = lambda t: state.pressure(c + e * math.cos(t))[0] * math.cos(c + e * math.cos(t)) * e * math.sin(t)
+        total += quad(f, 1e-9, math.pi - 1e-9, limit=200, epsabs=1e-14, epsrel=1e-13)[0]
+    assert total == pytest.approx(state.P_star, rel=1e-9)
+
+
+def test_gap_from_direct_quadrature_of_5_2_and_nonnegative(state):
+    """h(phi)/Delta from quad of (5.2) with the pressure, at exterior angles; and h >= 0 densely."""
+    th, gb = THETA, GB
+    K = lambda t: np.cos(t) * np.log(2 - 2 * np.cos(t)) + gb * np.cos(t) + 1 - 1 / (2 * th)
+    for phi in (state.eps + 0.05, 0.5 * (state.eps + math.pi - state.eps_top), math.pi - state.eps_top - 0.05):
+        disp = 0.0
+        for c, e in ((0.0, state.eps), (math.pi, state.eps_top)):
+            f = lambda t: (state.pressure(c + e * math.cos(t))[0] * K(phi - c - e * math.cos(t))
+                           * e * math.sin(t))
+            disp += quad(f, 1e-9, math.pi - 1e-9, limit=200, epsabs=1e-14, epsrel=1e-13)[0]
+        d = state.delta_over_Delta
+        h_ref = (1 - math.cos(phi)) - d * math.cos(phi) - th * disp
+        assert state.gap(phi)[0] == pytest.approx(h_ref, rel=1e-8, abs=1e-11)
+    phi = np.linspace(state.eps, math.pi - state.eps_top, 4001)[1:-1]
+    assert np.all(state.gap(phi) >= 0)
+
+
+def test_spectral_convergence_in_the_nodes():
+    errs = []
+    ref = tp.fixed_arcs(1.2, 0.7, -0.8, 0.4, THETA, GB, n=64).P_star
+    for n in (6, 10, 14, 18):
+        errs.append(abs(tp.fixed_arcs(1.2, 0.7, -0.8, 0.4, THETA, GB, n=n).P_star - ref))
+    assert errs[-1] < 1e-11
+    assert all(b < a / 20 for a, b in zip(errs, errs[1:]) if a > 1e-13)
+
+
+# --- stability -------------------------------------------------------------------------------------
+@pytest.mark.parametrize("M, regime, a", [(0.3, "sub-critical", 0.2), (0.3, "sub-critical", 0.6),
+                                          (0.3, "sub-critical", 0.05), (0.5, "super-critical", 2.5),
+                                          (0.5, "super-critical", 1.0), (0.3, "super-critical", 1.6)])
+def test_hessian_stability_of_a_single_arc_matches_closed_form(M, regime, a):
+    """With no top arc the grip block is 1x1 and the load block (eps, delta) 2x2: compare with the signs of
+    dG/da|_delta and dG/da|_P of the closed form (jkrcyl.equilibria)."""
+    ref = eq.curve(M, THETA, regime, a=np.array([a]))
+    e = 2 * math.atan(a)
+    H, _ = tp.hessian(e, 0.0, float(ref.delta_over_Delta[0]), M, THETA, GB)
+    sub = H[np.ix_([0, 2], [0, 2])]
+    assert (H[0, 0] > 0) == bool(ref.stable_grip[0])
+    assert bool(np.all(np.linalg.eigvalsh(sub) > 0)) == bool(ref.stable_load[0])
+
+
+def test_hessian_is_symmetric(state):
+    """Maxwell: d(G_bot)/d eps_top = d(G_top)/d eps at fixed delta (the solver symmetrises; check first)."""
+    _, He = tp.hessian(state.eps, state.eps_top, state.delta_over_Delta, 0.4, THETA, GB)
+    assert He[0, 1] == pytest.approx(He[1, 0], rel=1e-6)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("M", [0.3, 0.4, 0.5, 0.8])
+def test_no_two_patch_state_is_stable_under_load_at_theta_1(M):
+    """Finding of issue 12 (re-verified): at vartheta = 1 every two-patch equilibrium is unstable at fixed load."""
+    for b in eq.two_patch(M, THETA):
+        assert not b.stable_load.any()
+
+
+# --- API, CLI -------------------------------------------------------------------------------------
+def test_contact_two_patch_and_validation():
+    c = Contact(R=1.0, Delta=0.01, w=1e-4, materials=Materials(G=1.0, kappa=2.0, G_I=1.0, kappa_I=2.0))
+    bs = c.two_patch(n=20)
+    for b in bs:
+        assert b.a.size == 20 and b.a_top.size == 20
+        assert set(b.table()) == set(tp.TwoPatchCurve.COLUMNS)
+    with pytest.raises(ValueError, match="M"):
+        eq.two_patch(-1, 1.0)
+    with pytest.raises(ValueError, match="theta"):
+        eq.two_patch(0.4, 0.2)
+    with pytest.raises(ValueError, match="n"):
+        eq.two_patch(0.4, 1.0, n=1)
+
+
+def test_cli_two_patch_json(capsys):
+    assert cli.main(["two-patch", "--M", "0.5", "--theta", "1", "--n", "12", "--format", "json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["M"] == 0.5 and len(out["branches"]) >= 1
+    assert len(out["branches"][0]["P_star"]) == 12
+    assert cli.main(["two-patch", "--M", "-1"]) == 2
