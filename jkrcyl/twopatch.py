@@ -39,9 +39,11 @@ from .numerics import continuation as _cont
 N_NODES = 24            # collocation nodes per arc (spectral: 1e-12 at moderate arcs, see tests)
 EPS_AXIS = 1e-7         # smallest half-angle traced: a branch reaching it ends on the single-patch state
 GAP_FULL = 0.02         # eps + eps_top >= pi - GAP_FULL: the branch has run into full contact
-NODES_PER_GAP = 24      # near-touching arcs: the density varies on the scale of the gap g between them,
-                        # Chebyshev needs ~ 24 sqrt(eps/g) nodes for 1e-10 (Bernstein ellipse through the gap)
-GAP_SAMPLES = 400       # exterior angles per state for the dense gap check h >= 0
+NODES_PER_GAP = 8       # near-touching arcs: the density varies on the scale of the gap g between them, so
+                        # Chebyshev needs ~ sqrt(eps/g) times more nodes (Bernstein ellipse through the gap);
+                        # 8 sqrt(eps/g) keeps F to ~1e-11 (measured against 96 nodes down to g = 0.02)
+GAP_SAMPLES = 128       # exterior angles per state for the gap check h >= 0 (Chebyshev points of the
+                        # open gap, clustered at the arc ends where h ~ distance^(3/2) is smallest)
 
 _ENGINE = None
 
@@ -186,17 +188,22 @@ def solve(M, theta, eps_top=None, eps=None, gb=None, guess=None, n=N_NODES, tol=
     if given >= math.pi:
         raise ValueError(f"{name} must be in (0, pi), got {given:g}")
     f = (lambda x: residual(x, given, M, th, gb, n)) if eps is None else (lambda x: residual(given, x, M, th, gb, n))
-    x = float(guess) if guess is not None else 0.5 * (math.pi - given)
-    for _ in range(30):
-        h = 1e-7 * x
-        fx, fp = f(x), f(x + h)
-        step = fx * h / (fp - fx)
-        x_new = min(max(x - step, 0.5 * x), 0.5 * (x + math.pi - given - SCAN_GAP))
-        if abs(x_new - x) <= tol * x:
-            x = x_new
+    hi = math.pi - given - SCAN_GAP
+    x0 = float(guess) if guess is not None else 0.5 * (math.pi - given)
+    x1 = x0 * (1 + 1e-4)
+    f0, f1 = f(x0), f(x1)
+    for _ in range(40):                                 # secant: one residual per step
+        if f1 == f0:
             break
-        x = x_new
+        x2 = min(max(x1 - f1 * (x1 - x0) / (f1 - f0), 0.5 * x1), 0.5 * (x1 + hi))
+        x0, f0, x1 = x1, f1, x2
+        if abs(x1 - x0) <= tol * x1:
+            break
+        f1 = f(x1)
     else:
+        raise ValueError(f"guess: no two-patch equilibrium found near {x1!r}")
+    x = x1
+    if not abs(f0) < 1e-8:                              # the residual at the last evaluated iterate
         raise ValueError(f"guess: no two-patch equilibrium found near {x!r}")
     e, et = (x, given) if eps is None else (given, x)
     return equilibrium_state(e, et, M, th, gb, n)
@@ -604,6 +611,9 @@ def confined_events(M, theta, gb=None, n=N_NODES):
     start = (float(c.a[i]), float(c.P_star[i]))
     if event in ("fold", "none"):
         P_fold = float(c.P_star[j])
+        pts = eq.stationary_points(M, th, "load", c.regime, gb=gb)
+        if pts:                                     # the exact P* minimum next to the grid point
+            P_fold = min(pts, key=lambda p: abs(p.a - c.a[j])).P_star
         regime = "zip-full" if _grows_under_pull(float(c.eps[j]), th, gb, n) else "detachment"
         return ConfinedEvents(M, th, regime, start, P_fold, nan, tuple(onsets), bool(grip_pts), any_load,
                               any_grip, full, bs)
@@ -648,12 +658,15 @@ def draw_confined(path, Ms=(0.3, 0.4, 0.5, 0.8), theta=1.0, gb=None):
         for e, P, d, _ in ev.onsets:
             ax.plot([d, -2 - d], [P, -P], "kD", ms=4, label="gap closes at pi" if e == ev.onsets[0][0] else None)
         _mark_jump(ax, ev, M, th, gb)
-        ax.set_xlim(-2.5, 0.5)
+        ax.set_xlim(-2.8, 0.8)
         ax.set_ylim(-2.0, 2.0)
         ax.axhline(0, color="0.8", lw=0.5)
         ax.set_title(f"M = {M:g}, vartheta = {th:g}: {ev.regime}", fontsize=9)
         ax.set_xlabel("delta / Delta")
     np.atleast_1d(axs)[0].set_ylabel("P*")
+    np.atleast_1d(axs)[0].text(0.02, 0.98, "solid: stable under load; dashed: under grip only; dotted: unstable;\n"
+                               "grey: gap h < 0; o start (zero load), x adherence point, arrow: jump at fixed load",
+                               transform=np.atleast_1d(axs)[0].transAxes, fontsize=6, va="top")
     np.atleast_1d(axs)[0].legend(fontsize=6, loc="lower left")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
@@ -674,7 +687,8 @@ def _mark_jump(ax, ev, M, th, gb):
     from . import equilibria as eq
     ax.plot(*_state_of(ev.start[0], M, th, gb), "ko", ms=4)
     if ev.regime in ("detachment", "zip-full"):
-        pts = [p for p in eq.adherence(M, th, "load", gb=gb) if abs(p.P_star - ev.P_fold) < 1e-6]
+        pts = [p for r in eq.REGIMES for p in eq.stationary_points(M, th, "load", r, gb=gb)
+               if abs(p.P_star - ev.P_fold) < 1e-9]
         if not pts:
             return
         x0, P = pts[0].delta_over_Delta, pts[0].P_star
@@ -682,9 +696,10 @@ def _mark_jump(ax, ev, M, th, gb):
             x1 = full_contact(th, P_star=P, gb=gb).delta_over_Delta
         else:
             a = eq.solve_load(M, th, -P, gb=gb)               # the mirrored single patch at the same load
-            x1 = -2 - float(eq.curve(M, th, a=np.array([a[-1]]), gb=gb).delta_over_Delta[0]) if a else x0
+            ok = [x for x in a if eq.curve(M, th, a=np.array([x]), gb=gb).stable_load[0]]
+            x1 = -2 - float(eq.curve(M, th, a=np.array([ok[-1]]), gb=gb).delta_over_Delta[0]) if ok else x0
         ax.plot([x0], [P], "kx", ms=7)
-        ax.annotate("", xy=(x1, P), xytext=(x0, P), arrowprops=dict(arrowstyle="->", color="k", lw=1))
+        ax.annotate("", xy=(x1, P), xytext=(x0, P), arrowprops=dict(arrowstyle="->", color="k", lw=1), annotation_clip=False)
 
 
 def _state_of(a, M, th, gb):

@@ -69,13 +69,13 @@ def trace(f, x0, t0, inside, clip, h0=0.02, h_min=1e-7, h_max=0.08, tol=1e-11, m
     t = _tangent(gradient(f, x), t0)
     pts, h, travelled = [x.copy()], h0, 0.0
     for _ in range(max_steps):
-        y, ok = _correct(f, x, t, h, tol, inside)
+        y, ok, g_last = _correct(f, x, t, h, tol, inside)
         if not ok:
             h /= 2
             if h < h_min:
                 return Path(np.array(pts), "stalled")
             continue
-        if not inside(y):
+        if not inside(y) or g_last is None:
             yb, label = clip(x, y)
             if yb is not None:
                 pts.append(yb)
@@ -84,7 +84,7 @@ def trace(f, x0, t0, inside, clip, h0=0.02, h_min=1e-7, h_max=0.08, tol=1e-11, m
         if travelled > 4 * h and np.linalg.norm(y - pts[0]) < 0.6 * h and len(pts) > 4:
             pts.append(pts[0].copy())
             return Path(np.array(pts), "loop")
-        t_new = _tangent(gradient(f, y), t)
+        t_new = _tangent(g_last, t)             # gradient at the last Newton iterate (|y - iterate| <= tol)
         # too sharp a turn: the step skipped part of the curve
         if t_new @ t < 0.9:
             h /= 2
@@ -101,9 +101,10 @@ def _correct(f, x, t, h, tol, inside, maxit=8):
     """Newton on F(y) = 0, t.(y - x) = h from the predictor x + h t (stops early once y leaves the domain:
     the caller then clips the curve at the boundary)."""
     y = x + h * t
+    g = None
     for _ in range(maxit):
         if not inside(y):
-            return y, True
+            return y, True, g
         fy = f(y)
         g = gradient(f, y, fy)
         J = np.array([g, t])
@@ -111,12 +112,12 @@ def _correct(f, x, t, h, tol, inside, maxit=8):
         try:
             dy = np.linalg.solve(J, r)
         except np.linalg.LinAlgError:
-            return y, False
+            return y, False, g
         if not np.all(np.isfinite(dy)):
-            return y, False
+            return y, False, g
         y = y - dy
         if np.abs(dy).max() > 2 * h + 1e-3:
-            return y, False
+            return y, False, g
         if np.abs(dy).max() <= tol * max(1.0, np.abs(y).max()):
-            return y, True
-    return y, abs(f(y)) < 1e-9
+            return y, True, g
+    return y, abs(f(y)) < 1e-9, g
