@@ -232,3 +232,28 @@ def test_cli_two_patch_json(capsys):
     assert out["M"] == 0.5 and len(out["branches"]) >= 1
     assert len(out["branches"][0]["P_star"]) == 12
     assert cli.main(["two-patch", "--M", "-1"]) == 2
+
+
+# --- confined-regime events -------------------------------------------------------------------------
+@pytest.mark.parametrize("M, regime, expect_growth", [(0.3, "sub-critical", False), (0.5, "super-critical", True),
+                                                      (0.8, "super-critical", True)])
+def test_direction_of_the_jump_at_the_fold(M, regime, expect_growth):
+    """At fixed a, G/w = (M'/M)^2 along the closed-form family P*(a; M'), so a pull lowers G (the contact
+    grows: zip) exactly when P* rises with M' -- the closed form's answer, against the engine's k1/P1."""
+    p = [q for q in eq.stationary_points(M, THETA, "load", regime) if q.kind == "min"][0]
+    P = lambda m: float(eq.curve(m, THETA, regime, a=np.array([p.a])).P_star[0])
+    grows_closed_form = P(M * 1.001) > P(M * 0.999)
+    assert grows_closed_form == expect_growth
+    assert tp._grows_under_pull(p.eps, THETA, GB, tp.N_NODES) == grows_closed_form
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("M, regime", [(0.3, "detachment"), (0.5, "zip-full")])
+def test_confined_events(M, regime):
+    ev = tp.confined_events(M, THETA)
+    assert ev.regime == regime and ev.regime in tp.REGIMES
+    ref = min((q for r in eq.REGIMES for q in eq.stationary_points(M, THETA, "load", r) if q.kind == "min"),
+              key=lambda q: abs(q.P_star - ev.P_fold))
+    assert ev.P_fold == ref.P_star
+    assert math.isnan(ev.P_top_contact)
+    assert not ev.two_patch_stable_load
