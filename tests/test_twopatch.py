@@ -173,6 +173,13 @@ def test_gap_from_direct_quadrature_of_5_2_and_nonnegative(state):
     assert np.all(state.gap(phi) >= 0)
 
 
+def test_collocation_residual_is_small_inside_both_arcs(state):
+    """Between the collocation nodes the contact condition h = 0 (5.1) still holds on both arcs."""
+    for c, e in ((0.0, state.eps), (math.pi, state.eps_top)):
+        phi = c + e * np.linspace(-0.999, 0.999, 301)
+        assert np.max(np.abs(state.gap(phi))) < 1e-11
+
+
 def test_spectral_convergence_in_the_nodes():
     errs = []
     ref = tp.fixed_arcs(1.2, 0.7, -0.8, 0.4, THETA, GB, n=64).P_star
