@@ -291,38 +291,58 @@ class TwoPatchCurve:
         return {k: np.asarray(getattr(self, k), dtype=float) for k in self.COLUMNS}
 
 
-def _domain(x):
-    return x[0] >= EPS_AXIS and x[1] >= EPS_AXIS and x[0] + x[1] <= math.pi - GAP_FULL
+LOG_AXIS = math.log(EPS_AXIS)
+
+
+def _domain(u):
+    """Inside the traced region, in log half-angles u = (log eps, log eps_top)."""
+    return u[0] >= LOG_AXIS and u[1] >= LOG_AXIS and math.exp(u[0]) + math.exp(u[1]) <= math.pi - GAP_FULL
+
+
+# the boundaries in log half-angles: (label, g(u) >= 0 inside, grad g)
+_BOUNDARIES = (
+    ("single", lambda u: u[1] - LOG_AXIS, lambda u: np.array([0.0, 1.0])),        # a_top -> 0
+    ("mirror", lambda u: u[0] - LOG_AXIS, lambda u: np.array([1.0, 0.0])),        # a -> 0
+    ("full", lambda u: math.pi - GAP_FULL - math.exp(u[0]) - math.exp(u[1]),     # arcs meet
+     lambda u: -np.exp(np.asarray(u))),
+)
 
 
 def _clipper(f):
-    """Exit point of the curve between x (inside) and y (outside): on the first boundary crossed."""
-    lines = (("single", np.array([0.0, 1.0]), EPS_AXIS, np.array([1.0, 0.0])),     # eps_top = EPS_AXIS
-             ("mirror", np.array([1.0, 0.0]), EPS_AXIS, np.array([0.0, 1.0])),     # eps = EPS_AXIS
-             ("full", np.array([1.0, 1.0]), math.pi - GAP_FULL, np.array([1.0, -1.0]) / math.sqrt(2)))
-
-    def clip(x, y):
+    """Exit point of the curve between u (inside) and v (outside): on the first boundary crossed."""
+    def clip(u, v):
         best = None
-        for label, nrm, level, along in lines:
-            gx, gy = nrm @ x - level, nrm @ y - level
-            if label == "full":
-                gx, gy = -gx, -gy
-            if gx >= 0 > gy:
-                s = gx / (gx - gy)
-                if best is None or s < best[0]:
-                    best = (s, label, nrm, level, along)
+        for label, g, grad in _BOUNDARIES:
+            if g(v) < 0 <= g(u):
+                lo, hi = 0.0, 1.0                        # bisection for the crossing on the segment
+                for _ in range(60):
+                    mid = 0.5 * (lo + hi)
+                    lo, hi = (mid, hi) if g(u + mid * (v - u)) >= 0 else (lo, mid)
+                if best is None or lo < best[0]:
+                    best = (lo, label, g, grad)
         if best is None:
             return None, "domain"
-        s, label, nrm, level, along = best
-        z = x + s * (y - x)
-        z, ok = _cont.project(f, z, direction=along)
-        z = z - (nrm @ z - level) / (nrm @ nrm) * nrm       # stay exactly on the line
-        return (z if ok and z.min() > 0 else None), label
+        s, label, g, grad = best
+        z = u + s * (v - u)
+        ok = False
+        for _ in range(3):                               # along the boundary onto F = 0, then back onto it
+            gz = grad(z)
+            z, ok = _cont.project(f, z, direction=np.array([-gz[1], gz[0]]) / np.linalg.norm(gz))
+            gz = grad(z)
+            z = z - g(z) * gz / (gz @ gz)
+        return (z if ok and abs(f(z)) < 1e-9 else None), label
     return clip
 
 
 def _near(x, paths, tol):
-    return any(np.min(np.linalg.norm(p.points - x, axis=1)) < tol for p in paths)
+    """Is x within tol of one of the traced polylines (distance to their segments)?"""
+    for p in paths:
+        a, b = p.points[:-1], p.points[1:]
+        d = b - a
+        t = np.clip(np.einsum("ij,ij->i", x - a, d) / np.maximum(np.einsum("ij,ij->i", d, d), 1e-300), 0, 1)
+        if a.shape[0] and np.min(np.linalg.norm(a + t[:, None] * d - x, axis=1)) < tol:
+            return True
+    return False
 
 
 def onset_angles(M, theta, gb=None):
@@ -341,15 +361,15 @@ def onset_angles(M, theta, gb=None):
 
 def _trace_both(f, clip, x0, t0, paths, h0):
     """Trace from x0 in direction t0 and, unless that closes a loop, in the opposite direction; join."""
-    fw = _cont.trace(f, x0, t0, _domain, clip, h0=h0)
+    fw = _cont.trace(f, x0, t0, _domain, clip, h0=h0, h_max=10 * h0)
     if fw.end == "loop":
         return fw.points, ("loop", "loop")
-    bw = _cont.trace(f, x0, -np.asarray(t0, float), _domain, clip, h0=h0)
+    bw = _cont.trace(f, x0, -np.asarray(t0, float), _domain, clip, h0=h0, h_max=10 * h0)
     pts = np.vstack([bw.points[::-1], fw.points[1:]])
     return pts, (bw.boundary or bw.end, fw.boundary or fw.end)
 
 
-def branches(M, theta, gb=None, n=None, nodes=N_NODES, h0=0.02):
+def branches(M, theta, gb=None, n=None, nodes=N_NODES, h0=0.05):
     """Every branch of two-patch equilibria at (M, vartheta): a list of :class:`TwoPatchCurve`.
 
     n: points per branch, equally spaced in arclength in the half-angle plane (default: the continuation
@@ -361,34 +381,37 @@ def branches(M, theta, gb=None, n=None, nodes=N_NODES, h0=0.02):
     M, th, gb = _params(M, theta, gb)
     if n is not None:
         n = int(finite_scalar("n", n, low=4))
-    # clamped so that Newton iterates straying across an axis or the full-contact line stay evaluable
+    # traced in u = log(half-angles): branches span scales from EPS_AXIS to pi (they hug the axes near the
+    # onsets and may run into the corner of two small arcs); clamped so that stray Newton iterates stay evaluable
     lo, hi = 0.1 * EPS_AXIS, math.pi - 0.1 * GAP_FULL
-    f = lambda x: residual(max(x[0], lo), max(x[1], lo), M, th, gb, nodes) if x[0] + x[1] < hi else math.nan
+    fx = lambda x: residual(max(x[0], lo), max(x[1], lo), M, th, gb, nodes) if x[0] + x[1] < hi else math.nan
+    f = lambda u: fx(np.exp(u))
     clip = _clipper(f)
-    found = []          # (points, ends)
-    starts = []
+    found = []          # (points in u, ends)
     for e in onset_angles(M, th, gb):
-        starts.append((np.array([e, EPS_AXIS]), np.array([1.0, 0.0]), np.array([0.0, 1.0])))
-        starts.append((np.array([EPS_AXIS, e]), np.array([0.0, 1.0]), np.array([1.0, 0.0])))
-    for x0, along, t0 in starts:
-        x, ok = _cont.project(f, x0, direction=along)
-        if not ok or not _domain(x) or _near(x, [_P(p) for p, _ in found], 5 * h0):
-            continue
-        pts = _cont.trace(f, x, t0, _domain, clip, h0=h0)
-        found.append((np.vstack([x0[None, :] * 0 + x, pts.points[1:]]), ("single" if x0[1] == EPS_AXIS else "mirror",
-                                                                           pts.boundary or pts.end)))
+        for k, label in ((0, "single"), (1, "mirror")):     # a_top -> 0 at the onset, a -> 0 at its mirror
+            u0 = np.full(2, LOG_AXIS)
+            u0[k] = math.log(e)
+            along = np.eye(2)[k]
+            u, ok = _cont.project(f, u0, direction=along)
+            if not ok or not _domain(u) or _near(u, [_P(p) for p, _ in found], 2 * h0):
+                continue
+            path = _cont.trace(f, u, np.eye(2)[1 - k], _domain, clip, h0=h0, h_max=10 * h0)
+            found.append((np.vstack([u, path.points[1:]]), (label, path.boundary or path.end)))
     for et in SCAN_TOP:
         top = math.pi - et - SCAN_GAP
         if top <= 0.05:
             continue
         es = np.linspace(1e-3, top, SCAN_POINTS)
-        v = np.array([f(np.array([e, et])) for e in es])
+        v = np.array([fx(np.array([e, et])) for e in es])
         for i in np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0]:
-            x, ok = _cont.project(f, np.array([0.5 * (es[i] + es[i + 1]), et]), direction=np.array([1.0, 0.0]))
-            if not ok or not _domain(x) or _near(x, [_P(p) for p, _ in found], 3 * h0):
+            u, ok = _cont.project(f, np.log([0.5 * (es[i] + es[i + 1]), et]), direction=np.array([1.0, 0.0]))
+            if not ok or not _domain(u) or _near(u, [_P(p) for p, _ in found], 2 * h0):
                 continue
-            pts, ends = _trace_both(f, clip, x, np.array([0.0, 1.0]), [], h0)
+            pts, ends = _trace_both(f, clip, u, np.array([0.0, 1.0]), [], h0)
             found.append((pts, ends))
+    found = [(np.exp(p), ends) for p, ends in found]
+    f = fx
     found = [(p if n is None else _resample(f, p, n), ends) for p, ends in found if len(p) >= 4]
     return [_curve(p, ends, M, th, gb, nodes) for p, ends in found]
 
