@@ -4,16 +4,26 @@ Bottom arc |phi| < eps (a = tan(eps/2)), top arc |phi - pi| < eps_top (a_top = t
 the pin and the hole touch, so the relative radial displacement is the rigid one (5.1),
 ``v_r - u_r = delta cos(phi) - Delta (1 - cos(phi))`` -- the same formula on both arcs, with one approach delta.
 Normalised as in section 6 (n = N R beta*/(4 pi Delta vartheta), so P* = int n cos(phi) dphi, B* = int n dphi),
-everything is linear in delta for fixed arcs: the engine (jkrcyl.numerics.arcs) returns, for each arc end, the
-edge coefficient k of n ~ -k/sqrt(distance to the end in rad), as k = k0 + (delta/Delta) k1.
+everything is linear in delta for fixed arcs: the engine (jkrcyl.numerics.arcs when it offers two_patch_linear,
+else the alpha* = 0 engine jkrcyl.numerics.arcs_log) returns, for each arc end, the edge coefficient k of
+n ~ -k/sqrt(distance to the end in rad), as k = k0 + (delta/Delta) k1.
 
 Griffith (3.5)-(3.6) at an end reads G/w = (pi k/M)^2 = 1, i.e. k = M/pi at both ends (checked against the
 closed form (4.4)).  Eliminating delta leaves ONE scalar equation in the half-angles,
 
-    F(eps, eps_top) = (k0_bot - M/pi) k1_top - (k0_top - M/pi) k1_bot = 0,
+    F(eps, eps_top) = sign(det A) [(k0_bot - M/pi) k1_top - (k0_top - M/pi) k1_bot] / |k1| = 0,
 
-whose zero set -- curves in the (eps, eps_top) plane -- is the set of two-patch equilibria; they are traced by
-pseudo-arclength continuation (jkrcyl.numerics.continuation).
+whose zero set -- curves in the (eps, eps_top) plane -- is the set of two-patch equilibria (A: the fixed-arc
+collocation matrix, singular on curves such as eps = 2 atan(a_crit); the sign factor keeps F smooth there).
+The curves are traced by pseudo-arclength continuation (jkrcyl.numerics.continuation) in log half-angles,
+started at each single-patch onset h(pi) = 0 (a_top -> 0), at its mirror (a -> 0) and at the roots of F along
+a few rows eps_top = const (loops) -- no plane grid.
+
+Findings at vartheta = 1, M = 0.3 ... 0.8 (docs/confined.png, tests): every two-patch branch joins the onset to
+its mirror and is unstable under load (parts of a loop at M = 0.4 are stable under grip); slow pulling
+from the zero-load contact meets the fixed-load adherence point before the gap at pi closes; at a sub-critical
+adherence point the pin detaches (and lands on the top of the hole), at a super-critical one dG/dP* > 0, so
+a further pull lets the contact grow round into full contact.
 
 Energy (per unit length, in units 4 pi Delta^2 vartheta/beta*): U* = [(1 + delta/Delta) P* - B*]/2, half the
 work of the pressure on the rigid overlap (5.1).  Then dU*/d(delta/Delta) = P* (load and approach conjugate)

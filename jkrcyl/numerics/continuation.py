@@ -77,6 +77,9 @@ def trace(f, x0, t0, inside, clip, h0=0.02, h_min=1e-7, h_max=0.08, tol=1e-11, m
             continue
         if not inside(y) or g_last is None:
             yb, label = clip(x, y)
+            if yb is None and h > 64 * h_min:
+                h /= 4                       # a wild corrector iterate, not the curve leaving: shorter step
+                continue
             if yb is not None:
                 pts.append(yb)
             return Path(np.array(pts), "boundary", label)
