@@ -47,7 +47,8 @@ from ._validate import finite_scalar, theta as _check_theta
 from .numerics import continuation as _cont
 
 N_NODES = 24            # collocation nodes per arc (spectral: 1e-12 at moderate arcs, see tests)
-EPS_AXIS = 1e-7         # smallest half-angle traced: a branch reaching it ends on the single-patch state
+EPS_AXIS = 1e-12        # smallest half-angle traced: a branch reaching it ends on the single-patch state
+                        # (within ~sqrt(EPS_AXIS) log(1/EPS_AXIS) ~ 1e-5 relative, the top arc's own load)
 GAP_FULL = 0.02         # eps + eps_top >= pi - GAP_FULL: the branch has run into full contact
 NODES_PER_GAP = 8       # near-touching arcs: the density varies on the scale of the gap g between them, so
                         # Chebyshev needs ~ sqrt(eps/g) times more nodes (Bernstein ellipse through the gap);
@@ -155,9 +156,9 @@ def exterior_angles(eps, eps_top, k=GAP_SAMPLES):
     return 0.5 * (lo + hi) + 0.5 * (hi - lo) * s
 
 
-def fixed_arcs(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES):
+def fixed_arcs(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, lin=None):
     """The state with given arcs and approach (Griffith not imposed): for energy and stability checks."""
-    lin = _linear(eps, eps_top, theta, gb, n)
+    lin = _linear(eps, eps_top, theta, gb, n) if lin is None else lin
     d = float(delta_over_Delta)
     q = lin.q0 + d * lin.q1
     gap_min = float(np.min(lin.gap(exterior_angles(eps, eps_top), d)))
@@ -197,7 +198,12 @@ def solve(M, theta, eps_top=None, eps=None, gb=None, guess=None, n=N_NODES, tol=
     given = finite_scalar(name, given, low=0.0, low_open=True)
     if given >= math.pi:
         raise ValueError(f"{name} must be in (0, pi), got {given:g}")
-    f = (lambda x: residual(x, given, M, th, gb, n)) if eps is None else (lambda x: residual(given, x, M, th, gb, n))
+    last = {}
+
+    def f(x):                                           # keeps each solve for the final state
+        e, et = (x, given) if eps is None else (given, x)
+        r, last[x] = _residual_pieces(e, et, M, th, gb, n)
+        return r
     hi = math.pi - given - SCAN_GAP
     x0 = float(guess) if guess is not None else 0.5 * (math.pi - given)
     x1 = x0 * (1 + 1e-4)
@@ -212,11 +218,12 @@ def solve(M, theta, eps_top=None, eps=None, gb=None, guess=None, n=N_NODES, tol=
         f1 = f(x1)
     else:
         raise ValueError(f"guess: no two-patch equilibrium found near {x1!r}")
-    x = x1
-    if not abs(f0) < 1e-8:                              # the residual at the last evaluated iterate
+    x = x0                                              # the last evaluated iterate, |x1 - x0| <= tol x
+    if not abs(f0) < 1e-8:
         raise ValueError(f"guess: no two-patch equilibrium found near {x!r}")
     e, et = (x, given) if eps is None else (given, x)
-    return equilibrium_state(e, et, M, th, gb, n)
+    lin = last[x]
+    return fixed_arcs(e, et, _delta(lin, M), M, th, gb, n, lin=lin)
 
 
 # --- stability ------------------------------------------------------------------------------------
