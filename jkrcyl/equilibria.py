@@ -10,8 +10,11 @@ and P_R* = P beta*/(4 pi Delta) of (7.6), as :class:`jkrcyl.Contact` does.
 
 Stability: an equilibrium is stable at fixed load when dG/da|_P > 0 and at fixed grip when
 dG/da|_delta > 0 (G > w shrinks the contact); both derivatives are emitted kernels
-(derive/derivatives.py).  Along the curve dG/da|_P = -(dG/dP) dP/da with dG/dP < 0, so fixed-load
-stability is exactly dP*/da > 0 and the adherence force at fixed load is a minimum of P*.
+(derive/derivatives.py).  Along the curve dG/da|_P = -(dG/dP) dP/da; dG/dP at fixed a is < 0 on the
+sub-critical branch but > 0 on the super-critical one (2 vartheta - L - 2a^4 < 0 there), so fixed-load
+stability is dP*/da > 0 sub-critically and dP*/da < 0 super-critically (tests/test_twopatch.py); either
+way the adherence force at fixed load is a minimum of P*.  At a super-critical minimum a further pull
+lowers G: the contact grows instead of detaching (jkrcyl.twopatch: it zips into full contact).
 
 Root finding: sign changes of the slope kernels on a fine grid, then bisection to adjacent
 doubles (no scipy).  Where no root exists the result is an empty list.

@@ -264,3 +264,12 @@ def test_confined_events(M, regime):
     assert ev.P_fold == ref.P_star
     assert math.isnan(ev.P_top_contact)
     assert not ev.two_patch_stable_load
+
+
+@pytest.mark.parametrize("M", [0.3, 0.5, 0.8])
+def test_fixed_load_stability_flips_with_the_branch(M):
+    """dG/dP* at fixed a is < 0 sub-critically and > 0 super-critically, so the emitted dG/da|_P kernel
+    (stable_load) agrees with dP*/da > 0 on the sub-critical branch and with dP*/da < 0 on the other."""
+    for regime, sign in (("sub-critical", 1), ("super-critical", -1)):
+        c = eq.curve(M, THETA, regime, n=2000)
+        assert np.array_equal(c.stable_load, sign * c.dP_star_da > 0)
