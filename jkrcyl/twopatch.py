@@ -351,10 +351,10 @@ def _clipper(f):
     return clip
 
 
-def _near(x, paths, tol):
+def _near(x, polylines, tol):
     """Is x within tol of one of the traced polylines (distance to their segments)?"""
-    for p in paths:
-        a, b = p.points[:-1], p.points[1:]
+    for p in polylines:
+        a, b = p[:-1], p[1:]
         d = b - a
         t = np.clip(np.einsum("ij,ij->i", x - a, d) / np.maximum(np.einsum("ij,ij->i", d, d), 1e-300), 0, 1)
         if a.shape[0] and np.min(np.linalg.norm(a + t[:, None] * d - x, axis=1)) < tol:
@@ -376,7 +376,7 @@ def onset_angles(M, theta, gb=None):
     return sorted(out)
 
 
-def _trace_both(f, clip, x0, t0, paths, h0):
+def _trace_both(f, clip, x0, t0, h0):
     """Trace from x0 in direction t0 and, unless that closes a loop, in the opposite direction; join."""
     fw = _cont.trace(f, x0, t0, _domain, clip, h0=h0, h_max=10 * h0)
     if fw.end == "loop":
@@ -411,7 +411,7 @@ def branches(M, theta, gb=None, n=None, nodes=N_NODES, h0=0.05):
             u0[k] = math.log(e)
             along = np.eye(2)[k]
             u, ok = _cont.project(f, u0, direction=along)
-            if not ok or not _domain(u) or _near(u, [_P(p) for p, _ in found], 2 * h0):
+            if not ok or not _domain(u) or _near(u, [p for p, _ in found], 2 * h0):
                 continue
             path = _cont.trace(f, u, np.eye(2)[1 - k], _domain, clip, h0=h0, h_max=10 * h0)
             found.append((np.vstack([u, path.points[1:]]), (label, path.boundary or path.end)))
@@ -423,9 +423,9 @@ def branches(M, theta, gb=None, n=None, nodes=N_NODES, h0=0.05):
         v = np.array([fx(np.array([e, et])) for e in es])
         for i in np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0]:
             u, ok = _cont.project(f, np.log([0.5 * (es[i] + es[i + 1]), et]), direction=np.array([1.0, 0.0]))
-            if not ok or not _domain(u) or _near(u, [_P(p) for p, _ in found], 2 * h0):
+            if not ok or not _domain(u) or _near(u, [p for p, _ in found], 2 * h0):
                 continue
-            pts, ends = _trace_both(f, clip, u, np.array([0.0, 1.0]), [], h0)
+            pts, ends = _trace_both(f, clip, u, np.array([0.0, 1.0]), h0)
             found.append((pts, ends))
     found = [(np.exp(p), ends) for p, ends in found]
     f = fx
@@ -446,11 +446,6 @@ def _resample(f, points, n):
         if ok:
             out[i] = y
     return out
-
-
-class _P:
-    def __init__(self, points):
-        self.points = points
 
 
 def _curve(points, ends, M, th, gb, n):
