@@ -121,7 +121,7 @@ def _cmd_two_patch(args):
 
 def _confined_dict(ev):
     nan = lambda x: None if not math.isfinite(x) else x
-    return {"regime": ev.regime, "description": ev.description, "P_fold": nan(ev.P_fold),
+    return {"regime": ev.regime, "description": ev.description, "summary": ev.summary, "P_fold": nan(ev.P_fold),
             "P_top_contact": nan(ev.P_top_contact), "onsets": [list(o) for o in ev.onsets],
             "grip_detachment": ev.grip_detachment, "two_patch_stable_load": ev.two_patch_stable_load,
             "two_patch_stable_grip": ev.two_patch_stable_grip, "full_contact": ev.full_contact}
@@ -166,7 +166,7 @@ def _cmd_adherence(args):
         print(f"  (8.1) has roots for M <= {Mmax:.17g}")
     if confined:
         print(f"confined regime (slow upward loading, jkrcyl.twopatch): {confined['regime']}")
-        print(f"  {confined['description']}")
+        print(f"  {confined['summary']}")
         for key in ("P_fold", "P_top_contact"):
             if confined[key] is not None:
                 print(f"  {key} = {confined[key]:.12g}")

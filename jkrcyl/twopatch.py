@@ -575,6 +575,20 @@ class ConfinedEvents:
     def description(self):
         return REGIMES[self.regime]
 
+    @property
+    def summary(self):
+        """One line: the event, its load and what follows (no true detachment under load control in a hole)."""
+        if self.regime == "detachment":
+            return (f"fixed-load detachment at P* = {self.P_fold:.6g}; the pin lands on the top of the hole "
+                    f"(transfer); held at fixed grip it can be freed: {self.grip_detachment}")
+        if self.regime == "zip-full":
+            fc = "entirely in tension" if abs(self.P_fold) < 1 else "partly compressed"
+            return (f"fold at P* = {self.P_fold:.6g}; the contact grows into full contact ({fc} there); "
+                    f"no detachment under load")
+        if self.regime == "no-path":
+            return REGIMES[self.regime]
+        return f"top contact forms at P* = {self.P_top_contact:.6g}: {REGIMES[self.regime]}"
+
 
 def _load_path(M, th, gb):
     """Stable, feasible single-patch states and the first event when P* decreases from the start."""
