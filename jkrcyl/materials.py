@@ -11,8 +11,10 @@ ALPHA_TOLERANCE = 1e-9   # |alpha*| / beta* below this counts as alpha* = 0
 class Materials:
     """Shear moduli G, G_I [Pa] (math.inf for a rigid body) and Kolosov constants kappa, kappa_I.
 
-    kappa = 3 - 4 nu in plane strain.  The closed forms need the second Dundurs parameter
-    alpha* = (kappa - 1)/(2G) - (kappa_I - 1)/(2G_I) to vanish (section 2).
+    kappa = 3 - 4 nu in plane strain.  Any pair is accepted: the closed forms of the paper need the second
+    Dundurs parameter alpha* = (kappa - 1)/(2G) - (kappa_I - 1)/(2G_I) to vanish (section 2,
+    :attr:`closed_form`); otherwise :meth:`jkrcyl.Contact.state` solves (2.1) numerically
+    (jkrcyl.numerics.arcs).
     """
 
     G: float
@@ -28,13 +30,6 @@ class Materials:
             object.__setattr__(self, name, finite_scalar(name, getattr(self, name), low=1.0))
         if math.isinf(self.G) and math.isinf(self.G_I):
             raise ValueError("G and G_I are both inf: at least one body must be deformable")
-        rel = abs(self.alpha_star) / self.beta
-        if rel > ALPHA_TOLERANCE:
-            raise ValueError(
-                f"alpha* = (kappa - 1)/(2G) - (kappa_I - 1)/(2G_I) = {self.alpha_star:.6g} "
-                f"(alpha*/beta* = {rel:.3g}) must be 0: the closed form of the paper holds only for "
-                "(kappa - 1)/G = (kappa_I - 1)/G_I (e.g. identical materials, or an incompressible "
-                "disk, kappa_I = 1, in a rigid cradle)")
 
     @classmethod
     def from_young(cls, E, nu, E_I, nu_I):
@@ -56,6 +51,24 @@ class Materials:
     def alpha_star(self):
         """Second Dundurs parameter in compliance form, (kappa - 1)/(2G) - (kappa_I - 1)/(2G_I) [1/Pa]."""
         return (self.kappa - 1) / (2 * self.G) - (self.kappa_I - 1) / (2 * self.G_I)
+
+    @property
+    def alpha_ratio(self):
+        """alpha*/beta* (dimensionless, in (-1, 1); <= 1/2 in size for nu, nu_I >= 0); 0 for the closed forms."""
+        return self.alpha_star / self.beta
+
+    @property
+    def closed_form(self):
+        """True when alpha* = 0 (|alpha*/beta*| <= ALPHA_TOLERANCE): the paper's closed forms hold exactly."""
+        return abs(self.alpha_ratio) <= ALPHA_TOLERANCE
+
+    def require_closed_form(self, what="the closed form"):
+        """Raise ValueError (naming alpha*) unless alpha* = 0."""
+        if not self.closed_form:
+            raise ValueError(
+                f"{what} needs alpha* = 0, got alpha* = (kappa - 1)/(2G) - (kappa_I - 1)/(2G_I) = "
+                f"{self.alpha_star:.6g} (alpha*/beta* = {self.alpha_ratio:.3g}): the closed form of the paper "
+                "holds only for (kappa - 1)/G = (kappa_I - 1)/G_I; use method='numeric' or 'auto'")
 
     @property
     def inv_theta(self):

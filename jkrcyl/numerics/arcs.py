@@ -1,0 +1,235 @@
+"""Contact arcs on the circle for ANY alpha*: the displacement form of (2.1) ((5.2) plus the alpha* terms),
+solved by Gauss-Chebyshev collocation on one or two arcs (bottom |phi| < eps, top |phi - pi| < eps_top).
+
+Normalised unknown nu = N R beta*/(4 pi Delta) (so n = nu/vartheta is the n of section 6 and of
+jkrcyl.twopatch; nu stays finite for a rigid cradle).  On every arc, with t = phi - psi,
+
+    (delta/Delta) cos(phi) - (1 - cos(phi)) = - int nu(psi) K(phi - psi) dpsi,                  (5.2)
+    K(t) = cos t log(2 - 2 cos t) + (gb - ar/2) cos t + 1 - 1/(2 vartheta) + ar (pi sign(t) sin t - t sin t),
+
+gb = (1/G_I)/beta*, ar = alpha*/beta* (alpha* = (kappa - 1)/(2G) - (kappa_I - 1)/(2G_I)); the alpha* part
+pi sin|t| - t sin t is written pi sign(t) sin t - t sin t, valid without wrapping for |t| < 2 pi.  At ar = 0
+this is (5.2) (the kernel of jkrcyl.numerics.arcs_log).  The kernel is the sum of the Michell modes of the
+hole and the disk (derive/green.py); K'' + K reproduces the csc^2 and local -pi alpha* N terms of (2.1).
+
+Discretisation: phi = c + e s, nu dphi = u(s) ds/sqrt(1 - s^2) (square-root ends explicit, u smooth at
+alpha* = 0).  The log|x - s| and sign(x - s) parts are integrated exactly against the Chebyshev interpolant
+of (cos t) u and (sin t) u (product integration); the rest by Gauss-Chebyshev.  At alpha* = 0 the method is
+spectral; for alpha* != 0 u carries (1 - s) log(1 - s) end terms (the kink of sin|t| at t = 0): the
+sign(x - s) moments are exact, so the remaining error is the Chebyshev interpolation of u, algebraic in n
+(see benchmarks/bench_solver.py for the measured table).
+"""
+import math
+
+import numpy as np
+from scipy.linalg import lu_factor, lu_solve
+
+LOG2 = math.log(2.0)
+
+
+def _nodes(n):
+    return np.cos((2 * np.arange(1, n + 1) - 1) * np.pi / (2 * n))
+
+
+def _cheb_matrix(n):
+    """D with c = D @ u: Chebyshev coefficients of the interpolant through the Gauss nodes."""
+    s = _nodes(n)
+    D = (2.0 / n) * np.cos(np.outer(np.arange(n), np.arccos(s)))
+    D[0] /= 2
+    return D
+
+
+def _log_moments(x, n):
+    """L[i, m] = int_{-1}^{1} log|x_i - s| T_m(s)/sqrt(1 - s^2) ds (exact, any real x_i)."""
+    x = np.asarray(x, dtype=float)
+    m = np.arange(1, n)
+    out = np.empty((x.size, n))
+    inside = np.abs(x) <= 1
+    th = np.arccos(np.clip(x, -1, 1))
+    out[:, 0] = -math.pi * LOG2
+    out[:, 1:] = -math.pi * np.cos(np.outer(th, m)) / m
+    if (~inside).any():
+        xo = x[~inside]
+        r = np.sqrt((np.abs(xo) - 1) * (np.abs(xo) + 1))
+        z = np.sign(xo) / (np.abs(xo) + r)            # x - sign(x) sqrt(x^2 - 1), stably
+        out[~inside, 0] = math.pi * np.log((np.abs(xo) + r) / 2)
+        out[~inside, 1:] = -math.pi * z[:, None] ** m / m
+    return out
+
+
+def _sign_moments(x, n):
+    """S[i, m] = int_{-1}^{1} sign(x_i - s) T_m(s)/sqrt(1 - s^2) ds (exact): pi - 2 theta, -2 sin(m theta)/m."""
+    x = np.asarray(x, dtype=float)
+    th = np.arccos(np.clip(x, -1, 1))
+    m = np.arange(1, n)
+    out = np.empty((x.size, n))
+    out[:, 0] = math.pi - 2 * th
+    out[:, 1:] = -2 * np.sin(np.outer(th, m)) / m
+    return out
+
+
+def _ell(t):
+    """log((2 sin(t/2)/t)^2), analytic for |t| < 2 pi (series near 0)."""
+    t = np.asarray(t, dtype=float)
+    small = np.abs(t) < 1e-3
+    ts = np.where(small, 1.0, t)
+    return np.where(small, -t * t / 12 - t ** 4 / 1440, 2 * np.log(np.abs(2 * np.sin(ts / 2) / ts)))
+
+
+def _ell3(t):
+    """log(4 sin^2(t/2)/(t^2 (t - 2 pi)^2 (t + 2 pi)^2)), analytic for |t| < 4 pi."""
+    t = np.asarray(t, dtype=float)
+    return _ell(t) - 2 * np.log(np.abs(t - 2 * math.pi)) - 2 * np.log(np.abs(t + 2 * math.pi))
+
+
+class Kernel:
+    """Constants of K(t): vartheta (inf allowed), gb = (1/G_I)/beta*, ar = alpha*/beta*."""
+
+    def __init__(self, theta, gb, ar=0.0):
+        self.theta, self.gb, self.ar = float(theta), float(gb), float(ar)
+        self.k0 = 1.0 - (0.0 if math.isinf(self.theta) else 0.5 / self.theta)
+        self.k1 = self.gb - 0.5 * self.ar
+
+
+class Arcs:
+    """Collocation system for arcs [(centre, half-width), ...] with n Gauss-Chebyshev nodes per arc."""
+
+    def __init__(self, arcs, kernel, n):
+        self.arcs = [(float(c), float(e)) for c, e in arcs if e > 0]
+        self.kernel, self.n = kernel, n
+        self.s = _nodes(n)
+        self.D = _cheb_matrix(n)
+        self.centres = np.repeat([c for c, _ in self.arcs], n)
+        self.offsets = np.concatenate([e * self.s for _, e in self.arcs])
+        self.A = self.operator(self.centres, self.offsets)
+        self.cos = np.cos(self.centres) * np.cos(self.offsets)    # exact for centres 0, pi
+
+    def operator(self, centres, offsets):
+        """Matrix: node values u -> -int nu K dpsi at the angles centre + offset (= gap - rigid part)."""
+        kn, n = self.kernel, self.n
+        blocks = []
+        for c, e in self.arcs:
+            same = centres == c
+            d = np.where(same, offsets, np.angle(np.exp(1j * (centres - c))) + offsets)
+            t = d[:, None] - e * self.s[None, :]
+            cos_t, sin_t = np.cos(t), np.sin(t)
+            x = d / e
+            if same.any() and e > 1.0:
+                # the arc's own images at t = +-2 pi lie just beyond its ends as eps -> pi: exact moments too
+                images = 2 * math.pi / e
+                smooth = cos_t * (6 * math.log(e) + _ell3(t)) + kn.k1 * cos_t + kn.k0
+                L = _log_moments(x, n) + _log_moments(x - images, n) + _log_moments(x + images, n)
+            else:
+                smooth = cos_t * (2 * math.log(e) + _ell(t)) + kn.k1 * cos_t + kn.k0
+                L = _log_moments(x, n)
+            block = 2 * cos_t * (L @ self.D)
+            if kn.ar != 0.0:
+                kink = np.abs(x) < 1            # sign(t) changes inside this arc: exact sign moments
+                smooth = smooth - kn.ar * t * sin_t
+                smooth[~kink] += kn.ar * math.pi * np.sign(t[~kink]) * sin_t[~kink]
+                if kink.any():
+                    S = _sign_moments(x[kink], n) @ self.D
+                    block[kink] += kn.ar * math.pi * sin_t[kink] * S
+            blocks.append(smooth * (math.pi / n) + block)
+        return -np.hstack(blocks)
+
+    def edge(self, u):
+        """k at the ends of each arc: nu ~ -k/sqrt(e - |phi - c|) (k > 0: tensile)."""
+        n = self.n
+        return np.array([-np.sum(self.D @ u[i * n:(i + 1) * n]) / math.sqrt(2 * e)
+                         for i, (_, e) in enumerate(self.arcs)])
+
+
+class Linear:
+    """Both unit cases for fixed arcs, normalised by vartheta_eff (vartheta, or 1 for a rigid cradle):
+    u = u0 + (delta/Delta) u1 and q = [P*, B*, k_bot, k_top] = q0 + (delta/Delta) q1, with
+    P* = int n cos(phi) dphi (2.2), B* = int n dphi, n ~ -k/sqrt(distance to the end) (Griffith: k = M/pi).
+    ``sign_det``: sign of det of the fixed-arc system (changes where the unit problem is singular)."""
+
+    def __init__(self, eps, eps_top, theta, gb, n, alpha_ratio=0.0):
+        self.eps, self.eps_top = eps, eps_top
+        self.scale = 1.0 if math.isinf(theta) else float(theta)
+        self.sys = Arcs([(0.0, eps), (math.pi, eps_top)], Kernel(theta, gb, alpha_ratio), n)
+        sy = self.sys
+        rhs = np.column_stack([-(1 - sy.cos), sy.cos])
+        lu, piv = lu_factor(sy.A)
+        U = lu_solve((lu, piv), rhs) / self.scale
+        swaps = np.count_nonzero(piv != np.arange(piv.size))
+        self.sign_det = float((-1) ** swaps * np.prod(np.sign(np.diag(lu))))
+        self.u0, self.u1 = U[:, 0], U[:, 1]
+        self.q0, self.q1 = self._q(self.u0), self._q(self.u1)
+
+    def _q(self, u):
+        w = math.pi / self.sys.n
+        k = self.sys.edge(u)
+        return np.array([w * np.sum(u * self.sys.cos), w * np.sum(u), k[0], k[1] if k.size > 1 else 0.0])
+
+    def gap(self, phi, delta):
+        """h(phi)/Delta (5.9) at angles phi (meaningful outside the arcs); delta = delta/Delta."""
+        phi = np.atleast_1d(np.asarray(phi, dtype=float))
+        u = (self.u0 + delta * self.u1) * self.scale
+        return (1 - np.cos(phi)) - delta * np.cos(phi) + self.sys.operator(np.zeros_like(phi), phi) @ u
+
+    def pressure(self, phi, delta):
+        """n(phi) inside the arcs (Chebyshev interpolant of u over sqrt(1 - s^2)), 0 outside."""
+        phi = np.atleast_1d(np.asarray(phi, dtype=float))
+        u = self.u0 + delta * self.u1
+        out = np.zeros_like(phi)
+        n = self.sys.n
+        for i, (c, e) in enumerate(self.sys.arcs):
+            x = np.angle(np.exp(1j * (phi - c))) / e
+            inside = np.abs(x) < 1
+            coef = self.sys.D @ u[i * n:(i + 1) * n]
+            T = np.cos(np.outer(np.arccos(x[inside]), np.arange(n)))
+            out[inside] = (T @ coef) / (e * np.sqrt(1 - x[inside] ** 2))
+        return out
+
+
+def two_patch_linear(eps, eps_top, theta, gb, n, alpha_ratio=0.0):
+    """Affine pieces of the two-arc state (eps_top = 0: the single bottom arc); see :class:`Linear`."""
+    return Linear(eps, eps_top, theta, gb, n, alpha_ratio)
+
+
+# --- one arc in physical units (Contact.state(method="numeric")) -------------------------------------------
+def single_arc_state(a, R, Delta, w, beta, inv_theta, inv_G_I, alpha_star, n=None):
+    """Griffith equilibrium (3.6) of the single bottom arc at contact parameter(s) a = tan(eps/2), any alpha*.
+
+    Inputs as jkrcyl.Contact (R, Delta [m], w [J/m^2], beta = beta*, alpha_star = alpha* [1/Pa],
+    inv_theta = 1/vartheta, inv_G_I = 1/G_I [1/Pa]).  Returns a dict of arrays: P [N/m] (2.2),
+    B = int N dphi and C = int p dx (2.9) [Pa], c0 [m] and c1 (2.6), r0 [Pa] (coefficient of 1/sqrt(a^2 - x^2)
+    in p(x) (2.12)), K [Pa m^1/2] (3.4) and G_release = (pi/4) A K^2 (3.5) (= w), delta [m] (5.2),
+    h_pi [m] (5.9 at phi = pi).  All from their integral definitions (no closed form used).
+    """
+    a = np.atleast_1d(np.asarray(a, dtype=float))
+    theta = math.inf if inv_theta == 0 else 1.0 / inv_theta
+    gb, ar = inv_G_I / beta, alpha_star / beta
+    A = beta / (2 * math.pi)
+    K_w = math.sqrt(4 * w / (math.pi * A))                 # Griffith (3.5)-(3.6): G = w, K >= 0 (tensile)
+    keys = ("P", "B", "C", "c0", "c1", "r0", "K", "G_release", "delta", "h_pi")
+    out = {k: np.empty(a.size) for k in keys}
+    for i, ai in enumerate(a):
+        eps = 2 * math.atan(ai)
+        lin = Linear(eps, 0.0, theta, gb, n or nodes_for(eps, ar), ar)
+        f = 4 * math.pi * lin.scale / (R * beta)            # N = f (Delta n0 + delta n1)
+        k_N = K_w / math.sqrt(2 * math.pi * R)              # N ~ -k_N/sqrt(eps - |phi|), K = sqrt(2 pi R) k_N
+        delta = (k_N / f - Delta * lin.q0[2]) / lin.q1[2]
+        q = f * (Delta * lin.q0 + delta * lin.q1)
+        u = Delta * lin.u0 + delta * lin.u1
+        x_nodes = np.tan(lin.sys.offsets / 2)
+        C = f * math.pi / lin.sys.n * np.sum(u * (1 + x_nodes ** 2) / 2)   # dx = (1 + x^2)/2 dphi
+        P, B = R * q[0], q[1]
+        out["P"][i], out["B"][i], out["C"][i] = P, B, C
+        out["c0"][i] = -Delta - R * beta * inv_theta * B / (8 * math.pi)  # (kappa + 1)/G = beta*/vartheta
+        out["c1"][i] = beta * P / (2 * math.pi)
+        out["r0"][i] = -q[2] * math.sqrt(ai * (1 + ai * ai))             # 1/sqrt(a^2 - x^2) ~ 1/sqrt(a(1+a^2)(eps-phi))
+        out["K"][i] = math.sqrt(2 * math.pi * R) * q[2]
+        out["G_release"][i] = math.pi / 4 * A * out["K"][i] ** 2
+        out["delta"][i] = delta
+        out["h_pi"][i] = 2 * Delta + delta + lin.scale * (lin.sys.operator(np.zeros(1), np.array([math.pi])) @ u)[0]
+    return out
+
+
+def nodes_for(eps, ar=0.0):
+    """Nodes per arc: enough for ~1e-12 at alpha* = 0 (more as the arc closes round the circle, eps -> pi)."""
+    gap = max(math.pi - eps, 1e-12)
+    return int(min(max(24, 20 + 15 * math.sqrt(eps / gap)), 400)) if ar == 0.0 else 64
