@@ -80,10 +80,20 @@ class Contact:
         return dict(Delta=self.Delta, beta=self.beta, inv_theta=self.materials.inv_theta, zeta=self.zeta)
 
     # --- states --------------------------------------------------------------------------------
-    def state(self, a):
-        """Equilibrium at contact parameter(s) a = tan(eps/2) > 0: see :class:`State`."""
+    def state(self, a, method="auto"):
+        """Equilibrium at contact parameter(s) a = tan(eps/2) > 0: see :class:`State`.
+
+        method: "closed-form" (the paper's (4.4)-(5.10); ValueError unless alpha* = 0), "numeric" (collocation
+        solution of (2.1)/(5.2), jkrcyl.numerics.arcs, any alpha*) or "auto" (closed form where alpha* = 0).
+        """
+        if method not in ("auto", "closed-form", "numeric"):
+            raise ValueError(f"method must be 'auto', 'closed-form' or 'numeric', got {method!r}")
+        if method == "closed-form":
+            self.materials.require_closed_form("method='closed-form'")
         arr = contact_parameter(a)
         flat = np.ascontiguousarray(arr.ravel())
+        if method == "numeric" or not self.materials.closed_form:
+            return self._numeric_state(arr, flat)
         # prange over both cores for long inputs: bit-identical to the serial loop (tests/test_parallel.py)
         kernel = _state.full_state_parallel if flat.size >= PARALLEL_MIN else _state.full_state_array
         P, B, C, c0, c1, r0, delta, h_pi = kernel(
@@ -94,6 +104,13 @@ class Contact:
             a=flat, P=P, B=B, C=C, c0=c0, c1=c1, r0=r0, K=K, G_release=G_release, delta=delta,
             h_pi=h_pi).items()}
         return State(contact=self, **fields)
+
+    def _numeric_state(self, arr, flat):
+        from .numerics.arcs import single_arc_state
+        m = self.materials
+        out = single_arc_state(flat, R=self.R, Delta=self.Delta, w=self.w, beta=self.beta,
+                               inv_theta=m.inv_theta, inv_G_I=m.inv_G_I, alpha_star=m.alpha_star)
+        return State(contact=self, a=_shaped(flat, arr.shape), **{k: _shaped(v, arr.shape) for k, v in out.items()})
 
     # --- sections 6 and 8 (jkrcyl.equilibria) -------------------------------------------------------
     def curve(self, regime="sub-critical", n=2000):
