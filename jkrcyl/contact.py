@@ -117,13 +117,13 @@ class Contact:
         """Equilibrium branch in normalised form (M, P*, delta/Delta, ...): jkrcyl.equilibria.curve."""
         from . import equilibria
         M, th, gb = equilibria.from_contact(self)
-        return equilibria.curve(M, th, regime=regime, n=n, gb=gb)
+        return equilibria.curve(M, th, regime=regime, n=n, gb=gb, alpha_ratio=self.materials.alpha_ratio)
 
     def adherence(self, control="load"):
         """Adherence points (P* minima for control='load', d delta/da = 0 for 'grip'): jkrcyl.equilibria.adherence."""
         from . import equilibria
         M, th, gb = equilibria.from_contact(self)
-        return equilibria.adherence(M, th, control=control, gb=gb)
+        return equilibria.adherence(M, th, control=control, gb=gb, alpha_ratio=self.materials.alpha_ratio)
 
     def two_patch(self, n=None):
         """Two-patch branches (second contact at the top of the hole): jkrcyl.equilibria.two_patch."""
@@ -146,6 +146,8 @@ class Contact:
         if not np.isfinite(phi).all():
             raise ValueError("phi must be finite")
         eps = 2 * math.atan(a)
+        if not self.materials.closed_form:
+            return self._numeric_pressure(a, phi)
         inside = np.abs(phi) < eps
         flat = np.ascontiguousarray(np.where(inside, phi, 0.0).ravel())
         nb, nu = _load.pressure_array(R=self.R, a=a, phi=flat, **self._args())
@@ -157,9 +159,39 @@ class Contact:
         a_arr, phi_arr = np.broadcast_arrays(contact_parameter(a), np.asarray(phi, dtype=float))
         if not np.isfinite(phi_arr).all():
             raise ValueError("phi must be finite")
+        if not self.materials.closed_form:
+            return _shaped(self._numeric_gap(a_arr.ravel(), phi_arr.ravel()), a_arr.shape)
         h = _gap.gap_array(a=np.ascontiguousarray(a_arr.ravel()), phi=np.ascontiguousarray(phi_arr.ravel()),
                            **self._args())
         return _shaped(h, a_arr.shape)
+
+
+    # --- alpha* != 0: the collocation solution (jkrcyl.numerics.arcs) -----------------------------------
+    def _griffith(self, a):
+        from .numerics.arcs import griffith_arc
+        m = self.materials
+        return griffith_arc(a, R=self.R, Delta=self.Delta, w=self.w, beta=self.beta, inv_theta=m.inv_theta,
+                            inv_G_I=m.inv_G_I, alpha_star=m.alpha_star)
+
+    def _numeric_pressure(self, a, phi):
+        """(bounded, unbounded) as for the closed form; unbounded = r0/sqrt(a^2 - x^2), x = tan(phi/2)."""
+        lin, f, delta = self._griffith(a)
+        flat = phi.ravel()
+        N = f * lin.pressure(flat, delta, clearance=self.Delta)
+        inside = np.abs(flat) < 2 * math.atan(a)
+        r0 = -f * (self.Delta * lin.q0[2] + delta * lin.q1[2]) * math.sqrt(a * (1 + a * a))
+        x = np.tan(np.where(inside, flat, 0.0) / 2)
+        unb = np.where(inside, r0 / np.sqrt(np.where(inside, a * a - x * x, 1.0)), 0.0)
+        return _shaped(N - unb, phi.shape), _shaped(unb, phi.shape)
+
+    def _numeric_gap(self, a, phi):
+        out = np.zeros(a.size)
+        for ai in np.unique(a):
+            sel = (a == ai) & (np.abs(phi) >= 2 * math.atan(ai))
+            if sel.any():
+                lin, f, delta = self._griffith(float(ai))
+                out[sel] = lin.gap(phi[sel], delta, clearance=self.Delta)
+        return out
 
 
 def _shaped(values, shape):

@@ -45,6 +45,22 @@ def default_gb(theta):
     return 1.0 if math.isinf(th) else 1.0 - 1.0 / (2.0 * th)
 
 
+NUMERIC_ROOT_GRID = 400   # root grid when alpha* != 0 (each point is a collocation solve, numerics.arcs)
+
+
+def _alpha(alpha_ratio):
+    """alpha*/beta* (Materials.alpha_ratio); != 0 routes every function here through numerics.arcs."""
+    return finite_scalar("alpha_ratio", alpha_ratio, low=-1.0, high=1.0, low_open=True)
+
+
+def _ac(th, gb, ar):
+    """a_crit: the closed form (4.4) at alpha* = 0, the numerical pole of the solver otherwise."""
+    if ar == 0.0 or math.isinf(th):
+        return 1.0 if math.isinf(th) else _a_crit(th)
+    from .numerics.arcs import a_crit
+    return a_crit(th, gb, ar)
+
+
 def _params(M, theta, gb):
     M = finite_scalar("M", M, low=0.0)
     th = _check_theta(theta)
@@ -62,14 +78,14 @@ def _check_regime(regime, th):
         raise ValueError("regime: no super-critical equilibria for theta = inf (a_crit = inf, section 7.2)")
 
 
-def _a_of(eps_star, th):
+def _a_of(eps_star, th, ac=None):
     """a = a_crit tan(pi eps*/2); for vartheta = inf, eps* is eps/pi (a = tan(pi eps*/2))."""
-    ac = 1.0 if math.isinf(th) else _a_crit(th)
+    ac = (1.0 if math.isinf(th) else _a_crit(th)) if ac is None else ac
     return ac * np.tan(np.pi * np.asarray(eps_star, dtype=float) / 2)
 
 
-def _eps_star(a, th):
-    ac = 1.0 if math.isinf(th) else _a_crit(th)
+def _eps_star(a, th, ac=None):
+    ac = (1.0 if math.isinf(th) else _a_crit(th)) if ac is None else ac
     return 2 * np.arctan(np.asarray(a) / ac) / np.pi
 
 
@@ -80,14 +96,17 @@ def _branch_range(regime, th):
     return (0.0, 0.5) if regime == "sub-critical" else (0.5, 1.0)
 
 
-def _grid(regime, th, n):
+def _grid(regime, th, n, ac=None):
     lo, hi = _branch_range(regime, th)
     s = lo + (hi - lo) * (np.arange(n) + 0.5) / n
-    return _a_of(s, th)
+    return _a_of(s, th, ac)
 
 
-def _star(a, m, inv_t, gb):
+def _star(a, m, inv_t, gb, ar=0.0):
     a = np.ascontiguousarray(np.atleast_1d(np.asarray(a, dtype=float)))
+    if ar != 0.0:
+        from .numerics.arcs import star
+        return star(a, m, math.inf if inv_t == 0 else 1.0 / inv_t, gb, ar)
     # (1/w) dG/da is undefined without adhesion (G = w = 0): nan there; m = 1e-150 leaves p, delta exact
     p, dp, dn, ddn, gP, gd = _der.equilibrium_star_array(a=a, gb=gb, inv_theta=inv_t, m=m if m > 0 else 1e-150)
     if m == 0:
@@ -132,16 +151,21 @@ class Curve:
         return {k: np.asarray(getattr(self, k), dtype=float) for k in self.COLUMNS}
 
 
-def curve(M, theta, regime="sub-critical", n=2000, gb=None, a=None):
-    """The equilibrium branch ``regime`` at (M, vartheta): n points uniform in eps*, or at given a."""
+def curve(M, theta, regime="sub-critical", n=2000, gb=None, a=None, alpha_ratio=0.0):
+    """The equilibrium branch ``regime`` at (M, vartheta): n points uniform in eps*, or at given a.
+
+    alpha_ratio = alpha*/beta* != 0: numerical solution (jkrcyl.numerics.arcs); eps* then uses its pole a_crit.
+    """
     M, th, gb, inv_t, m, scale = _params(M, theta, gb)
+    ar = _alpha(alpha_ratio)
     _check_regime(regime, th)
+    ac = _ac(th, gb, ar)
     if a is None:
         n = int(finite_scalar("n", n, low=2))
-        a = _grid(regime, th, n)
+        a = _grid(regime, th, n, ac)
     a = np.ascontiguousarray(np.asarray(a, dtype=float))
-    st = _star(a, m, inv_t, gb)
-    return Curve(M=M, theta=th, gb=gb, regime=regime, a=a, eps=2 * np.arctan(a), eps_star=_eps_star(a, th),
+    st = _star(a, m, inv_t, gb, ar)
+    return Curve(M=M, theta=th, gb=gb, regime=regime, a=a, eps=2 * np.arctan(a), eps_star=_eps_star(a, th, ac),
                  P_star=st["p"] / scale, delta_over_Delta=st["dn"], h_pi_over_Delta=st["h"],
                  feasible=st["h"] >= 0, stable_load=st["gP"] > 0, stable_grip=st["gd"] > 0,
                  dP_star_da=st["dp"] / scale, ddelta_da=st["ddn"], dG_da_P=st["gP"], dG_da_delta=st["gd"])
@@ -198,26 +222,30 @@ def _roots(f_arr, f_one, a_grid):
 ROOT_GRID = 4000
 
 
-def stationary_points(M, theta, control="load", regime="sub-critical", gb=None, n=ROOT_GRID):
+def stationary_points(M, theta, control="load", regime="sub-critical", gb=None, n=ROOT_GRID, alpha_ratio=0.0):
     """All points of one branch where dP*/da = 0 (load) or d(delta/Delta)/da = 0 (grip)."""
     if control not in CONTROLS:
         raise ValueError(f"control must be 'load' or 'grip', got {control!r}")
     M, th, gb, inv_t, m, scale = _params(M, theta, gb)
+    ar = _alpha(alpha_ratio)
     _check_regime(regime, th)
+    ac = _ac(th, gb, ar)
+    if ar != 0.0 and n == ROOT_GRID:
+        n = NUMERIC_ROOT_GRID
     key = "dp" if control == "load" else "ddn"
-    f_arr = lambda x: _star(x, m, inv_t, gb)[key]
-    f_one = lambda x: float(_star(np.array([x]), m, inv_t, gb)[key][0])
+    f_arr = lambda x: _star(x, m, inv_t, gb, ar)[key]
+    f_one = lambda x: float(_star(np.array([x]), m, inv_t, gb, ar)[key][0])
     out = []
-    for r, sgn in _roots(f_arr, f_one, _grid(regime, th, n)):
-        st = _star(np.array([r]), m, inv_t, gb)
+    for r, sgn in _roots(f_arr, f_one, _grid(regime, th, n, ac)):
+        st = _star(np.array([r]), m, inv_t, gb, ar)
         out.append(Point(control=control, regime=regime, kind="min" if sgn > 0 else "max", M=M, theta=th,
-                         a=r, eps=2 * math.atan(r), eps_star=float(_eps_star(r, th)),
+                         a=r, eps=2 * math.atan(r), eps_star=float(_eps_star(r, th, ac)),
                          P_star=float(st["p"][0] / scale), delta_over_Delta=float(st["dn"][0]),
                          h_pi_over_Delta=float(st["h"][0]), feasible=bool(st["h"][0] >= 0)))
     return out
 
 
-def adherence(M, theta, control="load", gb=None, regimes=None):
+def adherence(M, theta, control="load", gb=None, regimes=None, alpha_ratio=0.0):
     """Adherence points, sub-critical branch first.
 
     control='load': per branch, the lowest local minimum of P* (the 'x' of Fig. 3), if any.
@@ -227,7 +255,7 @@ def adherence(M, theta, control="load", gb=None, regimes=None):
     regimes = (("sub-critical",) if math.isinf(th) else REGIMES) if regimes is None else regimes
     out = []
     for regime in regimes:
-        pts = stationary_points(M, th, control, regime, gb)
+        pts = stationary_points(M, th, control, regime, gb, alpha_ratio=alpha_ratio)
         if control == "load":
             mins = [p for p in pts if p.kind == "min"]
             if mins:
@@ -237,25 +265,31 @@ def adherence(M, theta, control="load", gb=None, regimes=None):
     return out
 
 
-def solve_load(M, theta, P_star, regime="sub-critical", gb=None, n=ROOT_GRID):
+def solve_load(M, theta, P_star, regime="sub-critical", gb=None, n=ROOT_GRID, alpha_ratio=0.0):
     """Contact parameters a on a branch where P*(a) = P_star (sorted; [] if none)."""
     M, th, gb, inv_t, m, scale = _params(M, theta, gb)
+    ar = _alpha(alpha_ratio)
     _check_regime(regime, th)
+    if ar != 0.0 and n == ROOT_GRID:
+        n = NUMERIC_ROOT_GRID
     target = finite_scalar("P_star", P_star)
-    f_arr = lambda x: _star(x, m, inv_t, gb)["p"] / scale - target
+    f_arr = lambda x: _star(x, m, inv_t, gb, ar)["p"] / scale - target
     f_one = lambda x: float(f_arr(np.array([x]))[0])
-    grid = _grid(regime, th, n)
+    grid = _grid(regime, th, n, _ac(th, gb, ar))
     return sorted(r for r, _ in _roots(f_arr, f_one, grid))
 
 
-def solve_approach(M, theta, delta_over_Delta, regime="sub-critical", gb=None, n=ROOT_GRID):
+def solve_approach(M, theta, delta_over_Delta, regime="sub-critical", gb=None, n=ROOT_GRID, alpha_ratio=0.0):
     """Contact parameters a on a branch where delta/Delta = the given value (sorted)."""
     M, th, gb, inv_t, m, scale = _params(M, theta, gb)
+    ar = _alpha(alpha_ratio)
     _check_regime(regime, th)
+    if ar != 0.0 and n == ROOT_GRID:
+        n = NUMERIC_ROOT_GRID
     target = finite_scalar("delta_over_Delta", delta_over_Delta)
-    f_arr = lambda x: _star(x, m, inv_t, gb)["dn"] - target
+    f_arr = lambda x: _star(x, m, inv_t, gb, ar)["dn"] - target
     f_one = lambda x: float(f_arr(np.array([x]))[0])
-    return sorted(r for r, _ in _roots(f_arr, f_one, _grid(regime, th, n)))
+    return sorted(r for r, _ in _roots(f_arr, f_one, _grid(regime, th, n, _ac(th, gb, ar))))
 
 
 # --- zero load (8.1) ----------------------------------------------------------------------------

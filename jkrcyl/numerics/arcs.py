@@ -164,16 +164,17 @@ class Linear:
         k = self.sys.edge(u)
         return np.array([w * np.sum(u * self.sys.cos), w * np.sum(u), k[0], k[1] if k.size > 1 else 0.0])
 
-    def gap(self, phi, delta):
-        """h(phi)/Delta (5.9) at angles phi (meaningful outside the arcs); delta = delta/Delta."""
+    def gap(self, phi, delta, clearance=1.0):
+        """h(phi)/Delta (5.9) at angles phi (meaningful outside the arcs); delta = delta/Delta.
+        With clearance = 0 and delta = the approach [m]: h [m] of the neat fit (and so on, linearly)."""
         phi = np.atleast_1d(np.asarray(phi, dtype=float))
-        u = (self.u0 + delta * self.u1) * self.scale
-        return (1 - np.cos(phi)) - delta * np.cos(phi) + self.sys.operator(np.zeros_like(phi), phi) @ u
+        u = (clearance * self.u0 + delta * self.u1) * self.scale
+        return clearance * (1 - np.cos(phi)) - delta * np.cos(phi) + self.sys.operator(np.zeros_like(phi), phi) @ u
 
-    def pressure(self, phi, delta):
+    def pressure(self, phi, delta, clearance=1.0):
         """n(phi) inside the arcs (Chebyshev interpolant of u over sqrt(1 - s^2)), 0 outside."""
         phi = np.atleast_1d(np.asarray(phi, dtype=float))
-        u = self.u0 + delta * self.u1
+        u = clearance * self.u0 + delta * self.u1
         out = np.zeros_like(phi)
         n = self.sys.n
         for i, (c, e) in enumerate(self.sys.arcs):
@@ -201,18 +202,11 @@ def single_arc_state(a, R, Delta, w, beta, inv_theta, inv_G_I, alpha_star, n=Non
     h_pi [m] (5.9 at phi = pi).  All from their integral definitions (no closed form used).
     """
     a = np.atleast_1d(np.asarray(a, dtype=float))
-    theta = math.inf if inv_theta == 0 else 1.0 / inv_theta
-    gb, ar = inv_G_I / beta, alpha_star / beta
     A = beta / (2 * math.pi)
-    K_w = math.sqrt(4 * w / (math.pi * A))                 # Griffith (3.5)-(3.6): G = w, K >= 0 (tensile)
     keys = ("P", "B", "C", "c0", "c1", "r0", "K", "G_release", "delta", "h_pi")
     out = {k: np.empty(a.size) for k in keys}
     for i, ai in enumerate(a):
-        eps = 2 * math.atan(ai)
-        lin = Linear(eps, 0.0, theta, gb, n or nodes_for(eps, ar), ar)
-        f = 4 * math.pi * lin.scale / (R * beta)            # N = f (Delta n0 + delta n1)
-        k_N = K_w / math.sqrt(2 * math.pi * R)              # N ~ -k_N/sqrt(eps - |phi|), K = sqrt(2 pi R) k_N
-        delta = (k_N / f - Delta * lin.q0[2]) / lin.q1[2]
+        lin, f, delta = griffith_arc(ai, R, Delta, w, beta, inv_theta, inv_G_I, alpha_star, n)
         q = f * (Delta * lin.q0 + delta * lin.q1)
         u = Delta * lin.u0 + delta * lin.u1
         x_nodes = np.tan(lin.sys.offsets / 2)
@@ -229,7 +223,71 @@ def single_arc_state(a, R, Delta, w, beta, inv_theta, inv_G_I, alpha_star, n=Non
     return out
 
 
+def griffith_arc(a, R, Delta, w, beta, inv_theta, inv_G_I, alpha_star, n=None):
+    """(Linear, f, delta [m]) at Griffith equilibrium: N = f (Delta n(u0) + delta n(u1)) [Pa]."""
+    theta = math.inf if inv_theta == 0 else 1.0 / inv_theta
+    gb, ar = inv_G_I / beta, alpha_star / beta
+    eps = 2 * math.atan(a)
+    lin = Linear(eps, 0.0, theta, gb, n or nodes_for(eps, ar), ar)
+    f = 4 * math.pi * lin.scale / (R * beta)
+    K_w = math.sqrt(8 * w / beta)                          # (3.5)-(3.6): (pi/4) A K^2 = w, A = beta*/(2 pi)
+    k_N = K_w / math.sqrt(2 * math.pi * R)                 # N ~ -k_N/sqrt(eps - |phi|), K = sqrt(2 pi R) k_N
+    return lin, f, (k_N / f - Delta * lin.q0[2]) / lin.q1[2]
+
+
 def nodes_for(eps, ar=0.0):
     """Nodes per arc: enough for ~1e-12 at alpha* = 0 (more as the arc closes round the circle, eps -> pi)."""
     gap = max(math.pi - eps, 1e-12)
     return int(min(max(24, 20 + 15 * math.sqrt(eps / gap)), 400)) if ar == 0.0 else 64
+
+
+# --- normalised single-arc equilibria (jkrcyl.equilibria with alpha* != 0) ---------------------------------
+def _unit_q(a, theta, gb, ar, n):
+    """nu-normalised unit cases [P, B, k] (Delta-case, unit delta/Delta) and the Linear object at a."""
+    lin = Linear(2 * math.atan(a), 0.0, theta, gb, n or nodes_for(2 * math.atan(a), ar), ar)
+    return lin.scale * lin.q0[:3], lin.scale * lin.q1[:3], lin
+
+
+def star(a, m, theta, gb, ar, n=None, rel_step=1e-5):
+    """Equilibria in the normalisation of jkrcyl.equilibria at contact parameters a (any alpha*).
+
+    m = M vartheta (M_R* for vartheta = inf).  Returns arrays p = P beta*/(4 pi Delta) (P* vartheta),
+    dp = dp/da, dn = delta/Delta, ddn = d(delta/Delta)/da, gP = (1/w) dG/da|_P, gd = (1/w) dG/da|_delta
+    (nan when m = 0) and h = h(pi)/Delta.  Griffith: edge coefficient k = m/pi (nu ~ -k/sqrt(eps - |phi|)).
+    Slopes by central differences in a of the fixed-arc unit cases (smooth in a at fixed nodes).
+    """
+    a = np.atleast_1d(np.asarray(a, dtype=float))
+    kw = m / math.pi
+    keys = ("p", "dp", "dn", "ddn", "gP", "gd", "h")
+    out = {k: np.empty(a.size) for k in keys}
+    for i, ai in enumerate(a):
+        nn = n or nodes_for(2 * math.atan(ai), ar)
+        Q0, Q1, lin = _unit_q(ai, theta, gb, ar, nn)
+        hs = rel_step * ai
+        Qp0, Qp1, _ = _unit_q(ai + hs, theta, gb, ar, nn)
+        Qm0, Qm1, _ = _unit_q(ai - hs, theta, gb, ar, nn)
+        D0, D1 = (Qp0 - Qm0) / (2 * hs), (Qp1 - Qm1) / (2 * hs)
+        d = (kw - Q0[2]) / Q1[2]
+        dd = -(D0[2] + d * D1[2]) / Q1[2]
+        out["dn"][i], out["ddn"][i] = d, dd
+        out["p"][i] = Q0[0] + d * Q1[0]
+        out["dp"][i] = D0[0] + d * D1[0] + Q1[0] * dd
+        if m > 0:
+            out["gd"][i] = 2 * (D0[2] + d * D1[2]) / kw
+            out["gP"][i] = 2 * (D0[2] + d * D1[2] - Q1[2] * (D0[0] + d * D1[0]) / Q1[0]) / kw
+        else:
+            out["gd"][i] = out["gP"][i] = math.nan
+        out["h"][i] = lin.gap(math.pi, d)[0]
+    return out
+
+
+def a_crit(theta, gb, ar, n=None):
+    """Receding-contact (pole) parameter: the unit approach case has no edge singularity, k1(a) = 0 (4.4)."""
+    from scipy.optimize import brentq
+    if math.isinf(theta):
+        return math.inf
+    f = lambda a: _unit_q(a, theta, gb, ar, n)[1][2]
+    lo, hi = 1e-3, 1.0
+    while f(lo) * f(hi) > 0 and hi < 1e3:
+        hi *= 1.5
+    return brentq(f, lo, hi, xtol=1e-15, rtol=1e-15)
