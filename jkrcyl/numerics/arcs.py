@@ -24,6 +24,8 @@ import math
 import numpy as np
 from scipy.linalg import lu_factor, lu_solve
 
+from . import arcs_enrich as _en
+
 LOG2 = math.log(2.0)
 
 
@@ -101,8 +103,18 @@ class Arcs:
         self.D = _cheb_matrix(n)
         self.centres = np.repeat([c for c, _ in self.arcs], n)
         self.offsets = np.concatenate([e * self.s for _, e in self.arcs])
-        self.A = self.operator(self.centres, self.offsets)
         self.cos = np.cos(self.centres) * np.cos(self.offsets)    # exact for centres 0, pi
+        # alpha* != 0: unknowns u (n per arc) then c (N_ENRICH per arc); extra collocation points at the ends
+        self.m = _en.N_ENRICH if kernel.ar != 0.0 else 0
+        if self.m:
+            self.x_extra = np.cos(np.arange(self.m) * np.pi / (2 * n * self.m))
+            self.x_table = tuple(np.concatenate([self.s, self.x_extra]))
+            self.tab = _en.tables(n, self.x_table)
+            cen = np.repeat([c for c, _ in self.arcs], n + self.m)
+            off = np.concatenate([e * np.array(self.x_table) for _, e in self.arcs])
+            self.A = np.hstack([self.operator(cen, off), self.enrichment(cen, off, table=True)])
+        else:
+            self.A = self.operator(self.centres, self.offsets)
 
     def operator(self, centres, offsets):
         """Matrix: node values u -> -int nu K dpsi at the angles centre + offset (= gap - rigid part)."""
@@ -133,11 +145,68 @@ class Arcs:
             blocks.append(smooth * (math.pi / n) + block)
         return -np.hstack(blocks)
 
-    def edge(self, u):
+    def enrichment(self, centres, offsets, table=False):
+        """Matrix: enrichment coefficients c -> -int nu K dpsi at the angles (arcs_enrich).  table=True: the
+        points are the collocation points of each arc in order (same-arc rows use the exact tables)."""
+        kn, n, m = self.kernel, self.n, self.m
+        npt = n + m
+        blocks = []
+        for ia, (c, e) in enumerate(self.arcs):
+            Lam, Sig, mu = self.tab
+            omega = [self.D.T @ mu[j][:n] for j in range(m)]
+            same = centres == c
+            d = np.where(same, offsets, np.angle(np.exp(1j * (centres - c))) + offsets)
+            t = d[:, None] - e * self.s[None, :]
+            cos_t, sin_t = np.cos(t), np.sin(t)
+            rows = np.zeros(d.size, dtype=bool)
+            if table:
+                rows[ia * npt:(ia + 1) * npt] = True
+            tf, cf, sf = t[~rows], cos_t[~rows], sin_t[~rows]
+            full = cf * np.log(2 - 2 * cf) + kn.k1 * cf + kn.k0 + kn.ar * (math.pi * np.sign(tf) * sf - tf * sf)
+            tr, cr, sr = t[rows], cos_t[rows], sin_t[rows]
+            reg = cr * (2 * math.log(e) + _ell(tr)) + kn.k1 * cr + kn.k0 - kn.ar * tr * sr
+            block = np.empty((d.size, m))
+            gc, gs = _en.trig_coefficients(e)
+            K = gc.size
+            ce, se = np.cos(d[rows]), np.sin(d[rows])
+            for j in range(m):
+                block[~rows, j] = full @ omega[j]
+                if rows.any():
+                    lam, sig = Lam[j][:, :K], Sig[j][:, :K]
+                    block[rows, j] = (reg @ omega[j] + 2 * (ce * (lam @ gc) + se * (lam @ gs))
+                                      + kn.ar * math.pi * (se * (sig @ gc) - ce * (sig @ gs)))
+            blocks.append(block)
+        return -np.hstack(blocks)
+
+    def apply(self, centres, offsets, v):
+        """-int nu K dpsi at angles outside the arcs for the unknown vector v."""
+        out = self.operator(centres, offsets) @ v[:self.n * len(self.arcs)]
+        if self.m:
+            out = out + self.enrichment(centres, offsets) @ v[self.n * len(self.arcs):]
+        return out
+
+    def split(self, v):
+        """(node values u per arc, enrichment coefficients per arc) of an unknown vector."""
+        n, m, na = self.n, self.m, len(self.arcs)
+        return v[:n * na].reshape(na, n), v[n * na:].reshape(na, m)
+
+    def edge(self, v):
         """k at the ends of each arc: nu ~ -k/sqrt(e - |phi - c|) (k > 0: tensile)."""
-        n = self.n
-        return np.array([-np.sum(self.D @ u[i * n:(i + 1) * n]) / math.sqrt(2 * e)
+        U, C = self.split(v)
+        return np.array([-(np.sum(self.D @ U[i]) + C[i] @ _en.G_END[:self.m]) / math.sqrt(2 * e)
                          for i, (_, e) in enumerate(self.arcs)])
+
+    def moments(self, v, F):
+        """int u(s) F(c + e s) ds/sqrt(1 - s^2) summed over the arcs, F vectorised (smooth)."""
+        U, C = self.split(v)
+        out = 0.0
+        for i, (c, e) in enumerate(self.arcs):
+            f = F(c + e * self.s)
+            out += math.pi / self.n * np.sum(U[i] * f)
+            if self.m:
+                fhat = self.D @ f
+                out += sum(C[i, j] * (self.tab[2][j][:self.n] @ fhat) for j in range(self.m))
+        return out
 
 
 class Linear:
@@ -151,7 +220,9 @@ class Linear:
         self.scale = 1.0 if math.isinf(theta) else float(theta)
         self.sys = Arcs([(0.0, eps), (math.pi, eps_top)], Kernel(theta, gb, alpha_ratio), n)
         sy = self.sys
-        rhs = np.column_stack([-(1 - sy.cos), sy.cos])
+        cos_pts = sy.cos if not sy.m else np.concatenate(
+            [math.cos(c) * np.cos(e * np.array(sy.x_table)) for c, e in sy.arcs])
+        rhs = np.column_stack([-(1 - cos_pts), cos_pts])
         lu, piv = lu_factor(sy.A)
         U = lu_solve((lu, piv), rhs) / self.scale
         swaps = np.count_nonzero(piv != np.arange(piv.size))
@@ -160,16 +231,16 @@ class Linear:
         self.q0, self.q1 = self._q(self.u0), self._q(self.u1)
 
     def _q(self, u):
-        w = math.pi / self.sys.n
-        k = self.sys.edge(u)
-        return np.array([w * np.sum(u * self.sys.cos), w * np.sum(u), k[0], k[1] if k.size > 1 else 0.0])
+        sy = self.sys
+        k = sy.edge(u)
+        return np.array([sy.moments(u, np.cos), sy.moments(u, np.ones_like), k[0], k[1] if k.size > 1 else 0.0])
 
     def gap(self, phi, delta, clearance=1.0):
         """h(phi)/Delta (5.9) at angles phi (meaningful outside the arcs); delta = delta/Delta.
         With clearance = 0 and delta = the approach [m]: h [m] of the neat fit (and so on, linearly)."""
         phi = np.atleast_1d(np.asarray(phi, dtype=float))
         u = (clearance * self.u0 + delta * self.u1) * self.scale
-        return clearance * (1 - np.cos(phi)) - delta * np.cos(phi) + self.sys.operator(np.zeros_like(phi), phi) @ u
+        return clearance * (1 - np.cos(phi)) - delta * np.cos(phi) + self.sys.apply(np.zeros_like(phi), phi, u)
 
     def pressure(self, phi, delta, clearance=1.0):
         """n(phi) inside the arcs (Chebyshev interpolant of u over sqrt(1 - s^2)), 0 outside."""
@@ -177,12 +248,16 @@ class Linear:
         u = clearance * self.u0 + delta * self.u1
         out = np.zeros_like(phi)
         n = self.sys.n
+        U, C = self.sys.split(u)
         for i, (c, e) in enumerate(self.sys.arcs):
             x = np.angle(np.exp(1j * (phi - c))) / e
             inside = np.abs(x) < 1
-            coef = self.sys.D @ u[i * n:(i + 1) * n]
+            coef = self.sys.D @ U[i]
             T = np.cos(np.outer(np.arccos(x[inside]), np.arange(n)))
-            out[inside] = (T @ coef) / (e * np.sqrt(1 - x[inside] ** 2))
+            val = T @ coef
+            if self.sys.m:
+                val = val + C[i] @ _en._g(x[inside])[:self.sys.m]
+            out[inside] = val / (e * np.sqrt(1 - x[inside] ** 2))
         return out
 
 
@@ -209,8 +284,7 @@ def single_arc_state(a, R, Delta, w, beta, inv_theta, inv_G_I, alpha_star, n=Non
         lin, f, delta = griffith_arc(ai, R, Delta, w, beta, inv_theta, inv_G_I, alpha_star, n)
         q = f * (Delta * lin.q0 + delta * lin.q1)
         u = Delta * lin.u0 + delta * lin.u1
-        x_nodes = np.tan(lin.sys.offsets / 2)
-        C = f * math.pi / lin.sys.n * np.sum(u * (1 + x_nodes ** 2) / 2)   # dx = (1 + x^2)/2 dphi
+        C = f * lin.sys.moments(u, lambda p: (1 + np.tan(p / 2) ** 2) / 2)   # dx = (1 + x^2)/2 dphi
         P, B = R * q[0], q[1]
         out["P"][i], out["B"][i], out["C"][i] = P, B, C
         out["c0"][i] = -Delta - R * beta * inv_theta * B / (8 * math.pi)  # (kappa + 1)/G = beta*/vartheta
@@ -219,7 +293,7 @@ def single_arc_state(a, R, Delta, w, beta, inv_theta, inv_G_I, alpha_star, n=Non
         out["K"][i] = math.sqrt(2 * math.pi * R) * q[2]
         out["G_release"][i] = math.pi / 4 * A * out["K"][i] ** 2
         out["delta"][i] = delta
-        out["h_pi"][i] = 2 * Delta + delta + lin.scale * (lin.sys.operator(np.zeros(1), np.array([math.pi])) @ u)[0]
+        out["h_pi"][i] = 2 * Delta + delta + lin.scale * lin.sys.apply(np.zeros(1), np.array([math.pi]), u)[0]
     return out
 
 
@@ -238,7 +312,7 @@ def griffith_arc(a, R, Delta, w, beta, inv_theta, inv_G_I, alpha_star, n=None):
 def nodes_for(eps, ar=0.0):
     """Nodes per arc: enough for ~1e-12 at alpha* = 0 (more as the arc closes round the circle, eps -> pi)."""
     gap = max(math.pi - eps, 1e-12)
-    return int(min(max(24, 20 + 15 * math.sqrt(eps / gap)), 400)) if ar == 0.0 else 64
+    return int(min(max(24 if ar == 0.0 else 32, 20 + 15 * math.sqrt(eps / gap)), 400))
 
 
 # --- normalised single-arc equilibria (jkrcyl.equilibria with alpha* != 0) ---------------------------------
