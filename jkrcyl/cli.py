@@ -65,6 +65,7 @@ def _resolve(args):
         if args.Delta == 0:
             raise ValueError("Delta must be > 0 here (M and P* divide by Delta; neat fit: see jkrcyl.special)")
         c = Contact(R=args.R, Delta=args.Delta, w=args.w, materials=mat)
+        args.alpha_ratio = mat.alpha_ratio        # alpha* != 0: curve/adherence use the numerical solver
         return eq.from_contact(c)
     if args.M is None:
         raise ValueError("M is required (--M, or the physical inputs --E --nu --E-I --nu-I --R --Delta --w)")
@@ -77,7 +78,7 @@ def _cmd_curve(args):
     n = args.n
     if n < 2:
         raise ValueError(f"n must be >= 2, got {n}")
-    cv = eq.curve(M, th, regime=args.regime, n=n, gb=gb)
+    cv = eq.curve(M, th, regime=args.regime, n=n, gb=gb, alpha_ratio=getattr(args, "alpha_ratio", 0.0))
     table = cv.table()
     out = open(args.output, "w") if args.output else sys.stdout
     try:
@@ -134,8 +135,9 @@ def _point_dict(p):
 
 def _cmd_adherence(args):
     M, th, gb = _resolve(args)
-    load = eq.adherence(M, th, "load", gb=gb)
-    grip = eq.adherence(M, th, "grip", gb=gb)
+    ar = getattr(args, "alpha_ratio", 0.0)
+    load = eq.adherence(M, th, "load", gb=gb, alpha_ratio=ar)
+    grip = eq.adherence(M, th, "grip", gb=gb, alpha_ratio=ar)
     a0 = eq.zero_load_contact(M, th)
     Mmax = eq.zero_load_max_M(th)[0]
     confined = None
@@ -148,7 +150,8 @@ def _cmd_adherence(args):
                    "zero_load_M_max": None if math.isinf(Mmax) else Mmax}, sys.stdout)
         sys.stdout.write("\n")
         return 0
-    print(f"M = {M:.17g}, theta = {th:g}, gb = {gb:.17g}")
+    print(f"M = {M:.17g}, theta = {th:g}, gb = {gb:.17g}" + (f", alpha*/beta* = {ar:.6g} (numerical solver)"
+                                                              if ar else ""))
     print("fixed-load adherence (minimum of P* per branch):")
     for p in load or []:
         print(f"  {p.regime:14s} a = {p.a:.17g}  eps = {p.eps:.12g}  P* = {p.P_star:.17g}  "

@@ -209,12 +209,18 @@ def _bisect(f, lo, hi):
     return lo if abs(flo) <= abs(f(hi)) else hi
 
 
-def _roots(f_arr, f_one, a_grid):
+def _brent(f, lo, hi):
+    """Root by Brent's method to 1e-14 relative (alpha* != 0: each f is a collocation solve, smooth in a)."""
+    from scipy.optimize import brentq
+    return brentq(f, lo, hi, xtol=1e-300, rtol=1e-14)
+
+
+def _roots(f_arr, f_one, a_grid, refine=_bisect):
     """Sign changes of f on the grid refined by bisection: list of (a, sign of f right of the root)."""
     v = f_arr(a_grid)
     out = []
     for i in np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0]:
-        r = _bisect(f_one, float(a_grid[i]), float(a_grid[i + 1]))
+        r = refine(f_one, float(a_grid[i]), float(a_grid[i + 1]))
         out.append((r, 1 if v[i + 1] > 0 else -1))
     return out
 
@@ -236,7 +242,7 @@ def stationary_points(M, theta, control="load", regime="sub-critical", gb=None, 
     f_arr = lambda x: _star(x, m, inv_t, gb, ar)[key]
     f_one = lambda x: float(_star(np.array([x]), m, inv_t, gb, ar)[key][0])
     out = []
-    for r, sgn in _roots(f_arr, f_one, _grid(regime, th, n, ac)):
+    for r, sgn in _roots(f_arr, f_one, _grid(regime, th, n, ac), _brent if ar else _bisect):
         st = _star(np.array([r]), m, inv_t, gb, ar)
         out.append(Point(control=control, regime=regime, kind="min" if sgn > 0 else "max", M=M, theta=th,
                          a=r, eps=2 * math.atan(r), eps_star=float(_eps_star(r, th, ac)),
@@ -276,7 +282,7 @@ def solve_load(M, theta, P_star, regime="sub-critical", gb=None, n=ROOT_GRID, al
     f_arr = lambda x: _star(x, m, inv_t, gb, ar)["p"] / scale - target
     f_one = lambda x: float(f_arr(np.array([x]))[0])
     grid = _grid(regime, th, n, _ac(th, gb, ar))
-    return sorted(r for r, _ in _roots(f_arr, f_one, grid))
+    return sorted(r for r, _ in _roots(f_arr, f_one, grid, _brent if ar else _bisect))
 
 
 def solve_approach(M, theta, delta_over_Delta, regime="sub-critical", gb=None, n=ROOT_GRID, alpha_ratio=0.0):
@@ -289,7 +295,8 @@ def solve_approach(M, theta, delta_over_Delta, regime="sub-critical", gb=None, n
     target = finite_scalar("delta_over_Delta", delta_over_Delta)
     f_arr = lambda x: _star(x, m, inv_t, gb, ar)["dn"] - target
     f_one = lambda x: float(f_arr(np.array([x]))[0])
-    return sorted(r for r, _ in _roots(f_arr, f_one, _grid(regime, th, n, _ac(th, gb, ar))))
+    return sorted(r for r, _ in _roots(f_arr, f_one, _grid(regime, th, n, _ac(th, gb, ar)),
+                                       _brent if ar else _bisect))
 
 
 # --- zero load (8.1) ----------------------------------------------------------------------------

@@ -19,6 +19,7 @@ spectral; for alpha* != 0 u carries (1 - s) log(1 - s) end terms (the kink of si
 sign(x - s) moments are exact, so the remaining error is the Chebyshev interpolation of u, algebraic in n
 (see benchmarks/bench_solver.py for the measured table).
 """
+import functools
 import math
 
 import numpy as np
@@ -29,10 +30,12 @@ from . import arcs_enrich as _en
 LOG2 = math.log(2.0)
 
 
+@functools.lru_cache(maxsize=None)
 def _nodes(n):
     return np.cos((2 * np.arange(1, n + 1) - 1) * np.pi / (2 * n))
 
 
+@functools.lru_cache(maxsize=None)
 def _cheb_matrix(n):
     """D with c = D @ u: Chebyshev coefficients of the interpolant through the Gauss nodes."""
     s = _nodes(n)
@@ -72,10 +75,7 @@ def _sign_moments(x, n):
 
 def _ell(t):
     """log((2 sin(t/2)/t)^2), analytic for |t| < 2 pi (series near 0)."""
-    t = np.asarray(t, dtype=float)
-    small = np.abs(t) < 1e-3
-    ts = np.where(small, 1.0, t)
-    return np.where(small, -t * t / 12 - t ** 4 / 1440, 2 * np.log(np.abs(2 * np.sin(ts / 2) / ts)))
+    return 2 * np.log(np.abs(np.sinc(np.asarray(t) / (2 * math.pi))))     # sinc(x) = sin(pi x)/(pi x)
 
 
 def _ell3(t):
@@ -223,8 +223,8 @@ class Linear:
         cos_pts = sy.cos if not sy.m else np.concatenate(
             [math.cos(c) * np.cos(e * np.array(sy.x_table)) for c, e in sy.arcs])
         rhs = np.column_stack([-(1 - cos_pts), cos_pts])
-        lu, piv = lu_factor(sy.A)
-        U = lu_solve((lu, piv), rhs) / self.scale
+        lu, piv = lu_factor(sy.A, check_finite=False)
+        U = lu_solve((lu, piv), rhs, check_finite=False) / self.scale
         swaps = np.count_nonzero(piv != np.arange(piv.size))
         self.sign_det = float((-1) ** swaps * np.prod(np.sign(np.diag(lu))))
         self.u0, self.u1 = U[:, 0], U[:, 1]
@@ -312,7 +312,8 @@ def griffith_arc(a, R, Delta, w, beta, inv_theta, inv_G_I, alpha_star, n=None):
 def nodes_for(eps, ar=0.0):
     """Nodes per arc: enough for ~1e-12 at alpha* = 0 (more as the arc closes round the circle, eps -> pi)."""
     gap = max(math.pi - eps, 1e-12)
-    return int(min(max(24 if ar == 0.0 else 32, 20 + 15 * math.sqrt(eps / gap)), 400))
+    n = min(max(24 if ar == 0.0 else 32, 20 + 15 * math.sqrt(eps / gap)), 400)
+    return int(n) if ar == 0.0 else int(min(16 * math.ceil(n / 16), 256))   # few distinct n: cached tables
 
 
 # --- normalised single-arc equilibria (jkrcyl.equilibria with alpha* != 0) ---------------------------------

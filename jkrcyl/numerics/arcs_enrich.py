@@ -70,13 +70,12 @@ def tables(n, x_key):
     LM[:, 1:] = -math.pi * np.cos(np.outer(th, m)) / m
     SM[:, 1:] = -2 * np.sin(np.outer(th, m)) / m
     C = _coefficients()
-    K = max(K_TRIG, n)
     Lam, Sig, mu = [], [], []
     for j in range(N_ENRICH):
-        P = np.array([_times_T(C[j], k) for k in range(K)])       # K x M
+        P = np.array([_times_T(C[j], k) for k in range(K_TRIG)])       # K x M
         Lam.append(LM @ P.T)
         Sig.append(SM @ P.T)
-        mu.append(np.where(np.arange(K) == 0, math.pi, math.pi / 2) * C[j][:K])
+        mu.append(np.where(np.arange(n) == 0, math.pi, math.pi / 2) * C[j][:n])
     return Lam, Sig, mu
 
 
