@@ -78,6 +78,13 @@ def _ell(t):
     return 2 * np.log(np.abs(np.sinc(np.asarray(t) / (2 * math.pi))))     # sinc(x) = sin(pi x)/(pi x)
 
 
+@functools.lru_cache(maxsize=None)
+def _fine_grid(n_fine=4096):
+    """Gauss-Chebyshev nodes and the enrichment functions on them (gap evaluation off the tables)."""
+    s = _nodes(n_fine)
+    return s, _en._g(s)
+
+
 def _ell3(t):
     """log(4 sin^2(t/2)/(t^2 (t - 2 pi)^2 (t + 2 pi)^2)), analytic for |t| < 4 pi."""
     t = np.asarray(t, dtype=float)
@@ -169,8 +176,19 @@ class Arcs:
             gc, gs = _en.trig_coefficients(e)
             K = gc.size
             ce, se = np.cos(d[rows]), np.sin(d[rows])
+            if not table and (~rows).any():
+                # points off the tables (gap evaluation): the kernel is nearly singular just outside the
+                # arc, so integrate g_j w on a fine Gauss-Chebyshev grid instead of the n-node weights
+                sf, gf = _fine_grid()
+                tf = d[~rows, None] - e * sf[None, :]
+                cf, sf_ = np.cos(tf), np.sin(tf)
+                full = (cf * np.log(2 - 2 * cf) + kn.k1 * cf + kn.k0
+                        + kn.ar * (math.pi * np.sign(tf) * sf_ - tf * sf_)) * (math.pi / sf.size)
+                block[~rows] = full @ gf[:m].T
+                omega = None
             for j in range(m):
-                block[~rows, j] = full @ omega[j]
+                if omega is not None:
+                    block[~rows, j] = full @ omega[j]
                 if rows.any():
                     lam, sig = Lam[j][:, :K], Sig[j][:, :K]
                     block[rows, j] = (reg @ omega[j] + 2 * (ce * (lam @ gc) + se * (lam @ gs))
