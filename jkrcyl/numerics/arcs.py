@@ -28,6 +28,7 @@ from scipy.linalg import lu_factor, lu_solve
 from . import arcs_enrich as _en
 
 LOG2 = math.log(2.0)
+NEAR_ARC = 1.6     # gap points closer than this (in half-widths from the centre) use the fine grid
 
 
 @functools.lru_cache(maxsize=None)
@@ -176,19 +177,20 @@ class Arcs:
             gc, gs = _en.trig_coefficients(e)
             K = gc.size
             ce, se = np.cos(d[rows]), np.sin(d[rows])
-            if not table and (~rows).any():
-                # points off the tables (gap evaluation): the kernel is nearly singular just outside the
-                # arc, so integrate g_j w on a fine Gauss-Chebyshev grid instead of the n-node weights
+            near = ~rows & (np.abs(d / e) < NEAR_ARC) & (not table)
+            if near.any():
+                # gap points just outside the arc: the kernel is nearly singular there, so integrate g_j w
+                # on a fine Gauss-Chebyshev grid instead of the n-node weights (Chebyshev rate NEAR_ARC^-n)
                 sf, gf = _fine_grid()
-                tf = d[~rows, None] - e * sf[None, :]
+                tf = d[near, None] - e * sf[None, :]
                 cf, sf_ = np.cos(tf), np.sin(tf)
-                full = (cf * np.log(2 - 2 * cf) + kn.k1 * cf + kn.k0
-                        + kn.ar * (math.pi * np.sign(tf) * sf_ - tf * sf_)) * (math.pi / sf.size)
-                block[~rows] = full @ gf[:m].T
-                omega = None
+                kf = (cf * np.log(2 - 2 * cf) + kn.k1 * cf + kn.k0
+                      + kn.ar * (math.pi * np.sign(tf) * sf_ - tf * sf_)) * (math.pi / sf.size)
+                block[near] = kf @ gf[:m].T
+            far = ~rows & ~near
+            full = full[far[~rows]]
             for j in range(m):
-                if omega is not None:
-                    block[~rows, j] = full @ omega[j]
+                block[far, j] = full @ omega[j]
                 if rows.any():
                     lam, sig = Lam[j][:, :K], Sig[j][:, :K]
                     block[rows, j] = (reg @ omega[j] + 2 * (ce * (lam @ gc) + se * (lam @ gs))
@@ -328,10 +330,10 @@ def griffith_arc(a, R, Delta, w, beta, inv_theta, inv_G_I, alpha_star, n=None):
 
 
 def nodes_for(eps, ar=0.0):
-    """Nodes per arc: enough for ~1e-12 at alpha* = 0 (more as the arc closes round the circle, eps -> pi)."""
+    """Nodes per arc: ~1e-12 at alpha* = 0, ~1e-11 otherwise (more as the arc closes round the circle)."""
     gap = max(math.pi - eps, 1e-12)
-    n = min(max(24 if ar == 0.0 else 32, 20 + 15 * math.sqrt(eps / gap)), 400)
-    return int(n) if ar == 0.0 else int(min(16 * math.ceil(n / 16), 256))   # few distinct n: cached tables
+    n = min(max(24, 20 + 15 * math.sqrt(eps / gap)), 400)
+    return int(n) if ar == 0.0 else int(min(8 * math.ceil(n / 8), 256))   # few distinct n: cached tables
 
 
 # --- normalised single-arc equilibria (jkrcyl.equilibria with alpha* != 0) ---------------------------------
