@@ -138,10 +138,14 @@ def _cmd_adherence(args):
     ar = getattr(args, "alpha_ratio", 0.0)
     load = eq.adherence(M, th, "load", gb=gb, alpha_ratio=ar)
     grip = eq.adherence(M, th, "grip", gb=gb, alpha_ratio=ar)
-    a0 = eq.zero_load_contact(M, th)
-    Mmax = eq.zero_load_max_M(th)[0]
+    if ar:   # (8.1) and the two-patch tracer are alpha* = 0 results: zero load from the solver, no confined part
+        a0 = eq.solve_load(M, th, 0.0, gb=gb, alpha_ratio=ar)
+        Mmax = math.inf
+    else:
+        a0 = eq.zero_load_contact(M, th)
+        Mmax = eq.zero_load_max_M(th)[0]
     confined = None
-    if not math.isinf(th) and M > 0:
+    if not math.isinf(th) and M > 0 and not ar:
         from . import twopatch
         confined = _confined_dict(twopatch.confined_events(M, th, gb=gb))
     if args.format == "json":

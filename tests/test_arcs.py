@@ -216,3 +216,10 @@ def test_cli_physical_inputs_use_the_solver(capsys):
 def test_alpha_ratio_range_is_validated():
     with pytest.raises(ValueError, match="alpha_ratio"):
         eq.curve(0.3, 1.0, alpha_ratio=1.5)
+
+
+def test_two_patch_refuses_alpha_nonzero_instead_of_answering_for_alpha_zero():
+    c = pair("steel pin in aluminium", Delta=1e-5, w=0.5)
+    for call in (c.two_patch, c.confined_events):
+        with pytest.raises(ValueError, match="alpha\\*"):
+            call()
