@@ -223,3 +223,11 @@ def test_two_patch_refuses_alpha_nonzero_instead_of_answering_for_alpha_zero():
     for call in (c.two_patch, c.confined_events):
         with pytest.raises(ValueError, match="alpha\\*"):
             call()
+
+
+def test_curve_slopes_along_a_long_grid_match_closed_form():
+    """star() on a 2000-point grid takes slopes from differences in log a (no extra solves): 1e-5 there."""
+    a = eq._grid("sub-critical", 1.0, 2000)
+    ref, num = eq._star(a, 0.4, 1.0, 0.5), arcs.star(a, 0.4, 1.0, 0.5, 0.0)
+    for k, tol in dict(p=1e-10, dn=1e-10, h=1e-10, dp=1e-5, ddn=1e-5, gP=1e-5, gd=1e-5).items():
+        assert np.max(np.abs(num[k] - ref[k]) / np.abs(ref[k])) < tol, k
