@@ -230,4 +230,5 @@ def test_curve_slopes_along_a_long_grid_match_closed_form():
     a = eq._grid("sub-critical", 1.0, 2000)
     ref, num = eq._star(a, 0.4, 1.0, 0.5), arcs.star(a, 0.4, 1.0, 0.5, 0.0)
     for k, tol in dict(p=1e-10, dn=1e-10, h=1e-10, dp=1e-5, ddn=1e-5, gP=1e-5, gd=1e-5).items():
-        assert np.max(np.abs(num[k] - ref[k]) / np.abs(ref[k])) < tol, k
+        scale = np.abs(ref[k]) + np.median(np.abs(ref[k]))      # slopes cross zero (stationary points)
+        assert np.max(np.abs(num[k] - ref[k]) / scale) < tol, k
