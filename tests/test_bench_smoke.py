@@ -17,3 +17,11 @@ def test_bench_state_smoke():
     # every contender agrees with the kernels (a broken contender would make the timing meaningless)
     errors = [float(line.rsplit("=", 1)[1]) for line in out.splitlines() if line.startswith("max |")]
     assert errors and max(errors) < 1e-10, out
+
+
+def test_bench_solver_smoke():
+    run = subprocess.run([sys.executable, str(ROOT / "benchmarks" / "bench_solver.py"), "--curve", "300",
+                          "--states", "3"], cwd=ROOT, capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stdout + run.stderr
+    for row in ("time per state", "ratio", "point curve", "error vs nodes", "goals:"):
+        assert row in run.stdout, f"missing {row!r} in\n{run.stdout}"
