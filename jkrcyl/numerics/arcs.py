@@ -23,7 +23,7 @@ import functools
 import math
 
 import numpy as np
-from scipy.linalg import lu_factor, lu_solve
+from scipy.linalg.lapack import dgesv as _dgesv
 
 from . import arcs_enrich as _en
 
@@ -243,9 +243,9 @@ class Linear:
         cos_pts = sy.cos if not sy.m else np.concatenate(
             [math.cos(c) * np.cos(e * np.array(sy.x_table)) for c, e in sy.arcs])
         rhs = np.column_stack([-(1 - cos_pts), cos_pts])
-        lu, piv = lu_factor(sy.A, check_finite=False)
-        U = lu_solve((lu, piv), rhs, check_finite=False) / self.scale
-        swaps = np.count_nonzero(piv != np.arange(piv.size))
+        lu, piv, U, info = _dgesv(sy.A, rhs)           # one LAPACK call: LU (for sign_det) and the solve
+        U = U / self.scale
+        swaps = np.count_nonzero(piv != np.arange(1, piv.size + 1))   # LAPACK pivots are 1-based
         self.sign_det = float((-1) ** swaps * np.prod(np.sign(np.diag(lu))))
         self.u0, self.u1 = U[:, 0], U[:, 1]
         self.q0, self.q1 = self._q(self.u0), self._q(self.u1)
