@@ -204,7 +204,8 @@ def _cmd_figures(args):
             raise ValueError(f"only: unknown figure {bad[0]!r} (choose from {', '.join(figures.FIGURES)})")
     if args.n is not None and args.n < 4:
         raise ValueError(f"n must be >= 4, got {args.n}")
-    written = figures.draw_all(args.out, n=args.n, only=only, progress=None if args.quiet else bar)
+    written = figures.draw_all(args.out, n=args.n, only=only, progress=None if args.quiet else bar,
+                               alpha_ratio=args.alpha_ratio)
     print(f"wrote {len(written)} files to {args.out}")
     return 0
 
@@ -244,6 +245,8 @@ def build_parser():
     f.add_argument("--n", type=int, default=None, help="points per curve (default: per figure, 400-600)")
     f.add_argument("--only", default=None, help="comma-separated subset, e.g. fig02,fig11")
     f.add_argument("--quiet", action="store_true", help="no progress bar")
+    f.add_argument("--alpha-ratio", type=float, default=0.0,
+                   help="alpha*/beta* (default 0: the paper's closed forms; otherwise the solver, no Fig. 8)")
     f.set_defaults(func=_cmd_figures)
     c = sub.add_parser("curve", help="one equilibrium branch as CSV or JSON",
                        description="Equilibrium branch: columns " + ", ".join(eq.Curve.COLUMNS) +

@@ -458,6 +458,7 @@ class FigureSpec:
     number: int
     builder: Callable
     params: dict = field(default_factory=dict)
+    any_alpha: bool = True      # False: the figure exists only at alpha* = 0 (Fig. 8, the neat fit)
 
     @property
     def name(self):
@@ -474,7 +475,7 @@ _REGISTRY = [
     FigureSpec(5, fig05, dict(theta=1.0, gb=FIGURE_GB[1.0], regime="super-critical", M=M_VALUES)),
     FigureSpec(6, fig06, dict(theta=0.5, gb=FIGURE_GB[0.5], regime="sub-critical", M=M_VALUES)),
     FigureSpec(7, fig07, dict(theta=math.inf, gb=FIGURE_GB[math.inf], regime="sub-critical", M=M_VALUES)),
-    FigureSpec(8, fig08, dict(theta=(0.5, 1.0), Delta=0.0)),
+    FigureSpec(8, fig08, dict(theta=(0.5, 1.0), Delta=0.0), any_alpha=False),
     FigureSpec(9, fig09, dict(theta=1.0, gb=FIGURE_GB[1.0], M=(0.0, 0.1, 0.3, 0.4, 0.6, 1.0))),
     FigureSpec(10, fig10, dict(theta=(0.5, 1.0), control="load")),
     FigureSpec(11, fig11, dict(theta=1.0, gb=eq.default_gb(1.0), M=((0.3, 0.5), (0.3, 0.5, 0.8)))),
@@ -491,11 +492,15 @@ def write_csv(path, rows):
 
 
 def draw_all(out, n=None, only=None, progress=None, alpha_ratio=0.0):
-    """Write figNN.png, figNN.pdf, figNN.csv into ``out``; returns the list of paths written."""
+    """Write figNN.png, figNN.pdf, figNN.csv into ``out``; returns the list of paths written.
+
+    alpha_ratio = alpha*/beta* != 0 draws the figures that exist for any alpha* (not Fig. 8) with the
+    numerical solver.
+    """
     plt = _mpl()
     out = pathlib.Path(out)
     out.mkdir(parents=True, exist_ok=True)
-    names = [k for k in FIGURES if only is None or k in only]
+    names = [k for k in FIGURES if (only is None or k in only) and (alpha_ratio == 0 or FIGURES[k].any_alpha)]
     written = []
     for i, name in enumerate(names):
         if progress:
