@@ -208,8 +208,16 @@ def test_fig08_stability_rule_agrees_with_library_release_rate():
 
 
 def test_fig07_says_which_approach_it_draws(built):
-    text = "\n".join(_texts(built["fig07"][0]))
+    """The note is true of the plotted data: at M_R* = 0 the paper's delta falls while P_R* rises
+    (issue 10 item 4: delta/Delta = +0.197 at P_R* = 0.3, -3.2 at P_R* = 8)."""
+    fig, rows = built["fig07"]
+    text = "\n".join(_texts(fig))
     assert "work conjugate" in text and "(5.8)" in text
+    pts = [(float(r[3]), float(r[5])) for r in rows if r[0] == "c" and r[1] == "M = 0"]
+    delta, P = np.array(pts).T
+    rising = np.diff(P) > 0
+    assert np.any(rising & (np.diff(delta) < 0))
+    assert np.interp(8.0, P, delta) < -3.0 < 0.19 < np.interp(0.3, P, delta)
 
 
 def test_figures_module_computes_through_the_library():
