@@ -256,3 +256,15 @@ def test_fig02_with_alpha_star_nonzero():
     finally:
         plt.close(fig)
         plt.close(fig0)
+
+
+@pytest.mark.parametrize("name", ["fig04", "fig12"])
+def test_pressure_legends_tell_components_apart(built, name):
+    """bounded / unbounded / total: three line styles in every panel's legend (greyscale-proof)."""
+    fig, _ = built[name]
+    for ax in fig.axes:
+        leg = ax.get_legend()
+        handles = leg.legend_handles if hasattr(leg, "legend_handles") else leg.legendHandles
+        labels = [t.get_text() for t in leg.get_texts()]
+        assert labels == ["bounded", "unbounded", "total"]
+        assert len({h.get_linestyle() for h in handles}) == 3
