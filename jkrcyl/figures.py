@@ -251,6 +251,7 @@ def _pressure_panels(cases, regime, title, n, alpha_ratio=0.0):
         roots = eq.solve_load(M, 1.0, P_target, regime, gb=gb, alpha_ratio=alpha_ratio)
         if not roots:
             ax.set_title(f"{tag} $M = {M:g}$, $P^* = {P_target:g}$: no equilibrium")
+            ax.axis("off")
             continue
         a = roots[-1] if regime == "sub-critical" else roots[0]
         eps = 2 * math.atan(a)
