@@ -4,9 +4,8 @@ Bottom arc |phi| < eps (a = tan(eps/2)), top arc |phi - pi| < eps_top (a_top = t
 the pin and the hole touch, so the relative radial displacement is the rigid one (5.1),
 ``v_r - u_r = delta cos(phi) - Delta (1 - cos(phi))`` -- the same formula on both arcs, with one approach delta.
 Normalised as in section 6 (n = N R beta*/(4 pi Delta vartheta), so P* = int n cos(phi) dphi, B* = int n dphi),
-everything is linear in delta for fixed arcs: the engine (jkrcyl.numerics.arcs when it offers two_patch_linear,
-else the alpha* = 0 engine jkrcyl.numerics.arcs_log) returns, for each arc end, the edge coefficient k of
-n ~ -k/sqrt(distance to the end in rad), as k = k0 + (delta/Delta) k1.
+everything is linear in delta for fixed arcs: the engine jkrcyl.numerics.arcs.two_patch_linear returns, for
+each arc end, the edge coefficient k of n ~ -k/sqrt(distance to the end in rad), as k = k0 + (delta/Delta) k1.
 
 Griffith (3.5)-(3.6) at an end reads G/w = (pi k/M)^2 = 1, i.e. k = M/pi at both ends (checked against the
 closed form (4.4)).  Eliminating delta leaves ONE scalar equation in the half-angles,
@@ -44,6 +43,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._validate import finite_scalar, theta as _check_theta
+from .numerics import arcs as _arcs
 from .numerics import continuation as _cont
 
 N_NODES = 24            # collocation nodes per arc (spectral: 1e-12 at moderate arcs, see tests)
@@ -56,27 +56,12 @@ NODES_PER_GAP = 8       # near-touching arcs: the density varies on the scale of
 GAP_SAMPLES = 128       # exterior angles per state for the gap check h >= 0 (Chebyshev points of the
                         # open gap, clustered at the arc ends where h ~ distance^(3/2) is smallest)
 
-_ENGINE = None
-
-
-def _engine():
-    """The numerical engine for contact arcs, via this adapter only: jkrcyl.numerics.arcs when it provides
-    ``two_patch_linear`` (the any-alpha* engine), else the alpha* = 0 log-kernel engine numerics.arcs_log."""
-    global _ENGINE
-    if _ENGINE is None:
-        try:
-            from .numerics.arcs import two_patch_linear as engine
-        except ImportError:
-            from .numerics.arcs_log import two_patch_linear as engine
-        _ENGINE = engine
-    return _ENGINE
-
 
 def _linear(eps, eps_top, theta, gb, n):
     """Affine pieces at fixed arcs: q0, q1 = [P*, B*, k_bot, k_top] for (Delta-case, unit delta/Delta)."""
     g = math.pi - eps - eps_top
     n = max(n, int(NODES_PER_GAP * math.sqrt(max(eps, eps_top) / g))) if g > 0 else n
-    return _engine()(eps, eps_top, theta, gb, n)
+    return _arcs.two_patch_linear(eps, eps_top, theta, gb, n)
 
 
 # --- residual, one equilibrium -----------------------------------------------------------------------
