@@ -273,6 +273,8 @@ def build_parser():
     tw.add_argument("--n", type=int, default=None, help="points per branch (default: continuation steps)")
     tw.add_argument("--format", choices=("csv", "json"), default="csv", help="output format (default csv)")
     tw.set_defaults(func=_cmd_two_patch)
+    from . import cli_forward
+    cli_forward.register(sub, _float)
     t = sub.add_parser("atlas", help="regime atlas over (M, vartheta): npz, CSV and a regime map",
                        description="Classify every (M, vartheta) pair of a grid: sub-critical and super-critical "
                                    "fixed-load detachment (feasible or not), overclosure before detachment, "

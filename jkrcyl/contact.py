@@ -139,6 +139,12 @@ class Contact:
         M, th, gb = equilibria.from_contact(self)
         return twopatch.confined_events(M, th, gb=gb)
 
+    # --- forward problems (jkrcyl.forward, jkrcyl.cycle) -------------------------------------------------
+    def solve(self, P=None, delta=None, branches=None):
+        """Every equilibrium at load P [N/m] or approach delta [m] (exactly one): :func:`jkrcyl.forward.solve`."""
+        from .forward import solve
+        return solve(self, P=P, delta=delta, branches=branches)
+
     def pressure(self, a, phi):
         """Pressure N(phi) of (5.4) [Pa] at one contact parameter a: (bounded, unbounded); 0 outside."""
         if np.ndim(a) != 0:

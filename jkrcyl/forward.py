@@ -1,0 +1,415 @@
+"""Forward problems: every equilibrium at a given load P [N/m] or approach delta [m] (issue 11).
+
+A :class:`jkrcyl.Contact` answers ``solve(P=...)`` or ``solve(delta=...)`` with a list of
+:class:`Equilibrium` -- one per state on every branch, sorted by contact size.  The branches are an
+explicit registry, :data:`BRANCH_SOLVERS`, each entry a function ``(problem, key, target) -> [Equilibrium]``:
+
+* ``sub-critical``, ``super-critical``: the single bottom patch of sections 4-6 (a < a_crit, a > a_crit);
+* ``sub-critical-top``, ``super-critical-top``: the same patch at the top of the hole (the pin pulled up
+  against phi = pi), the mirror image phi -> phi + pi: P -> -P, delta -> -2 Delta - delta;
+* ``two-patch``: contact at the bottom and the top at once (jkrcyl.twopatch), present when a single patch
+  can close the gap at phi = pi (the confined regime, :func:`confined`);
+* ``full-contact``: the pin bonded all round (no edge, always stable), confined regime only;
+* ``separated``: the free pin (no contact, P = 0), for a given approach -2 Delta < delta < 0 only.
+
+Stability is that of the control given: fixed load for ``P``, fixed grip for ``delta``
+(dG/da > 0 at fixed P or delta, section 9; the Hessians of jkrcyl.twopatch for two patches).
+Signs as in the paper (section 6): P and delta are positive downward (pushing the pin into the bottom
+of the hole); pulling is negative.
+"""
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass, field
+from typing import Callable, Dict, List, Optional
+
+import numpy as np
+
+from . import equilibria as eq
+from ._validate import finite_scalar
+
+ROOT_GRID = 4000          # grid points per single-patch branch (uniform in eps*) for sign changes
+ROOT_GRID_ALPHA = 400     # alpha* != 0: one collocation solve per point
+SMALL_A_POINTS = 200      # extra log-spaced points between A_MIN and the first grid point
+A_MIN = 1e-15             # smallest contact parameter searched (states with a < A_MIN are not reported)
+
+
+# --- the problem in normalised form ---------------------------------------------------------------------
+@dataclass(frozen=True)
+class Problem:
+    """A Contact seen through the normalisation of section 6: (M, vartheta, gb, alpha*/beta*)."""
+
+    contact: object
+    M: float
+    theta: float
+    gb: float
+    alpha_ratio: float
+
+    @classmethod
+    def of(cls, contact) -> "Problem":
+        M, th, gb = eq.from_contact(contact)
+        return cls(contact, M, th, gb, contact.materials.alpha_ratio)
+
+    @property
+    def key(self):
+        return (self.M, self.theta, self.gb, self.alpha_ratio)
+
+    @property
+    def load_scale(self) -> float:
+        return self.contact.load_scale
+
+
+# --- one equilibrium ----------------------------------------------------------------------------------
+@dataclass(frozen=True, repr=False)
+class Equilibrium:
+    """One equilibrium state, dimensional and normalised.
+
+    Attributes
+    ----------
+    branch : str
+        Key of :data:`BRANCH_SOLVERS` (``regime`` is the same string).
+    control : str
+        'load' or 'grip': the control under which :attr:`stable` is judged.
+    a, a_top : float
+        Contact parameters tan(eps/2) of the bottom and the top patch (a_top = 0 for one patch; a = inf in
+        full contact, a = 0 when separated).
+    eps, eps_top : float
+        Contact half-angles [rad].
+    contact_width : float
+        Arc length of contact 2 R (eps + eps_top) [m].
+    P : float
+        Load per unit length [N/m], positive downward.
+    delta : float
+        Approach [m] (5.1), positive downward.
+    h_pi : float
+        Gap at phi = pi [m] (5.10); 0 when the top is in contact.
+    K : float
+        Stress intensity factor at the bottom edge [Pa m^1/2] (3.4); at equilibrium (pi/4) A K^2 = w.
+    P_star, delta_over_Delta : float
+        Normalised load (section 6; P_R* of (7.6) for vartheta = inf) and approach.
+    feasible : bool
+        Gap inequality h >= 0 outside the contact (section 5).
+    stable_load, stable_grip : bool
+        Stable at fixed load / fixed grip.
+    side : str
+        'bottom', 'top' (mirrored single patch), 'both' (two patches, full contact) or 'none' (separated).
+    """
+
+    branch: str
+    control: str
+    a: float
+    eps: float
+    contact_width: float
+    P: float
+    delta: float
+    h_pi: float
+    K: float
+    P_star: float
+    delta_over_Delta: float
+    feasible: bool
+    stable_load: bool
+    stable_grip: bool
+    side: str = "bottom"
+    a_top: float = 0.0
+    eps_top: float = 0.0
+    extra: dict = field(default_factory=dict, compare=False)
+
+    @property
+    def regime(self) -> str:
+        return self.branch
+
+    @property
+    def stable(self) -> bool:
+        """Stable under the control given to :func:`solve`."""
+        return self.stable_load if self.control == "load" else self.stable_grip
+
+    @property
+    def size(self) -> float:
+        """Total contact half-angle eps + eps_top [rad] (the sort key)."""
+        return self.eps + self.eps_top
+
+    def with_control(self, control: str) -> "Equilibrium":
+        from dataclasses import replace
+        return replace(self, control=control)
+
+    def as_dict(self) -> dict:
+        """Plain values (floats, bools, str) for CSV/JSON output."""
+        keys = ("branch", "side", "a", "a_top", "eps", "eps_top", "contact_width", "P", "delta", "h_pi", "K",
+                "P_star", "delta_over_Delta", "feasible", "stable_load", "stable_grip", "stable")
+        return {k: getattr(self, k) for k in keys}
+
+    def __repr__(self) -> str:
+        return (f"Equilibrium({self.branch}, a={self.a:.6g}, width={self.contact_width:.4g} m, "
+                f"P={self.P:.6g} N/m, delta={self.delta:.4g} m, feasible={self.feasible}, "
+                f"stable({self.control})={self.stable})")
+
+
+# --- single patch ---------------------------------------------------------------------------------------
+def _branch_grid(pb: Problem, regime: str) -> np.ndarray:
+    """Increasing contact parameters covering one single-patch branch, with log-spaced small a."""
+    ar, th = pb.alpha_ratio, pb.theta
+    n = ROOT_GRID if ar == 0.0 else ROOT_GRID_ALPHA
+    s = (np.arange(n) + 0.5) / n
+    if math.isinf(th):                      # rigid cradle: a in (0, inf), no a_crit
+        a = np.tan(0.5 * math.pi * s)
+    else:
+        ac = eq._ac(th, pb.gb, ar)
+        lo, hi = (0.0, 0.5) if regime == "sub-critical" else (0.5, 1.0)
+        a = ac * np.tan(0.5 * math.pi * (lo + (hi - lo) * s))
+    if regime == "sub-critical" or math.isinf(th):
+        k = SMALL_A_POINTS if ar == 0.0 else SMALL_A_POINTS // 8
+        a = np.concatenate([np.geomspace(A_MIN, a[0], k, endpoint=False), a])
+    return a
+
+
+def _curve(pb: Problem, regime: str, a) -> "eq.Curve":
+    return eq.curve(pb.M, pb.theta, regime=regime, gb=pb.gb, a=np.atleast_1d(np.asarray(a, float)),
+                    alpha_ratio=pb.alpha_ratio)
+
+
+@functools.lru_cache(maxsize=32)
+def _branch_table(key, regime):
+    """(a, P*, delta/Delta) on the branch grid; cached per (M, vartheta, gb, alpha*/beta*)."""
+    pb = Problem(None, *key)
+    a = _branch_grid(pb, regime)
+    c = _curve(pb, regime, a)
+    return a, c.P_star, c.delta_over_Delta
+
+
+def _refine(f, lo, hi):
+    from scipy.optimize import brentq
+    return brentq(f, lo, hi, xtol=1e-300, rtol=4 * np.finfo(float).eps, maxiter=200)
+
+
+def single_patch_roots(pb: Problem, regime: str, key: str, target: float) -> List[float]:
+    """Contact parameters on a single-patch branch with P* (key 'P_star') or delta/Delta equal to target."""
+    if regime == "super-critical" and math.isinf(pb.theta):
+        return []
+    a, P, d = _branch_table(pb.key, regime)
+    v = (P if key == "P_star" else d) - target
+    f = lambda x: float(getattr(_curve(pb, regime, x), key)[0]) - target
+    out = []
+    for i in np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0]:
+        if np.isfinite(v[i]) and np.isfinite(v[i + 1]):
+            out.append(_refine(f, float(a[i]), float(a[i + 1])))
+    out += [float(x) for x in a[v == 0]]
+    return sorted(out)
+
+
+def _stability(c, regime: str, M: float):
+    """(stable_load, stable_grip) arrays; M = 0 (no adhesion): the M -> 0+ limit of the sign rules."""
+    if M > 0:
+        return np.asarray(c.stable_load), np.asarray(c.stable_grip)
+    sign = 1.0 if regime == "sub-critical" else -1.0
+    ok = sign * np.asarray(c.dP_star_da) > 0
+    return ok, ok
+
+
+def single_patch_states(pb: Problem, regime: str, a, control: str, side: str = "bottom") -> List[Equilibrium]:
+    """Equilibria of one single-patch branch at contact parameters a (mirrored when side == 'top')."""
+    a = np.atleast_1d(np.asarray(a, dtype=float))
+    if a.size == 0:
+        return []
+    ct = pb.contact
+    st = ct.state(a)
+    c = _curve(pb, regime, a)
+    stab_load, stab_grip = _stability(c, regime, pb.M)
+    out = []
+    for i in range(a.size):
+        P, delta = float(np.ravel(st.P)[i]), float(np.ravel(st.delta)[i])
+        h_pi = float(np.ravel(st.h_pi)[i])
+        if side == "top":
+            P, delta = -P, -2 * ct.Delta - delta
+        eps = float(2 * math.atan(a[i]))
+        out.append(Equilibrium(
+            branch=regime if side == "bottom" else regime + "-top", control=control, a=float(a[i]), eps=eps,
+            contact_width=2 * ct.R * eps, P=P, delta=delta, h_pi=h_pi, K=float(np.ravel(st.K)[i]),
+            P_star=P / ct.load_scale, delta_over_Delta=delta / ct.Delta, feasible=bool(h_pi >= 0),
+            stable_load=bool(stab_load[i]), stable_grip=bool(stab_grip[i]), side=side))
+    return out
+
+
+def _single(regime: str, side: str = "bottom"):
+    def solver(pb: Problem, key: str, target: float, control: str) -> List[Equilibrium]:
+        if side == "top":                        # mirror: P* -> -P*, delta/Delta -> -2 - delta/Delta
+            target = -target if key == "P_star" else -2.0 - target
+        return single_patch_states(pb, regime, single_patch_roots(pb, regime, key, target), control, side)
+    solver.__doc__ = f"{regime} single patch at the {side} of the hole."
+    return solver
+
+
+# --- confined regime: two patches and full contact ---------------------------------------------------------
+@functools.lru_cache(maxsize=32)
+def _onsets(key):
+    from . import twopatch
+    M, th, gb, ar = key
+    if math.isinf(th) or M <= 0:
+        return ()
+    kw = {"alpha_ratio": ar} if ar else {}
+    return tuple(twopatch.onset_angles(M, th, gb, **kw))
+
+
+def confined(pb: Problem) -> bool:
+    """True when some single-patch state closes the gap at phi = pi (h(pi) = 0): two-patch states exist."""
+    return bool(_onsets(pb.key))
+
+
+@functools.lru_cache(maxsize=8)
+def two_patch_branches(key):
+    """jkrcyl.twopatch.branches at (M, vartheta, gb, alpha*/beta*), cached (tracing takes seconds)."""
+    from . import twopatch
+    M, th, gb, ar = key
+    kw = {"alpha_ratio": ar} if ar else {}
+    return tuple(twopatch.branches(M, th, gb=gb, **kw))
+
+
+def _two_patch_state(pb: Problem, eps: float, eps_top: float, control: str) -> Equilibrium:
+    from . import twopatch
+    kw = {"alpha_ratio": pb.alpha_ratio} if pb.alpha_ratio else {}
+    s = twopatch.equilibrium_state(eps, eps_top, pb.M, pb.theta, pb.gb, **kw)
+    load, grip = twopatch.stability(eps, eps_top, s.delta_over_Delta, pb.M, pb.theta, pb.gb, **kw)
+    return _from_two_patch(pb, s, load, grip, control)
+
+
+def _from_two_patch(pb, s, load, grip, control):
+    ct = pb.contact
+    return Equilibrium(
+        branch="two-patch", control=control, a=s.a, eps=s.eps, contact_width=2 * ct.R * (s.eps + s.eps_top),
+        P=s.P_star * ct.load_scale, delta=s.delta_over_Delta * ct.Delta, h_pi=0.0, K=math.sqrt(8 * ct.w / ct.beta),
+        P_star=s.P_star, delta_over_Delta=s.delta_over_Delta, feasible=bool(s.feasible),
+        stable_load=bool(load), stable_grip=bool(grip), side="both", a_top=s.a_top, eps_top=s.eps_top,
+        extra={"gap_min_over_Delta": s.gap_min, "G_bot": s.G_bot, "G_top": s.G_top})
+
+
+def _two_patch_solver(pb: Problem, key: str, target: float, control: str) -> List[Equilibrium]:
+    """Two-patch states: sign changes along each traced branch, refined on the branch by Brent's method
+    in the half-angle that varies most (the other from jkrcyl.twopatch.solve)."""
+    from . import twopatch
+    if not confined(pb):
+        return []
+    kw = {"alpha_ratio": pb.alpha_ratio} if pb.alpha_ratio else {}
+    out = []
+    for b in two_patch_branches(pb.key):
+        v = np.asarray(getattr(b, key)) - target
+        for i in np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0]:
+            e0, e1, t0, t1 = b.eps[i], b.eps[i + 1], b.eps_top[i], b.eps_top[i + 1]
+            along_top = abs(t1 - t0) > abs(e1 - e0)
+            lo, hi = (t0, t1) if along_top else (e0, e1)
+            other = (lambda x: e0 + (e1 - e0) * (x - t0) / (t1 - t0)) if along_top else \
+                    (lambda x: t0 + (t1 - t0) * (x - e0) / (e1 - e0))
+
+            def state(x):
+                if along_top:
+                    return twopatch.solve(pb.M, pb.theta, eps_top=x, gb=pb.gb, guess=other(x), **kw)
+                return twopatch.solve(pb.M, pb.theta, eps=x, gb=pb.gb, guess=other(x), **kw)
+            try:
+                f = lambda x: getattr(state(x), key) - target
+                x = _refine_loose(f, min(lo, hi), max(lo, hi))
+                s = state(x)
+            except ValueError:
+                continue
+            load, grip = twopatch.stability(s.eps, s.eps_top, s.delta_over_Delta, pb.M, pb.theta, pb.gb, **kw)
+            out.append(_from_two_patch(pb, s, load, grip, control))
+    return out
+
+
+def _refine_loose(f, lo, hi):
+    from scipy.optimize import brentq
+    return brentq(f, lo, hi, xtol=1e-14, rtol=1e-13, maxiter=100)
+
+
+def full_contact_state(pb: Problem, key: str, target: float, control: str) -> Optional[Equilibrium]:
+    """The bonded pin (eps + eps_top = pi) at P* or delta/Delta = target (jkrcyl.twopatch.full_contact)."""
+    from . import twopatch
+    kw = {"alpha_ratio": pb.alpha_ratio} if pb.alpha_ratio else {}
+    args = {"P_star": target} if key == "P_star" else {"delta_over_Delta": target}
+    try:
+        fc = twopatch.full_contact(pb.theta, gb=pb.gb, **args, **kw)
+    except ValueError:                     # delta/Delta fixes no load when gb = 1/2
+        return None
+    ct = pb.contact
+    return Equilibrium(
+        branch="full-contact", control=control, a=math.inf, eps=math.pi, contact_width=2 * math.pi * ct.R,
+        P=fc.P_star * ct.load_scale, delta=fc.delta_over_Delta * ct.Delta, h_pi=0.0, K=0.0, P_star=fc.P_star,
+        delta_over_Delta=fc.delta_over_Delta, feasible=True, stable_load=True, stable_grip=True, side="both",
+        a_top=math.inf, eps_top=0.0, extra={"tension_everywhere": fc.tension_everywhere})
+
+
+def _full_contact_solver(pb: Problem, key: str, target: float, control: str) -> List[Equilibrium]:
+    if not confined(pb):
+        return []
+    s = full_contact_state(pb, key, target, control)
+    return [] if s is None else [s]
+
+
+def separated_state(pb: Problem, delta_over_Delta: float, control: str) -> Equilibrium:
+    """The free pin at approach delta (no contact, P = 0): stable under grip, neutral under load."""
+    ct = pb.contact
+    return Equilibrium(
+        branch="separated", control=control, a=0.0, eps=0.0, contact_width=0.0, P=0.0,
+        delta=delta_over_Delta * ct.Delta, h_pi=(2 + delta_over_Delta) * ct.Delta, K=0.0, P_star=0.0,
+        delta_over_Delta=delta_over_Delta, feasible=True, stable_load=False, stable_grip=True, side="none")
+
+
+def _separated_solver(pb: Problem, key: str, target: float, control: str) -> List[Equilibrium]:
+    if key != "delta_over_Delta" or not -2.0 < target < 0.0:
+        return []
+    return [separated_state(pb, target, control)]
+
+
+BranchSolver = Callable[[Problem, str, float, str], List[Equilibrium]]
+
+#: The branches searched by :func:`solve`, in this order; each maps (problem, key, target, control) to states.
+BRANCH_SOLVERS: Dict[str, BranchSolver] = {
+    "sub-critical": _single("sub-critical"),
+    "super-critical": _single("super-critical"),
+    "sub-critical-top": _single("sub-critical", "top"),
+    "super-critical-top": _single("super-critical", "top"),
+    "two-patch": _two_patch_solver,
+    "full-contact": _full_contact_solver,
+    "separated": _separated_solver,
+}
+
+
+# --- the forward problem ------------------------------------------------------------------------------
+def solve(contact, P: Optional[float] = None, delta: Optional[float] = None,
+          branches=None) -> List[Equilibrium]:
+    """Every equilibrium of ``contact`` at load ``P`` [N/m] or approach ``delta`` [m] (exactly one).
+
+    Parameters
+    ----------
+    contact : jkrcyl.Contact
+        Needs a clearance Delta > 0 (the branches are found in the normalisation of section 6).
+    P : float, optional
+        Load per unit length [N/m], positive downward (section 6); stability is then judged at fixed load.
+    delta : float, optional
+        Approach [m] (5.1); stability is then judged at fixed grip.
+    branches : iterable of str, optional
+        Keys of :data:`BRANCH_SOLVERS` to search (default: all).  Two-patch states are traced by continuation
+        (seconds, cached per contact); leave out 'two-patch' for speed.
+
+    Returns
+    -------
+    list of Equilibrium
+        Sorted by contact size (eps + eps_top), then by branch.  Empty if no state exists.
+    """
+    if (P is None) == (delta is None):
+        raise ValueError("P: give exactly one of P [N/m] and delta [m]")
+    contact._require_clearance("solve")
+    pb = Problem.of(contact)
+    if P is not None:
+        key, control = "P_star", "load"
+        target = finite_scalar("P", P) / contact.load_scale
+    else:
+        key, control = "delta_over_Delta", "grip"
+        target = finite_scalar("delta", delta) / contact.Delta
+    names = list(BRANCH_SOLVERS) if branches is None else list(branches)
+    for name in names:
+        if name not in BRANCH_SOLVERS:
+            raise ValueError(f"branches: unknown branch {name!r} (choose from {', '.join(BRANCH_SOLVERS)})")
+    out = []
+    for name in names:
+        out += BRANCH_SOLVERS[name](pb, key, target, control)
+    order = {n: i for i, n in enumerate(BRANCH_SOLVERS)}
+    return sorted(out, key=lambda s: (s.size, order[s.branch]))
