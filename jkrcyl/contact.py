@@ -145,6 +145,11 @@ class Contact:
         from .forward import solve
         return solve(self, P=P, delta=delta, branches=branches)
 
+    def pull_off(self, control="load"):
+        """Detachment along the stable path (force [N/m], width, approach) or why not: :func:`jkrcyl.forward.pull_off`."""
+        from .forward import pull_off
+        return pull_off(self, control)
+
     def pressure(self, a, phi):
         """Pressure N(phi) of (5.4) [Pa] at one contact parameter a: (bounded, unbounded); 0 outside."""
         if np.ndim(a) != 0:

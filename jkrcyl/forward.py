@@ -168,13 +168,17 @@ def _curve(pb: Problem, regime: str, a) -> "eq.Curve":
                     alpha_ratio=pb.alpha_ratio)
 
 
-@functools.lru_cache(maxsize=32)
 def _branch_table(key, regime):
-    """(a, P*, delta/Delta) on the branch grid; cached per (M, vartheta, gb, alpha*/beta*)."""
+    """(a, P*, delta/Delta) on the branch grid (:func:`branch_curve`, cached per (M, vartheta, gb, alpha*/beta*))."""
+    c = branch_curve(key, regime)
+    return c.a, c.P_star, c.delta_over_Delta
+
+
+@functools.lru_cache(maxsize=32)
+def branch_curve(key, regime):
+    """The dense single-patch branch (jkrcyl.equilibria.Curve on the solver's grid), cached."""
     pb = Problem(None, *key)
-    a = _branch_grid(pb, regime)
-    c = _curve(pb, regime, a)
-    return a, c.P_star, c.delta_over_Delta
+    return _curve(pb, regime, _branch_grid(pb, regime))
 
 
 def _refine(f, lo, hi):
@@ -413,3 +417,152 @@ def solve(contact, P: Optional[float] = None, delta: Optional[float] = None,
         out += BRANCH_SOLVERS[name](pb, key, target, control)
     order = {n: i for i, n in enumerate(BRANCH_SOLVERS)}
     return sorted(out, key=lambda s: (s.size, order[s.branch]))
+
+
+# --- pull-off (issue 11 item 2) -----------------------------------------------------------------------------
+@dataclass(frozen=True, repr=False)
+class PullOff:
+    """Detachment along the path a user follows, or why there is none.
+
+    Attributes
+    ----------
+    control : str
+        'load' or 'grip'.
+    P : float or None
+        Load per unit length at detachment [N/m] (negative: pulling); None if the pin does not detach.
+    contact_width : float or None
+        Arc length of contact 2 R eps just before detachment [m].
+    delta : float or None
+        Approach at detachment [m].
+    state : Equilibrium or None
+        The last stable equilibrium (the fold), also when there is no detachment.
+    reason : str
+        What happens at the end of the stable, feasible path.
+    """
+
+    control: str
+    P: Optional[float]
+    contact_width: Optional[float]
+    delta: Optional[float]
+    state: Optional[Equilibrium]
+    reason: str
+
+    @property
+    def detached(self) -> bool:
+        return self.P is not None
+
+    def __bool__(self) -> bool:
+        return self.detached
+
+    def __repr__(self) -> str:
+        if self.detached:
+            return (f"PullOff({self.control}: P={self.P:.6g} N/m, contact_width={self.contact_width:.4g} m, "
+                    f"delta={self.delta:.4g} m)")
+        return f"PullOff({self.control}: none -- {self.reason})"
+
+
+def start_state(pb: Problem):
+    """(regime, index) on the dense bottom branches where a quasi-static load path starts: the stable,
+    feasible zero-load contact reached by snap-in (8.1), else the stable feasible state of largest P*
+    (the pin pushed in first).  None if no state is stable and feasible under load."""
+    zero = [s for s in solve(pb.contact, P=0.0, branches=["sub-critical", "super-critical"])
+            if s.stable_load and s.feasible]
+    if zero:
+        s = zero[0]
+        c = branch_curve(pb.key, s.branch)
+        return s.branch, int(np.argmin(np.abs(c.a - s.a)))
+    best = None
+    for regime in ("sub-critical", "super-critical"):
+        if regime == "super-critical" and math.isinf(pb.theta):
+            continue
+        c = branch_curve(pb.key, regime)
+        ok = np.nonzero(np.asarray(c.stable_load) & np.asarray(c.feasible))[0]
+        if ok.size and (best is None or c.P_star[ok].max() > best[0]):
+            best = (c.P_star[ok].max(), regime, int(ok[np.argmax(c.P_star[ok])]))
+    return None if best is None else best[1:]
+
+
+def walk_down(pb: Problem, regime: str, i: int, control: str):
+    """Follow a branch from index i while the driven quantity (P* or delta/Delta) decreases and the states stay
+    stable (under control) and feasible.  Returns (j, event): event 'fold' (a minimum of the driven
+    quantity), 'gap' (the next state has h(pi) < 0) or 'end' (the grid ends)."""
+    c = branch_curve(pb.key, regime)
+    y = np.asarray(c.P_star if control == "load" else c.delta_over_Delta)
+    stable = np.asarray(c.stable_load if control == "load" else c.stable_grip)
+    feasible = np.asarray(c.feasible)
+    step = -1 if i > 0 and y[i - 1] < y[i] else 1
+    j = i
+    while 0 <= j + step < y.size:
+        k = j + step
+        if not feasible[k]:
+            return j, "gap"
+        if y[k] >= y[j] or not stable[k]:
+            return j, "fold"
+        j = k
+    return j, "end"
+
+
+def _fold(pb: Problem, regime: str, j: int, control: str) -> float:
+    """Contact parameter of the minimum of P* (load) or delta/Delta (grip) next to grid index j."""
+    c = branch_curve(pb.key, regime)
+    key = "dP_star_da" if control == "load" else "ddelta_da"
+    lo, hi = float(c.a[max(j - 1, 0)]), float(c.a[min(j + 1, c.a.size - 1)])
+    f = lambda x: float(getattr(_curve(pb, regime, x), key)[0])
+    if f(lo) * f(hi) < 0:
+        return _refine(f, lo, hi)
+    return float(c.a[j])
+
+
+def pull_off(contact, control: str = "load") -> PullOff:
+    """Detachment force [N/m], contact width [m] and approach [m] along the quasi-static path.
+
+    The path starts at the stable zero-load contact (snap-in, (8.1)) -- or, without one, at the stable state of
+    largest load -- and follows its branch towards lower load (control='load') or lower approach
+    (control='grip') through stable, feasible states (section 9).  It ends at
+
+    * a sub-critical minimum: the contact shrinks away (G > w), the pin detaches: P, width and delta there;
+    * a super-critical minimum: a further pull lowers G, the contact grows round into full contact -- no
+      detachment (jkrcyl.twopatch);
+    * h(pi) = 0: the gap at the top closes first (confined) -- no detachment; see
+      :meth:`jkrcyl.Contact.confined_events` for what follows.
+
+    Parameters
+    ----------
+    contact : jkrcyl.Contact
+    control : {'load', 'grip'}
+
+    Returns
+    -------
+    PullOff
+        ``P`` is None (and ``reason`` says why) when the pin does not detach.
+    """
+    if control not in ("load", "grip"):
+        raise ValueError(f"control must be 'load' or 'grip', got {control!r}")
+    contact._require_clearance("pull_off")
+    pb = Problem.of(contact)
+    if pb.M == 0:
+        return PullOff(control, None, None, None, None, "no adhesion (w = 0): the contact vanishes at P = 0")
+    start = start_state(pb)
+    if start is None:
+        return PullOff(control, None, None, None, None,
+                       "no single-patch state is stable and feasible under load: no path to follow")
+    regime, i = start
+    j, event = walk_down(pb, regime, i, control)
+    c = branch_curve(pb.key, regime)
+    if event == "gap":
+        s = single_patch_states(pb, regime, c.a[j], control)[0]
+        return PullOff(control, None, None, None, s,
+                       f"confined: the gap at phi = pi closes first (P = {s.P:.6g} N/m, delta = {s.delta:.4g} m); "
+                       "the top contact forms before detachment (see Contact.confined_events)")
+    a = _fold(pb, regime, j, control) if event == "fold" else float(c.a[j])
+    s = single_patch_states(pb, regime, a, control)[0]
+    if event == "end":
+        what = "load" if control == "load" else "approach"
+        return PullOff(control, None, None, None, s,
+                       f"no fold: along the stable branch the {what} decreases without bound (the contact grows "
+                       f"towards a_crit or the full circle), so the pin does not detach; last state a = {s.a:.6g}")
+    if regime == "super-critical":
+        return PullOff(control, None, None, None, s,
+                       f"fold at P = {s.P:.6g} N/m on the super-critical branch: a further pull lowers G, the "
+                       "contact grows round into full contact (no detachment)")
+    return PullOff(control, s.P, s.contact_width, s.delta, s, "detachment: the contact shrinks away (G > w)")
