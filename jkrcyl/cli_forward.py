@@ -8,6 +8,8 @@ import json
 import math
 import sys
 
+import numpy as np
+
 PHYSICAL = (("E", "Young's modulus of the body with the hole [Pa] (inf: rigid)"), ("nu", "its Poisson ratio"),
             ("E-I", "Young's modulus of the cylinder [Pa] (inf: rigid)"), ("nu-I", "its Poisson ratio"),
             ("R", "hole radius [m]"), ("Delta", "clearance R - R_D [m], > 0"), ("w", "work of adhesion [J/m^2]"))
@@ -36,7 +38,7 @@ def contact_from(args):
 
 def number(x) -> str:
     """10 significant digits, no noise; inf/nan spelled out; booleans true/false."""
-    if isinstance(x, (bool,)) or type(x).__name__ == "bool_":
+    if isinstance(x, (bool, np.bool_)):
         return "true" if x else "false"
     if isinstance(x, str):
         return x
@@ -47,7 +49,7 @@ def number(x) -> str:
 def json_value(x):
     if isinstance(x, str) or x is None:
         return x
-    if isinstance(x, bool) or type(x).__name__ == "bool_":
+    if isinstance(x, (bool, np.bool_)):
         return bool(x)
     x = float(x)
     return float(f"{x:.10g}") if math.isfinite(x) else None
@@ -101,3 +103,72 @@ def register(sub, number_type):
     s.add_argument("--no-two-patch", action="store_true", help="skip the two-patch branches (faster)")
     s.add_argument("--format", choices=("csv", "json"), default="csv", help="output format (default csv)")
     s.set_defaults(func=cmd_solve)
+    register_more(sub, number_type)
+
+
+# --- pull-off and cycle ----------------------------------------------------------------------------------
+def cmd_pull_off(args):
+    c = contact_from(args)
+    rows = []
+    for control in ("load", "grip"):
+        po = c.pull_off(control)
+        rows.append({"control": control, "detached": po.detached, "P": po.P if po.detached else math.nan,
+                     "contact_width": po.contact_width if po.detached else math.nan,
+                     "delta": po.delta if po.detached else math.nan, "reason": po.reason})
+    if args.format == "json":
+        write_rows(rows, "json")
+        return 0
+    for r in rows:
+        if r["detached"]:
+            print(f"{r['control']:4s}: pull-off P = {number(r['P'])} N/m, contact width = "
+                  f"{number(r['contact_width'])} m, delta = {number(r['delta'])} m")
+        else:
+            print(f"{r['control']:4s}: no detachment -- {r['reason']}")
+    return 0
+
+
+def cmd_cycle(args):
+    from .cycle import plot
+    c = contact_from(args)
+    cy = c.cycle(P_max=args.P_max, P_min=args.P_min, control=args.control, n=args.n,
+                 delta_max=args.delta_max, delta_min=args.delta_min)
+    if args.csv:
+        with open(args.csv, "w") as fh:
+            t = cy.table()
+            write_rows([dict(zip(t, row)) for row in zip(*t.values())], "csv", out=fh,
+                       meta={"control": cy.control, "dissipated_J_per_m": cy.dissipated if cy.dissipated is not None
+                             else math.nan})
+    if args.plot:
+        plot(cy, args.plot)
+    print(f"{cy.control} control: {len(cy.P)} path points, {len(cy.jumps)} jumps")
+    for j in cy.jumps:
+        print(f"  leg {j.leg} {j.kind:11s} {j.before.branch} -> {j.after.branch}: P {number(j.before.P)} -> "
+              f"{number(j.after.P)} N/m, delta {number(j.before.delta)} -> {number(j.after.delta)} m")
+    if cy.dissipated is None:
+        print(f"dissipated energy per cycle: n/a (the loop did not close{': ' + cy.note if cy.note else ''})")
+    else:
+        print(f"dissipated energy per cycle: {number(cy.dissipated)} J/m")
+    return 0
+
+
+def register_more(sub, number_type):
+    p = sub.add_parser("pull-off", help="pull-off force [N/m], contact width and approach (load and grip)",
+                       description="Detachment along the stable path from the zero-load contact, under load and "
+                                   "under grip control, or the reason there is none.")
+    add_physical(p, number_type)
+    p.add_argument("--format", choices=("text", "json"), default="text", help="output format (default text)")
+    p.set_defaults(func=cmd_pull_off)
+    c = sub.add_parser("cycle", help="quasi-static load cycle: path, jumps, dissipated energy; plot and CSV",
+                       description="From first contact (snap-in) up to the maximum, down to the minimum and up "
+                                   "again along the stable branch; jumps listed; energy dissipated per cycle "
+                                   "(loop area) [J/m].")
+    add_physical(c, number_type)
+    c.add_argument("--control", choices=("load", "grip"), default="load", help="driven quantity (default load)")
+    c.add_argument("--P-max", type=number_type, help="largest load [N/m] (load control)")
+    c.add_argument("--P-min", type=number_type, help="smallest load [N/m] (load control)")
+    c.add_argument("--delta-max", type=number_type, help="largest approach [m] (grip control)")
+    c.add_argument("--delta-min", type=number_type, help="smallest approach [m] (grip control)")
+    c.add_argument("--n", type=int, default=2000, help="path points at most (default 2000)")
+    c.add_argument("--plot", default=None, help="P-delta plot with the jumps as arrows (PNG or PDF)")
+    c.add_argument("--csv", default=None, help="the path as CSV (physical units)")
+    c.set_defaults(func=cmd_cycle)

@@ -150,6 +150,11 @@ class Contact:
         from .forward import pull_off
         return pull_off(self, control)
 
+    def cycle(self, P_max=None, P_min=None, control="load", n=2000, delta_max=None, delta_min=None):
+        """Quasi-static cycle from first contact (path, jumps, dissipated energy [J/m]): :func:`jkrcyl.cycle.cycle`."""
+        from .cycle import cycle
+        return cycle(self, P_max=P_max, P_min=P_min, control=control, n=n, delta_max=delta_max, delta_min=delta_min)
+
     def pressure(self, a, phi):
         """Pressure N(phi) of (5.4) [Pa] at one contact parameter a: (bounded, unbounded); 0 outside."""
         if np.ndim(a) != 0:

@@ -75,3 +75,113 @@ def test_worked_example_units():
     a, st = dense_sub_critical(c)
     assert po.P == pytest.approx(st.P.min(), rel=1e-9)
     assert -700 < po.P < -500                   # the half-plane estimate is -575 N/m (M = 0.033)
+
+
+# --- cycles (item 3) ---------------------------------------------------------------------------------------
+def _branch_points(c, a_from, a_to, n=100001, side="bottom"):
+    """(P, delta) along the single patch between two contact parameters (dense Contact.state, geometric grid)."""
+    a = np.geomspace(a_from, a_to, n)
+    st = c.state(a)
+    if side == "top":
+        return -st.P, -2 * c.Delta - st.delta
+    return st.P, st.delta
+
+
+def _stable_root(c, P):
+    """The stable sub-critical contact parameter at load P: the largest root of P(a) = P below a_crit,
+    found by bisection on the printed-kernel state (independent of the solver's grid)."""
+    a = c.a_crit * np.tan(np.pi / 4 * np.linspace(1e-9, 1 - 1e-9, 200001))
+    v = c.state(a).P - P
+    i = np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0][-1]
+    lo, hi = a[i], a[i + 1]
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if (c.state(mid).P - P) * v[i] > 0 else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def test_load_cycle_jumps_and_energy():
+    c = contact(0.3)
+    P_max, P_min = 0.5 * c.load_scale, -0.5 * c.load_scale
+    cy = c.cycle(P_max=P_max, P_min=P_min)
+    po = c.pull_off("load")
+    kinds = [j.kind for j in cy.jumps]
+    assert kinds == ["snap-in", "pull-off", "pull-off"]
+    snap, down, up = cy.jumps
+    # snap-in at zero load onto the stable root of (8.1)
+    a0 = jkrcyl.zero_load_contact(c.M, c.theta)[0]
+    assert snap.before.P == 0 and snap.after.a == pytest.approx(a0, rel=1e-9) and snap.after.P == pytest.approx(
+        0, abs=1e-12 * c.load_scale)
+    # pull-off at the fixed-load adherence force, landing on the top; the mirrored jump back at -P_po
+    assert down.before.P == pytest.approx(po.P, rel=1e-12) and down.after.P == pytest.approx(po.P, rel=1e-12)
+    assert down.after.side == "top" and up.after.side == "bottom"
+    assert up.before.P == pytest.approx(-po.P, rel=1e-12)
+    assert cy.closed_from_leg == 1
+    # independent loop: dense Contact.state along bottom and top branches, trapezoid rule
+    a_po, a_land = po.state.a, _stable_root(c, -po.P)
+    a_max, a_min_top = _stable_root(c, P_max), _stable_root(c, -P_min)
+    pieces = [_branch_points(c, a_max, a_po),                      # unload on the bottom to pull-off
+              _branch_points(c, a_land, a_min_top, side="top"),    # land on the top, unload to P_min
+              _branch_points(c, a_min_top, a_po, side="top"),      # reload: top contact shrinks to its pull-off
+              _branch_points(c, a_land, a_max)]                    # land on the bottom, load to P_max
+    P = np.concatenate([p[0] for p in pieces])
+    d = np.concatenate([p[1] for p in pieces])
+    area = np.sum(0.5 * (P[1:] + P[:-1]) * np.diff(d))
+    assert cy.dissipated > 0
+    assert cy.dissipated == pytest.approx(area, rel=1e-6)
+
+
+def test_load_cycle_without_pull_off_dissipates_nothing():
+    c = contact(0.3)
+    po = c.pull_off("load")
+    cy = c.cycle(P_max=0.5 * c.load_scale, P_min=0.5 * po.P)
+    assert [j.kind for j in cy.jumps] == ["snap-in"]
+    assert cy.dissipated == pytest.approx(0, abs=1e-10 * c.load_scale * c.Delta)
+
+
+def test_grip_cycle_jumps_at_the_grip_pull_off():
+    c = contact(0.3)
+    cy = c.cycle(delta_max=0.3 * c.Delta, delta_min=-2.3 * c.Delta, control="grip")
+    po = c.pull_off("grip")
+    offs = [j for j in cy.jumps if j.kind == "pull-off"]
+    assert offs and offs[0].before.delta == pytest.approx(po.delta, rel=1e-12)
+    assert offs[0].after.branch == "separated" and offs[0].after.delta == offs[0].before.delta
+    snaps = [j for j in cy.jumps if j.kind == "snap-in"]
+    assert snaps[0].after.delta == pytest.approx(0, abs=1e-12 * c.Delta)      # touching at delta = 0
+    assert snaps[1].before.delta == pytest.approx(-2 * c.Delta)                # and at the top, delta = -2 Delta
+    sel = (cy.leg == cy.closed_from_leg) | (cy.leg == cy.closed_from_leg + 1)
+    P, d = cy.P[sel], cy.delta[sel]
+    assert cy.dissipated > 0
+    assert cy.dissipated == pytest.approx(np.sum(0.5 * (P[1:] + P[:-1]) * np.diff(d)), rel=1e-4)
+
+
+def test_cycle_bad_input():
+    c = contact(0.3)
+    with pytest.raises(ValueError, match="P_min"):
+        c.cycle(P_max=-1.0, P_min=1.0)
+    with pytest.raises(ValueError, match="P_max"):
+        c.cycle(P_min=1.0)
+    with pytest.raises(ValueError, match="delta_max"):
+        c.cycle(P_max=1.0, P_min=-1.0, control="grip")
+    with pytest.raises(ValueError, match="n"):
+        c.cycle(P_max=1.0, P_min=-1.0, n=1e7)
+
+
+def test_cli_cycle_plot_and_csv(tmp_path):
+    import csv
+    import os
+    import pathlib
+    import subprocess
+    import sys
+    root = pathlib.Path(__file__).resolve().parents[1]
+    png, out = tmp_path / "c.png", tmp_path / "c.csv"
+    r = subprocess.run([sys.executable, "-m", "jkrcyl.cli", "cycle", "--E", "2.6e9", "--nu", "0.3", "--E-I", "2.6e9",
+                        "--nu-I", "0.3", "--R", "0.01", "--Delta", "1e-5", "--w", "0.05", "--P-max", "2000",
+                        "--P-min", "-2000", "--plot", str(png), "--csv", str(out)], cwd=root,
+                       env=dict(os.environ, MPLBACKEND="Agg"), capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    assert "pull-off" in r.stdout and "J/m" in r.stdout
+    assert png.stat().st_size > 1000
+    rows = list(csv.reader(open(out)))
+    assert rows[1] == ["leg", "branch", "a", "P [N/m]", "delta [m]", "stable"]
+    assert {row[5] for row in rows[2:]} <= {"true", "false"}
