@@ -128,16 +128,14 @@ class Contact:
     def two_patch(self, n=None):
         """Two-patch branches (second contact at the top of the hole): jkrcyl.equilibria.two_patch."""
         from . import equilibria
-        self.materials.require_closed_form("two_patch (the two-patch tracer is wired for alpha* = 0 so far)")
         M, th, gb = equilibria.from_contact(self)
-        return equilibria.two_patch(M, th, n=n, gb=gb)
+        return equilibria.two_patch(M, th, n=n, gb=gb, alpha_ratio=self.materials.alpha_ratio)
 
     def confined_events(self):
         """What follows when the gap closes at phi = pi under slow pulling: jkrcyl.twopatch.confined_events."""
         from . import equilibria, twopatch
-        self.materials.require_closed_form("confined_events (the two-patch tracer is wired for alpha* = 0 so far)")
         M, th, gb = equilibria.from_contact(self)
-        return twopatch.confined_events(M, th, gb=gb)
+        return twopatch.confined_events(M, th, gb=gb, alpha_ratio=self.materials.alpha_ratio)
 
     # --- forward problems (jkrcyl.forward, jkrcyl.cycle) -------------------------------------------------
     def solve(self, P=None, delta=None, branches=None):

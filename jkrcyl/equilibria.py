@@ -19,6 +19,7 @@ lowers G: the contact grows instead of detaching (jkrcyl.twopatch: it zips into 
 Root finding: sign changes of the slope kernels on a fine grid, then bisection to adjacent
 doubles (no scipy).  Where no root exists the result is an empty list.
 """
+import functools
 import math
 from dataclasses import dataclass
 
@@ -53,6 +54,7 @@ def _alpha(alpha_ratio):
     return finite_scalar("alpha_ratio", alpha_ratio, low=-1.0, high=1.0, low_open=True)
 
 
+@functools.lru_cache(maxsize=256)     # alpha* != 0: a root search of ~40 solves, asked for by every curve()
 def _ac(th, gb, ar):
     """a_crit: the closed form (4.4) at alpha* = 0, the numerical pole of the solver otherwise."""
     if ar == 0.0 or math.isinf(th):
@@ -344,14 +346,14 @@ def zero_load_max_M(theta):
     return a_m**1.5 / (a_m**2 + 2 * th - math.log1p(a_m**2)), a_m
 
 
-def two_patch(M, theta, n=None, gb=None):
+def two_patch(M, theta, n=None, gb=None, alpha_ratio=0.0):
     """Two-patch equilibrium branches (top contact at phi = pi, issue 12): :func:`jkrcyl.twopatch.branches`.
 
     A list of :class:`jkrcyl.twopatch.TwoPatchCurve` (Curve fields plus a_top, stable_load, stable_grip);
-    n points per branch (default: the continuation steps).
+    n points per branch (default: the continuation steps); alpha_ratio = alpha*/beta* (any material pair).
     """
     from . import twopatch
-    return twopatch.branches(M, theta, gb=gb, n=n)
+    return twopatch.branches(M, theta, gb=gb, n=n, alpha_ratio=alpha_ratio)
 
 
 def from_contact(contact):

@@ -34,9 +34,17 @@ under load the 3x3 Hessian in (eps, eps_top, delta/Delta) must be positive defin
 Mirror: turning the picture upside down (phi -> phi + pi) swaps the arcs and maps
 P* -> -P*, delta/Delta -> -2 - delta/Delta (the operator only depends on phi - psi).
 
+Any alpha* (alpha_ratio = alpha*/beta*, every function here): the kernel of numerics.arcs gains
+ar (pi sin|t| - t sin t) - (ar/2) cos t, still even and 2 pi-periodic in t = phi - psi, so the mirror, the
+energy U* (Clapeyron: a symmetric operator, frictionless arcs) and dU*/d delta = P* hold unchanged; the
+alpha* part is bounded, so the edges stay square-root and Griffith is still k = M/pi (tests: finite
+differences of U* give G = w to 1e-6).  Full contact changes: N0 = -1/(pi (1 - 2 vartheta ar)).
+
 Full contact (eps + eps_top = pi): no edge, no Griffith condition; n = N0 + N1 cos(phi) all round
-(jkrcyl.numerics.green, H2's closed form), N0 = -1/pi: the interface is in tension wherever |P*| < 1.
+(the Fourier modes 0 and 1 of the kernel), N0 = -1/pi at alpha* = 0: the interface is in tension wherever
+|P*| < 1.
 """
+import functools
 import math
 from dataclasses import dataclass
 
@@ -53,30 +61,49 @@ GAP_FULL = 0.02         # eps + eps_top >= pi - GAP_FULL: the branch has run int
 NODES_PER_GAP = 8       # near-touching arcs: the density varies on the scale of the gap g between them, so
                         # Chebyshev needs ~ sqrt(eps/g) times more nodes (Bernstein ellipse through the gap);
                         # 8 sqrt(eps/g) keeps F to ~1e-11 (measured against 96 nodes down to g = 0.02)
+N_NODES_ALPHA = 32      # alpha* != 0: at least this many (1e-12 at moderate arcs against 128 nodes)
+AR_NODES_FACTOR = 2     # alpha* != 0 near-touching arcs: 16 sqrt(eps/g) nodes (7e-10 at g = 0.24, eps = 2)
 GAP_SAMPLES = 128       # exterior angles per state for the gap check h >= 0 (Chebyshev points of the
                         # open gap, clustered at the arc ends where h ~ distance^(3/2) is smallest)
 
 
-def _linear(eps, eps_top, theta, gb, n):
-    """Affine pieces at fixed arcs: q0, q1 = [P*, B*, k_bot, k_top] for (Delta-case, unit delta/Delta)."""
+def _nodes(eps, eps_top, n, ar):
+    """Nodes per arc: n, more for near-touching arcs; alpha* != 0: the algebraic end terms need about twice
+    as many, in multiples of 8 (the engine builds one table per node count, ~0.1-0.5 s each)."""
     g = math.pi - eps - eps_top
-    n = max(n, int(NODES_PER_GAP * math.sqrt(max(eps, eps_top) / g))) if g > 0 else n
-    return _arcs.two_patch_linear(eps, eps_top, theta, gb, n)
+    need = NODES_PER_GAP * math.sqrt(max(eps, eps_top) / g) if g > 0 else 0.0
+    if ar == 0.0:
+        return max(n, int(need))
+    return min(8 * math.ceil(max(n, N_NODES_ALPHA, AR_NODES_FACTOR * need) / 8), 256)
+
+
+def _linear(eps, eps_top, theta, gb, n, ar=0.0):
+    """Affine pieces at fixed arcs: q0, q1 = [P*, B*, k_bot, k_top] for (Delta-case, unit delta/Delta)."""
+    return _arcs.two_patch_linear(eps, eps_top, theta, gb, _nodes(eps, eps_top, n, ar), ar)
 
 
 # --- residual, one equilibrium -----------------------------------------------------------------------
-def _residual_pieces(eps, eps_top, M, theta, gb, n):
-    lin = _linear(eps, eps_top, theta, gb, n)
+def _residual_pieces(eps, eps_top, M, theta, gb, n, ar=0.0):
+    lin = _linear(eps, eps_top, theta, gb, n, ar)
     q0, q1 = lin.q0, lin.q1
     m = M / math.pi
     D = (q0[2] - m) * q1[3] - (q0[3] - m) * q1[2]
-    # k0, k1 ~ 1/det(A): D/|k1| ~ sign(det) x smooth, so the sign factor makes F smooth across det = 0
-    return lin.sign_det * D / math.hypot(q1[2], q1[3]), lin
+    # k0, k1 ~ 1/det(A): D/|k1| ~ sign(det) x smooth, so the sign factor makes F smooth across det = 0;
+    # det's sign is taken relative to two tiny arcs at the same node count (with alpha* != 0 the enrichment
+    # columns flip the sign of det with n mod 3, which would flip F wherever the node count changes)
+    sign = lin.sign_det * _reference_sign(lin.sys.n, theta, gb, ar)
+    return sign * D / math.hypot(q1[2], q1[3]), lin
 
 
-def residual(eps, eps_top, M, theta, gb, n=N_NODES):
+@functools.lru_cache(maxsize=None)
+def _reference_sign(n, theta, gb, ar):
+    """sign(det A) for two arcs of 1e-3 rad (far from every singular configuration: the log term dominates)."""
+    return _arcs.two_patch_linear(1e-3, 1e-3, theta, gb, n, ar).sign_det
+
+
+def residual(eps, eps_top, M, theta, gb, n=N_NODES, alpha_ratio=0.0):
     """F(eps, eps_top) scaled by |k1|: zero exactly at the two-patch equilibria (distance-like, units of k)."""
-    return _residual_pieces(eps, eps_top, M, theta, gb, n)[0]
+    return _residual_pieces(eps, eps_top, M, theta, gb, n, alpha_ratio)[0]
 
 
 def _delta(lin, M):
@@ -92,7 +119,8 @@ class TwoPatchState:
 
     eps, eps_top [rad]; a, a_top = tan(half-angle/2); P_star, B_star, delta_over_Delta (section 6);
     G_bot, G_top = G/w at the bottom and top ends; energy = U* (units 4 pi Delta^2 vartheta/beta*);
-    gap_min = min h/Delta over GAP_SAMPLES exterior angles; feasible = gap_min >= 0.
+    gap_min = min h/Delta over GAP_SAMPLES exterior angles; feasible = gap_min >= 0;
+    alpha_ratio = alpha*/beta* of the kernel.
     """
 
     M: float
@@ -107,6 +135,7 @@ class TwoPatchState:
     G_top: float
     energy: float
     gap_min: float
+    alpha_ratio: float = 0.0
     _lin: object = None
 
     @property
@@ -131,7 +160,8 @@ class TwoPatchState:
 
     def mirror(self):
         """The upside-down state: arcs swapped, P* -> -P*, delta/Delta -> -2 - delta/Delta."""
-        return fixed_arcs(self.eps_top, self.eps, -2.0 - self.delta_over_Delta, self.M, self.theta, self.gb)
+        return fixed_arcs(self.eps_top, self.eps, -2.0 - self.delta_over_Delta, self.M, self.theta, self.gb,
+                          alpha_ratio=self.alpha_ratio)
 
 
 def exterior_angles(eps, eps_top, k=GAP_SAMPLES):
@@ -141,9 +171,9 @@ def exterior_angles(eps, eps_top, k=GAP_SAMPLES):
     return 0.5 * (lo + hi) + 0.5 * (hi - lo) * s
 
 
-def fixed_arcs(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, lin=None):
+def fixed_arcs(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, lin=None, alpha_ratio=0.0):
     """The state with given arcs and approach (Griffith not imposed): for energy and stability checks."""
-    lin = _linear(eps, eps_top, theta, gb, n) if lin is None else lin
+    lin = _linear(eps, eps_top, theta, gb, n, alpha_ratio) if lin is None else lin
     d = float(delta_over_Delta)
     q = lin.q0 + d * lin.q1
     gap_min = float(np.min(lin.gap(exterior_angles(eps, eps_top), d)))
@@ -151,32 +181,42 @@ def fixed_arcs(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, lin=None
     return TwoPatchState(M=M, theta=theta, gb=gb, eps=eps, eps_top=eps_top, P_star=float(q[0]),
                          B_star=float(q[1]), delta_over_Delta=d, G_bot=float(q[2] ** 2 * scale),
                          G_top=float(q[3] ** 2 * scale), energy=0.5 * ((1 + d) * q[0] - q[1]),
-                         gap_min=gap_min, _lin=lin)
+                         gap_min=gap_min, alpha_ratio=alpha_ratio, _lin=lin)
 
 
-def equilibrium_state(eps, eps_top, M, theta, gb, n=N_NODES):
+def equilibrium_state(eps, eps_top, M, theta, gb, n=N_NODES, alpha_ratio=0.0):
     """State at a point of the zero set of F (delta from Griffith)."""
-    lin = _linear(eps, eps_top, theta, gb, n)
-    return fixed_arcs(eps, eps_top, _delta(lin, M), M, theta, gb, n)
+    lin = _linear(eps, eps_top, theta, gb, n, alpha_ratio)
+    return fixed_arcs(eps, eps_top, _delta(lin, M), M, theta, gb, n, lin=lin, alpha_ratio=alpha_ratio)
 
 
-def _params(M, theta, gb):
+def _params(M, theta, gb, alpha_ratio=0.0):
     from .equilibria import default_gb
     M = finite_scalar("M", M, low=0.0, low_open=True)
     th = _check_theta(theta)
     if math.isinf(th):
         raise ValueError("theta: two-patch states need a finite vartheta (M, P* normalise by vartheta)")
     gb = default_gb(th) if gb is None else finite_scalar("gb", gb, low=0.0)
-    return M, th, gb
+    return M, th, gb, _alpha_ratio(alpha_ratio, th)
 
 
-def solve(M, theta, eps_top=None, eps=None, gb=None, guess=None, n=N_NODES, tol=1e-13):
+def _alpha_ratio(alpha_ratio, theta):
+    """alpha*/beta* in (-1, 1/(2 vartheta)): every material pair has 1/vartheta - 2 alpha*/beta* =
+    (2/G + (kappa_I - 1)/G_I)/beta* > 0, the compliance of the uniform mode (full contact's N0 stays finite)."""
+    ar = finite_scalar("alpha_ratio", alpha_ratio, low=-1.0, high=1.0, low_open=True)
+    if ar >= 0.5 / theta:
+        raise ValueError(f"alpha_ratio must be in (-1, 1/(2 theta)) = (-1, {0.5 / theta:g}) at theta = {theta:g} "
+                         f"(no material pair has more), got {ar:g}")
+    return ar
+
+
+def solve(M, theta, eps_top=None, eps=None, gb=None, guess=None, n=N_NODES, tol=1e-13, alpha_ratio=0.0):
     """A two-patch equilibrium with ONE half-angle given (eps_top or eps): the other by Newton on F.
 
-    guess: starting value of the unknown half-angle.  Returns a :class:`TwoPatchState`; ValueError if
-    Newton does not converge (no equilibrium near the guess).
+    guess: starting value of the unknown half-angle; alpha_ratio = alpha*/beta*.  Returns a
+    :class:`TwoPatchState`; ValueError if Newton does not converge (no equilibrium near the guess).
     """
-    M, th, gb = _params(M, theta, gb)
+    M, th, gb, ar = _params(M, theta, gb, alpha_ratio)
     if (eps_top is None) == (eps is None):
         raise ValueError("eps_top: give exactly one of eps_top and eps")
     name, given = ("eps_top", eps_top) if eps is None else ("eps", eps)
@@ -187,7 +227,7 @@ def solve(M, theta, eps_top=None, eps=None, gb=None, guess=None, n=N_NODES, tol=
 
     def f(x):                                           # keeps each solve for the final state
         e, et = (x, given) if eps is None else (given, x)
-        r, last[x] = _residual_pieces(e, et, M, th, gb, n)
+        r, last[x] = _residual_pieces(e, et, M, th, gb, n, ar)
         return r
     hi = math.pi - given - SCAN_GAP
     x0 = float(guess) if guess is not None else 0.5 * (math.pi - given)
@@ -208,11 +248,11 @@ def solve(M, theta, eps_top=None, eps=None, gb=None, guess=None, n=N_NODES, tol=
         raise ValueError(f"guess: no two-patch equilibrium found near {x!r}")
     e, et = (x, given) if eps is None else (given, x)
     lin = last[x]
-    return fixed_arcs(e, et, _delta(lin, M), M, th, gb, n, lin=lin)
+    return fixed_arcs(e, et, _delta(lin, M), M, th, gb, n, lin=lin, alpha_ratio=ar)
 
 
 # --- stability ------------------------------------------------------------------------------------
-def hessian(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, h=1e-6):
+def hessian(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, h=1e-6, alpha_ratio=0.0):
     """3x3 Hessian of Pi* in (eps, eps_top, delta/Delta) at fixed load (the last row/column drops at fixed grip).
 
     d Pi*/d eps_i = 2 vartheta (pi^2 k_i^2 - M^2), d Pi*/d delta = P* - P*_applied, so the entries are
@@ -220,8 +260,9 @@ def hessian(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, h=1e-6):
     dP*/d delta = q1[P].  The eps block is symmetrised (Maxwell; the asymmetry is a check in the tests).
     """
     d = delta_over_Delta
-    k = lambda e, et: (lambda L: L.q0[2:4] + d * L.q1[2:4])(_linear(e, et, theta, gb, n))
-    lin = _linear(eps, eps_top, theta, gb, n)
+    ar = alpha_ratio
+    k = lambda e, et: (lambda L: L.q0[2:4] + d * L.q1[2:4])(_linear(e, et, theta, gb, n, ar))
+    lin = _linear(eps, eps_top, theta, gb, n, ar)
     kk = lin.q0[2:4] + d * lin.q1[2:4]
     dk = np.empty((2, 2))
     h0, h1 = min(h, 0.1 * eps), min(h, 0.1 * eps_top)        # relative steps near an axis
@@ -240,9 +281,9 @@ def hessian(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, h=1e-6):
     return H, He
 
 
-def stability(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES):
+def stability(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, alpha_ratio=0.0):
     """(stable_load, stable_grip): positive definiteness of the 3x3 and the 2x2 Hessians."""
-    H, _ = hessian(eps, eps_top, delta_over_Delta, M, theta, gb, n)
+    H, _ = hessian(eps, eps_top, delta_over_Delta, M, theta, gb, n, alpha_ratio=alpha_ratio)
     grip = bool(np.all(np.linalg.eigvalsh(H[:2, :2]) > 0))
     load = bool(np.all(np.linalg.eigvalsh(H) > 0))
     return load, grip
@@ -284,6 +325,7 @@ class TwoPatchCurve:
     G_bot: np.ndarray
     G_top: np.ndarray
     ends: tuple
+    alpha_ratio: float = 0.0
 
     COLUMNS = ("a", "a_top", "eps", "eps_top", "eps_star", "eps_top_star", "P_star", "delta_over_Delta",
                "gap_min", "feasible", "stable_load", "stable_grip")
@@ -347,18 +389,26 @@ def _near(x, polylines, tol):
     return False
 
 
-def onset_angles(M, theta, gb=None):
+def onset_angles(M, theta, gb=None, alpha_ratio=0.0):
     """Half-angles eps where a single-patch equilibrium has h(pi) = 0 (sub- and super-critical branches)."""
     from . import equilibria as eq
     from scipy.optimize import brentq
     out = []
+    ar = alpha_ratio
+    gb = eq.default_gb(theta) if gb is None else gb
+    # alpha* != 0: each grid point is a collocation solve (numerics.arcs), so a coarser grid
+    n = ONSET_GRID if ar == 0.0 else ONSET_GRID_ALPHA
     for regime in eq.REGIMES:
-        a = eq._grid(regime, theta, 600)
-        h = eq.curve(M, theta, regime, a=a, gb=gb).h_pi_over_Delta
-        hp = lambda x: float(eq.curve(M, theta, regime, a=np.array([x]), gb=gb).h_pi_over_Delta[0])
+        a = eq._grid(regime, theta, n, eq._ac(theta, gb, ar))
+        h = eq.curve(M, theta, regime, a=a, gb=gb, alpha_ratio=ar).h_pi_over_Delta
+        hp = lambda x: float(eq.curve(M, theta, regime, a=np.array([x]), gb=gb, alpha_ratio=ar).h_pi_over_Delta[0])
         for i in np.nonzero(np.sign(h[:-1]) * np.sign(h[1:]) < 0)[0]:
             out.append(2 * math.atan(brentq(hp, a[i], a[i + 1], xtol=1e-16, rtol=1e-15)))
     return sorted(out)
+
+
+ONSET_GRID = 600          # h(pi) sign changes along each single-patch branch
+ONSET_GRID_ALPHA = 200
 
 
 def _trace_both(f, clip, x0, t0, h0):
@@ -371,26 +421,26 @@ def _trace_both(f, clip, x0, t0, h0):
     return pts, (bw.boundary or bw.end, fw.boundary or fw.end)
 
 
-def branches(M, theta, gb=None, n=None, nodes=N_NODES, h0=0.05):
+def branches(M, theta, gb=None, n=None, nodes=N_NODES, h0=0.05, alpha_ratio=0.0):
     """Every branch of two-patch equilibria at (M, vartheta): a list of :class:`TwoPatchCurve`.
 
     n: points per branch, equally spaced in arclength in the half-angle plane (default: the continuation
-    steps); nodes: collocation nodes per arc.
+    steps); nodes: collocation nodes per arc (alpha* != 0: at least N_NODES_ALPHA); alpha_ratio = alpha*/beta*.
 
     Starts: each single-patch onset h(pi) = 0 (a_top -> 0), its mirror (a -> 0), then the roots of F along
     the rows eps_top in SCAN_TOP (curves touching neither axis: loops, branches ending in full contact).
     """
-    M, th, gb = _params(M, theta, gb)
+    M, th, gb, ar = _params(M, theta, gb, alpha_ratio)
     if n is not None:
         n = int(finite_scalar("n", n, low=4))
     # traced in u = log(half-angles): branches span scales from EPS_AXIS to pi (they hug the axes near the
     # onsets and may run into the corner of two small arcs); clamped so that stray Newton iterates stay evaluable
     lo, hi = 0.1 * EPS_AXIS, math.pi - 0.1 * GAP_FULL
-    fx = lambda x: residual(max(x[0], lo), max(x[1], lo), M, th, gb, nodes) if x[0] + x[1] < hi else math.nan
+    fx = lambda x: residual(max(x[0], lo), max(x[1], lo), M, th, gb, nodes, ar) if x[0] + x[1] < hi else math.nan
     f = lambda u: fx(np.exp(u))
     clip = _clipper(f)
     found = []          # (points in u, ends)
-    for e in onset_angles(M, th, gb):
+    for e in onset_angles(M, th, gb, ar):
         for k, label in ((0, "single"), (1, "mirror")):     # a_top -> 0 at the onset, a -> 0 at its mirror
             u0 = np.full(2, LOG_AXIS)
             u0[k] = math.log(e)
@@ -415,7 +465,7 @@ def branches(M, theta, gb=None, n=None, nodes=N_NODES, h0=0.05):
     found = [(np.exp(p), ends) for p, ends in found]
     f = fx
     found = [(p if n is None else _resample(f, p, n), ends) for p, ends in found if len(p) >= 4]
-    return [_curve(p, ends, M, th, gb, nodes) for p, ends in found]
+    return [_curve(p, ends, M, th, gb, nodes, ar) for p, ends in found]
 
 
 def _resample(f, points, n):
@@ -433,18 +483,18 @@ def _resample(f, points, n):
     return out
 
 
-def _curve(points, ends, M, th, gb, n):
-    from .critical import a_crit
-    states = [equilibrium_state(e, et, M, th, gb, n) for e, et in points]
-    stab = np.array([stability(s.eps, s.eps_top, s.delta_over_Delta, M, th, gb, n) for s in states])
-    ac = a_crit(th)
+def _curve(points, ends, M, th, gb, n, ar=0.0):
+    from .equilibria import _ac
+    states = [equilibrium_state(e, et, M, th, gb, n, ar) for e, et in points]
+    stab = np.array([stability(s.eps, s.eps_top, s.delta_over_Delta, M, th, gb, n, ar) for s in states])
+    ac = _ac(th, gb, ar)
     arr = lambda k: np.array([getattr(s, k) for s in states])
     a, at = np.tan(points[:, 0] / 2), np.tan(points[:, 1] / 2)
     return TwoPatchCurve(M=M, theta=th, gb=gb, a=a, a_top=at, eps=points[:, 0], eps_top=points[:, 1],
                          eps_star=2 * np.arctan(a / ac) / math.pi, eps_top_star=2 * np.arctan(at / ac) / math.pi,
                          P_star=arr("P_star"), delta_over_Delta=arr("delta_over_Delta"), gap_min=arr("gap_min"),
                          feasible=arr("gap_min") >= -1e-9, stable_load=stab[:, 0], stable_grip=stab[:, 1],
-                         G_bot=arr("G_bot"), G_top=arr("G_top"), ends=tuple(ends))
+                         G_bot=arr("G_bot"), G_top=arr("G_top"), ends=tuple(ends), alpha_ratio=ar)
 
 
 # --- full contact -------------------------------------------------------------------------------------
@@ -453,7 +503,7 @@ class FullContact:
     """The pin in contact all round (eps + eps_top = pi): n(phi) = N0 + N1 cos(phi), no edge, no Griffith.
 
     P_star = pi N1, B_star = 2 pi N0; energy U* = [(1 + delta/Delta) P* - B*]/2 as for the arcs;
-    tension_everywhere: n < 0 all round (|P*| < -pi N0 = 1).
+    tension_everywhere: n < 0 all round (|P*| < -pi N0, = 1 at alpha* = 0).
     """
 
     theta: float
@@ -462,6 +512,7 @@ class FullContact:
     delta_over_Delta: float
     N0: float
     N1: float
+    alpha_ratio: float = 0.0
 
     @property
     def B_star(self):
@@ -479,27 +530,30 @@ class FullContact:
         return self.N0 + self.N1 * np.cos(np.asarray(phi, dtype=float))
 
 
-def _full_contact_law(theta, gb):
-    """(N0, c) with n = N0 + N1 cos(phi) and delta/Delta = -1 + c P*: H2's closed form (numerics.green).
+def _full_contact_law(theta, gb, ar=0.0):
+    """(N0, c) with n = N0 + N1 cos(phi) and delta/Delta = -1 + c P* in full contact.
 
-    Without it: the kernel of (5.2) acting on the Fourier modes 1 and cos(phi) of the whole circle gives
-    N0 = -1/pi and delta/Delta + 1 = -vartheta (gb - 1/2) P* (c = 0: the identical-material degeneracy).
+    The kernel K of (5.2) (numerics.arcs, any alpha*) is a convolution on the circle, so the modes 1 and
+    cos(phi) of the right-hand side (delta/Delta) cos(phi) - (1 - cos(phi)) are answered mode by mode:
+    int K dt = -pi/vartheta + 2 pi ar and int K cos(t) dt = pi (gb - 1/2) (the alpha* parts
+    -pi ar/2 + pi ar/2 of the cos mode cancel), so N0 = -1/(pi (1 - 2 vartheta ar)) and
+    delta/Delta + 1 = -vartheta (gb - 1/2) P* (c = 0: the identical-material degeneracy gb = 1/2).
+    tests/test_twopatch.py checks both integrals by quadrature and the law as the limit of closing gaps.
     """
-    try:
-        from .numerics import green
-        return green.full_contact_law(theta, gb)
-    except (ImportError, AttributeError):
-        return -1.0 / math.pi, -theta * (gb - 0.5)
+    return -1.0 / (math.pi * (1.0 - 2.0 * theta * ar)), -theta * (gb - 0.5)
 
 
-def full_contact(theta, P_star=None, delta_over_Delta=None, gb=None):
-    """Full contact at a given load P* or approach delta/Delta (exactly one of them)."""
+def full_contact(theta, P_star=None, delta_over_Delta=None, gb=None, alpha_ratio=0.0):
+    """Full contact at a given load P* or approach delta/Delta (exactly one of them); alpha_ratio = alpha*/beta*."""
     from .equilibria import default_gb
     th = _check_theta(theta)
+    if math.isinf(th):
+        raise ValueError("theta: full contact needs a finite vartheta (n and P* normalise by vartheta)")
     gb = default_gb(th) if gb is None else finite_scalar("gb", gb, low=0.0)
+    ar = _alpha_ratio(alpha_ratio, th)
     if (P_star is None) == (delta_over_Delta is None):
         raise ValueError("P_star: give exactly one of P_star and delta_over_Delta")
-    N0, c = _full_contact_law(th, gb)
+    N0, c = _full_contact_law(th, gb, ar)
     if P_star is not None:
         P = finite_scalar("P_star", P_star)
         d = -1.0 + c * P
@@ -510,7 +564,7 @@ def full_contact(theta, P_star=None, delta_over_Delta=None, gb=None):
                 raise ValueError("delta_over_Delta: full contact needs delta/Delta = -1 when gb = 1/2")
             raise ValueError("P_star: undetermined by delta/Delta when gb = 1/2 (give P_star)")
         P = (d + 1.0) / c
-    return FullContact(theta=th, gb=gb, P_star=P, delta_over_Delta=d, N0=N0, N1=P / math.pi)
+    return FullContact(theta=th, gb=gb, P_star=P, delta_over_Delta=d, N0=N0, N1=P / math.pi, alpha_ratio=ar)
 
 
 # --- confined-regime events ---------------------------------------------------------------------------
@@ -575,14 +629,15 @@ class ConfinedEvents:
         return f"top contact forms at P* = {self.P_top_contact:.6g}: {REGIMES[self.regime]}"
 
 
-def _load_path(M, th, gb):
+def _load_path(M, th, gb, ar=0.0):
     """Stable, feasible single-patch states and the first event when P* decreases from the start."""
     from . import equilibria as eq
-    segs = []
-    for regime in eq.REGIMES:
-        c = eq.curve(M, th, regime, n=3000, gb=gb)
-        segs.append(c)
-    a0s = eq.zero_load_contact(M, th)
+    n = LOAD_PATH_GRID if ar == 0.0 else LOAD_PATH_GRID_ALPHA
+    segs = [eq.curve(M, th, regime, n=n, gb=gb, alpha_ratio=ar) for regime in eq.REGIMES]
+    if ar == 0.0:
+        a0s = eq.zero_load_contact(M, th)
+    else:               # (8.1) is the alpha* = 0 zero-load law: the solver's roots of P* = 0 instead
+        a0s = sorted(x for r in eq.REGIMES for x in eq.solve_load(M, th, 0.0, r, gb=gb, alpha_ratio=ar))
     start = None
     for c in segs:
         ok = c.stable_load & c.feasible
@@ -612,28 +667,35 @@ def _load_path(M, th, gb):
     return c, i, "none", j
 
 
-def _grows_under_pull(eps, th, gb, n):
+LOAD_PATH_GRID = 3000        # points per single-patch branch on which the load path is followed
+LOAD_PATH_GRID_ALPHA = 800   # alpha* != 0: one collocation solve per point
+
+
+def _grows_under_pull(eps, th, gb, n, ar=0.0):
     """At fixed single arc eps: does a lower P* lower G (dG/dP* > 0), so that the contact grows?
 
     G is proportional to k^2 with k = k0 + d k1 and P* = P0 + d P1 along the approach d: dG/dP* ~ k k1/P1.
     """
-    lin = _linear(eps, 0.0, th, gb, n)
+    lin = _linear(eps, 0.0, th, gb, n, ar)
     return lin.q1[2] / lin.q1[0] > 0
 
 
-def confined_events(M, theta, gb=None, n=N_NODES):
-    """Classify the confined regime at (M, vartheta): see :class:`ConfinedEvents` and :data:`REGIMES`."""
-    M, th, gb = _params(M, theta, gb)
-    bs = tuple(branches(M, th, gb, nodes=n))
+def confined_events(M, theta, gb=None, n=N_NODES, alpha_ratio=0.0):
+    """Classify the confined regime at (M, vartheta): see :class:`ConfinedEvents` and :data:`REGIMES`.
+
+    alpha_ratio = alpha*/beta* != 0: every single-patch quantity from the solver (jkrcyl.numerics.arcs)."""
+    M, th, gb, ar = _params(M, theta, gb, alpha_ratio)
+    bs = tuple(branches(M, th, gb, nodes=n, alpha_ratio=ar))
     onsets = []
     from . import equilibria as eq
-    for e in onset_angles(M, th, gb):
+    ac = eq._ac(th, gb, ar)
+    for e in onset_angles(M, th, gb, ar):
         a = math.tan(e / 2)
-        regime = "sub-critical" if a < eq._a_crit(th) else "super-critical"
-        c = eq.curve(M, th, regime, a=np.array([a]), gb=gb)
+        regime = "sub-critical" if a < ac else "super-critical"
+        c = eq.curve(M, th, regime, a=np.array([a]), gb=gb, alpha_ratio=ar)
         onsets.append((e, float(c.P_star[0]), float(c.delta_over_Delta[0]), bool(c.stable_load[0])))
-    path = _load_path(M, th, gb)
-    grip_pts = [p for p in eq.adherence(M, th, "grip", gb=gb) if p.kind == "min" and p.feasible]
+    path = _load_path(M, th, gb, ar)
+    grip_pts = [p for p in eq.adherence(M, th, "grip", gb=gb, alpha_ratio=ar) if p.kind == "min" and p.feasible]
     any_load = any(b.stable_load.any() for b in bs)
     any_grip = any(b.stable_grip.any() for b in bs)
     full = any("full" in b.ends for b in bs)
@@ -645,10 +707,10 @@ def confined_events(M, theta, gb=None, n=N_NODES):
     start = (float(c.a[i]), float(c.P_star[i]))
     if event in ("fold", "none"):
         P_fold = float(c.P_star[j])
-        pts = eq.stationary_points(M, th, "load", c.regime, gb=gb)
+        pts = eq.stationary_points(M, th, "load", c.regime, gb=gb, alpha_ratio=ar)
         if pts:                                     # the exact P* minimum next to the grid point
             P_fold = min(pts, key=lambda p: abs(p.a - c.a[j])).P_star
-        regime = "zip-full" if _grows_under_pull(float(c.eps[j]), th, gb, n) else "detachment"
+        regime = "zip-full" if _grows_under_pull(float(c.eps[j]), th, gb, n, ar) else "detachment"
         return ConfinedEvents(M, th, regime, start, P_fold, nan, tuple(onsets), bool(grip_pts), any_load,
                               any_grip, full, bs)
     P_on = float(c.P_star[j])

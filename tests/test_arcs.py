@@ -218,11 +218,17 @@ def test_alpha_ratio_range_is_validated():
         eq.curve(0.3, 1.0, alpha_ratio=1.5)
 
 
-def test_two_patch_refuses_alpha_nonzero_instead_of_answering_for_alpha_zero():
+def test_two_patch_answers_for_the_pair_not_for_alpha_zero(monkeypatch):
+    """Contact.two_patch/confined_events pass the pair's alpha*/beta* on (the alpha* != 0 physics itself is
+    checked in tests/test_twopatch.py); the tracer is replaced by a recorder to keep this test fast."""
+    from jkrcyl import twopatch
     c = pair("steel pin in aluminium", Delta=1e-5, w=0.5)
-    for call in (c.two_patch, c.confined_events):
-        with pytest.raises(ValueError, match="alpha\\*"):
-            call()
+    seen = []
+    monkeypatch.setattr(twopatch, "branches", lambda *a, **k: seen.append(k["alpha_ratio"]) or [])
+    monkeypatch.setattr(twopatch, "confined_events", lambda *a, **k: seen.append(k["alpha_ratio"]))
+    c.two_patch()
+    c.confined_events()
+    assert seen == [c.materials.alpha_ratio] * 2 and seen[0] != 0
 
 
 def test_curve_slopes_along_a_long_grid_match_closed_form():

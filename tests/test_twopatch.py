@@ -273,3 +273,157 @@ def test_fixed_load_stability_flips_with_the_branch(M):
     for regime, sign in (("sub-critical", 1), ("super-critical", -1)):
         c = eq.curve(M, THETA, regime, n=2000)
         assert np.array_equal(c.stable_load, sign * c.dP_star_da > 0)
+
+
+# --- any alpha* (issue 12 item 1): the same checks with the alpha* kernel -----------------------------
+# alpha*/beta* = 0.2 and -0.3 at vartheta = 1 (both inside (-1, 1/(2 vartheta))); references as above:
+# finite differences of U* for G = w and for P*, the mirror (not used by the engine), quad of (2.2) and of
+# (5.2) with the kernel K(t) of jkrcyl.numerics.arcs (typed from its docstring), the single patch of the
+# same solver through jkrcyl.equilibria (a different code path: one arc, slopes along the grid).
+ALPHAS = (0.2, -0.3)
+
+
+def _K_alpha(t, th, gb, ar):
+    """K(t) of the displacement form of (2.1) (numerics.arcs docstring), |t| < 2 pi."""
+    return (np.cos(t) * np.log(2 - 2 * np.cos(t)) + (gb - ar / 2) * np.cos(t) + 1 - 1 / (2 * th)
+            + ar * (np.pi * np.sign(t) * np.sin(t) - t * np.sin(t)))
+
+
+@pytest.fixture(scope="module", params=[(0.2, 0.5, 1.0), (-0.3, 0.01, 0.3)])
+def state_alpha(request):
+    """A two-patch equilibrium at M = 0.4 (alpha*/beta*, eps_top, guess of eps on its branch)."""
+    ar, eps_top, guess = request.param
+    return tp.solve(0.4, THETA, eps_top=eps_top, guess=guess, alpha_ratio=ar)
+
+
+def test_alpha_energy_release_at_each_patch_equals_w(state_alpha):
+    """G/w = (dU*/d eps_i)/(2 vartheta M^2) at fixed delta from U* alone: Griffith k = M/pi holds for any alpha*
+    (the alpha* part of the kernel is bounded, so it leaves the square-root edge field alone)."""
+    s, M = state_alpha, 0.4
+    U = lambda e, et: tp.fixed_arcs(e, et, s.delta_over_Delta, M, THETA, GB, alpha_ratio=s.alpha_ratio).energy
+    h = 1e-5
+    for dU in ((U(s.eps + h, s.eps_top) - U(s.eps - h, s.eps_top)) / (2 * h),
+               (U(s.eps, s.eps_top + h) - U(s.eps, s.eps_top - h)) / (2 * h)):
+        assert dU / (2 * THETA * M * M) == pytest.approx(1, abs=1e-6)
+    assert s.G_bot == pytest.approx(1, abs=1e-9) and s.G_top == pytest.approx(1, abs=1e-9)
+
+
+@pytest.mark.parametrize("ar", ALPHAS)
+def test_alpha_load_is_conjugate_to_approach(ar):
+    e, et, d, h = 1.1, 0.6, -0.9, 1e-5
+    U = lambda x: tp.fixed_arcs(e, et, x, 0.4, 1.7, 0.4, alpha_ratio=ar / 2).energy
+    P = tp.fixed_arcs(e, et, d, 0.4, 1.7, 0.4, alpha_ratio=ar / 2).P_star
+    assert (U(d + h) - U(d - h)) / (2 * h) == pytest.approx(P, rel=1e-8)
+
+
+def test_alpha_mirror_maps_equilibria_onto_equilibria(state_alpha):
+    s, ar = state_alpha, state_alpha.alpha_ratio
+    assert abs(tp.residual(s.eps_top, s.eps, 0.4, THETA, GB, alpha_ratio=ar)) < 1e-9
+    m = tp.equilibrium_state(s.eps_top, s.eps, 0.4, THETA, GB, alpha_ratio=ar)     # swapped, solved afresh
+    assert m.P_star == pytest.approx(-s.P_star, rel=1e-8, abs=1e-10)
+    assert m.delta_over_Delta == pytest.approx(-2 - s.delta_over_Delta, rel=1e-8, abs=1e-10)
+
+
+@pytest.mark.parametrize("ar, bracket", [(0.2, (1.3, 1.6)), (-0.3, (0.02, 0.08))])
+def test_alpha_equal_arcs_at_zero_load_and_centred_pin(ar, bracket):
+    e = brentq(lambda x: tp.residual(x, x, 0.4, THETA, GB, alpha_ratio=ar), *bracket, xtol=1e-15)
+    s = tp.equilibrium_state(e, e, 0.4, THETA, GB, alpha_ratio=ar)
+    assert abs(s.P_star) < 2e-9          # the alpha* engine's P* is good to ~1e-9 (not improving with n)
+    assert s.delta_over_Delta == pytest.approx(-1, abs=1e-10)
+
+
+@pytest.mark.filterwarnings("ignore::scipy.integrate.IntegrationWarning")  # log end terms: quad warns, still 1e-8
+def test_alpha_pressure_integrates_to_the_load(state_alpha):
+    """(2.2) by quad (phi = c + e cos t removes the 1/sqrt ends; the (1 - s) log(1 - s) end terms are mild)."""
+    s, total = state_alpha, 0.0
+    for c, e in ((0.0, s.eps), (math.pi, s.eps_top)):
+        f = lambda t: s.pressure(c + e * math.cos(t))[0] * math.cos(c + e * math.cos(t)) * e * math.sin(t)
+        total += quad(f, 1e-9, math.pi - 1e-9, limit=400, epsabs=1e-14, epsrel=1e-13)[0]
+    assert total == pytest.approx(s.P_star, rel=1e-8)
+
+
+@pytest.mark.filterwarnings("ignore::scipy.integrate.IntegrationWarning")  # log end terms: quad warns, still 1e-8
+def test_alpha_gap_from_direct_quadrature_and_nonnegative(state_alpha):
+    """h/Delta from quad of (5.2) with the alpha* kernel and the solved pressure, at exterior angles (the
+    engine's gap() is meant for exterior angles; inside the arcs its enrichment quadrature is only ~1e-5)."""
+    s, ar = state_alpha, state_alpha.alpha_ratio
+    for phi in (s.eps + 0.05, 0.5 * (s.eps + math.pi - s.eps_top), math.pi - s.eps_top - 0.05):
+        disp = 0.0
+        for c, e in ((0.0, s.eps), (math.pi, s.eps_top)):
+            f = lambda t: (s.pressure(c + e * math.cos(t))[0] * _K_alpha(phi - c - e * math.cos(t), THETA, GB, ar)
+                           * e * math.sin(t))
+            disp += quad(f, 1e-9, math.pi - 1e-9, limit=400, epsabs=1e-14, epsrel=1e-13)[0]
+        h_ref = (1 - math.cos(phi)) - s.delta_over_Delta * math.cos(phi) - THETA * disp
+        assert s.gap(phi)[0] == pytest.approx(h_ref, rel=1e-8, abs=1e-10)
+    phi = np.linspace(s.eps, math.pi - s.eps_top, 4001)[1:-1]
+    assert np.all(s.gap(phi) >= 0)
+
+
+@pytest.mark.parametrize("ar", (0.1, -0.3))
+def test_alpha_full_contact_law(ar):
+    """Full contact at alpha* != 0: the Fourier integrals of K by quad, and the limit of closing gaps."""
+    th, gb, d = 2.0, 0.75, -0.5
+    mode0 = quad(lambda t: _K_alpha(t, th, gb, ar), -math.pi, math.pi, points=[0.0], limit=200)[0]
+    mode1 = quad(lambda t: _K_alpha(t, th, gb, ar) * math.cos(t), -math.pi, math.pi, points=[0.0], limit=200)[0]
+    fc = tp.full_contact(th, delta_over_Delta=d, gb=gb, alpha_ratio=ar)
+    # -1 = -vartheta N0 mode0 and (delta/Delta + 1) = -vartheta N1 mode1 (nu = vartheta n on the whole circle)
+    assert fc.N0 == pytest.approx(1 / (th * mode0), rel=1e-10)
+    assert d + 1 == pytest.approx(-th * fc.N1 * mode1, rel=1e-10)
+    s = tp.fixed_arcs(1.6, math.pi - 1.6 - 0.01, d, 0.4, th, gb, alpha_ratio=ar)    # gaps of 0.01 rad
+    assert s.P_star == pytest.approx(fc.P_star, rel=1e-4)
+    assert s.B_star == pytest.approx(fc.B_star, rel=1e-4)
+    assert s.energy == pytest.approx(fc.energy, rel=1e-4)
+    lim = -math.pi * fc.N0
+    assert tp.full_contact(th, P_star=0.99 * lim, gb=gb, alpha_ratio=ar).tension_everywhere
+    assert not tp.full_contact(th, P_star=1.01 * lim, gb=gb, alpha_ratio=ar).tension_everywhere
+
+
+@pytest.mark.parametrize("ar", ALPHAS)
+def test_alpha_top_arc_to_zero_tends_to_single_patch_with_closed_gap(ar):
+    M = 0.4
+    hpi = lambda a: float(eq.curve(M, THETA, "super-critical" if ar > 0 else "sub-critical", a=np.array([a]),
+                                   gb=GB, alpha_ratio=ar).h_pi_over_Delta[0])
+    (e_on,) = tp.onset_angles(M, THETA, GB, ar)
+    a_on = math.tan(e_on / 2)
+    assert abs(hpi(a_on)) < 1e-10
+    s = tp.solve(M, THETA, eps_top=1e-20, guess=e_on, alpha_ratio=ar)
+    ref = eq.curve(M, THETA, a=np.array([a_on]), gb=GB, alpha_ratio=ar,
+                   regime="super-critical" if ar > 0 else "sub-critical")
+    assert s.a == pytest.approx(a_on, rel=1e-8)
+    assert s.P_star == pytest.approx(float(ref.P_star[0]), rel=1e-8)
+    assert s.delta_over_Delta == pytest.approx(float(ref.delta_over_Delta[0]), rel=1e-8)
+
+
+@pytest.mark.parametrize("ar, regime, a", [(0.2, "sub-critical", 0.3), (0.2, "super-critical", 2.0),
+                                           (-0.3, "sub-critical", 0.6), (-0.3, "super-critical", 1.5)])
+def test_alpha_hessian_stability_of_a_single_arc_matches_the_solver_curve(ar, regime, a):
+    """Stability from the 2x2/3x3 Hessian of Pi* (k differences in eps) against the signs of dG/da|_delta and
+    dG/da|_P that jkrcyl.equilibria gets from the single-arc solver (unit-case slopes in a)."""
+    M = 0.4
+    ref = eq.curve(M, THETA, regime, a=np.array([a]), gb=GB, alpha_ratio=ar)
+    H, _ = tp.hessian(2 * math.atan(a), 0.0, float(ref.delta_over_Delta[0]), M, THETA, GB, alpha_ratio=ar)
+    assert (H[0, 0] > 0) == bool(ref.stable_grip[0])
+    assert bool(np.all(np.linalg.eigvalsh(H[np.ix_([0, 2], [0, 2])]) > 0)) == bool(ref.stable_load[0])
+
+
+def test_alpha_ratio_validation():
+    with pytest.raises(ValueError, match="alpha_ratio"):
+        tp.solve(0.4, 1.0, eps_top=0.5, alpha_ratio=0.5)            # >= 1/(2 vartheta)
+    with pytest.raises(ValueError, match="alpha_ratio"):
+        eq.two_patch(0.4, 1.0, alpha_ratio=-1.0)
+    with pytest.raises(ValueError, match="alpha_ratio"):
+        tp.full_contact(2.0, P_star=0.0, alpha_ratio=0.3)
+
+
+@pytest.mark.slow
+def test_contact_two_patch_any_material_pair():
+    """Contact.two_patch / confined_events with alpha* != 0 (no longer a ValueError); branches end as at alpha* = 0."""
+    mat = Materials(G=1.0, kappa=2.0, G_I=1.0, kappa_I=1.4)
+    assert not mat.closed_form
+    c = Contact(R=1.0, Delta=0.01, w=1e-4, materials=mat)
+    bs = c.two_patch(n=12)
+    assert bs and all(b.alpha_ratio == pytest.approx(mat.alpha_ratio) for b in bs)
+    for b in bs:
+        assert np.max(np.abs(b.G_bot[b.a > 1e-6] - 1)) < 1e-8 and np.max(np.abs(b.G_top[b.a_top > 1e-6] - 1)) < 1e-8
+    ev = c.confined_events()
+    assert ev.regime in tp.REGIMES
