@@ -3,7 +3,7 @@
 Units: any consistent set (SI: R, Delta [m], w [J/m^2], moduli [Pa], loads per unit length [N/m]).
 """
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -114,16 +114,18 @@ class Contact:
 
     # --- sections 6 and 8 (jkrcyl.equilibria) -------------------------------------------------------
     def curve(self, regime="sub-critical", n=2000):
-        """Equilibrium branch in normalised form (M, P*, delta/Delta, ...): jkrcyl.equilibria.curve."""
+        """Equilibrium branch (M, P*, delta/Delta, ... and P [N/m], delta [m]): jkrcyl.equilibria.curve."""
         from . import equilibria
         M, th, gb = equilibria.from_contact(self)
-        return equilibria.curve(M, th, regime=regime, n=n, gb=gb, alpha_ratio=self.materials.alpha_ratio)
+        cv = equilibria.curve(M, th, regime=regime, n=n, gb=gb, alpha_ratio=self.materials.alpha_ratio)
+        return replace(cv, P=cv.P_star * self.load_scale, delta=cv.delta_over_Delta * self.Delta)
 
     def adherence(self, control="load"):
         """Adherence points (P* minima for control='load', d delta/da = 0 for 'grip'): jkrcyl.equilibria.adherence."""
         from . import equilibria
         M, th, gb = equilibria.from_contact(self)
-        return equilibria.adherence(M, th, control=control, gb=gb, alpha_ratio=self.materials.alpha_ratio)
+        pts = equilibria.adherence(M, th, control=control, gb=gb, alpha_ratio=self.materials.alpha_ratio)
+        return [replace(p, P=p.P_star * self.load_scale, delta=p.delta_over_Delta * self.Delta) for p in pts]
 
     def two_patch(self, n=None):
         """Two-patch branches (second contact at the top of the hole): jkrcyl.equilibria.two_patch."""
@@ -153,22 +155,45 @@ class Contact:
         from .cycle import cycle
         return cycle(self, P_max=P_max, P_min=P_min, control=control, n=n, delta_max=delta_max, delta_min=delta_min)
 
-    def pressure(self, a, phi):
-        """Pressure N(phi) of (5.4) [Pa] at one contact parameter a: (bounded, unbounded); 0 outside."""
-        if np.ndim(a) != 0:
-            raise ValueError("a must be a single contact parameter in pressure(a, phi), got an array")
-        a = float(contact_parameter(a))
-        phi = np.asarray(phi, dtype=float)
-        if not np.isfinite(phi).all():
+    def pressure(self, a, phi, parts=False):
+        """Contact pressure N(phi) of (5.4) [Pa], compressive positive (section 6); 0 outside the contact.
+
+        Parameters
+        ----------
+        a : float or array_like
+            Contact parameter(s) tan(eps/2) > 0, numpy-broadcast against phi.
+        phi : float or array_like
+            Angle(s) from the bottom of the hole [rad], wrapped to (-pi, pi] as in :meth:`gap`.
+        parts : bool
+            False: the total N = bounded + unbounded.  True: the tuple (bounded, unbounded), the unbounded
+            part being the r0 term of (5.4) (square-root singular at the edges, negative under adhesion).
+
+        Returns
+        -------
+        ndarray or float, or a tuple of two when parts=True
+        """
+        a_arr, phi_arr = np.broadcast_arrays(contact_parameter(a), np.asarray(phi, dtype=float))
+        if not np.isfinite(phi_arr).all():
             raise ValueError("phi must be finite")
-        eps = 2 * math.atan(a)
+        wrapped = np.mod(phi_arr + math.pi, 2 * math.pi) - math.pi
+        wrapped = np.where(wrapped == -math.pi, math.pi, wrapped).ravel()
+        flat_a = a_arr.ravel()
+        nb, nu = np.zeros(flat_a.size), np.zeros(flat_a.size)
+        for ai in np.unique(flat_a):
+            sel = flat_a == ai
+            nb[sel], nu[sel] = self._pressure_one(float(ai), wrapped[sel])
+        if parts:
+            return _shaped(nb, a_arr.shape), _shaped(nu, a_arr.shape)
+        return _shaped(nb + nu, a_arr.shape)
+
+    def _pressure_one(self, a, phi):
+        """(bounded, unbounded) [Pa] at one contact parameter a, phi 1-D in (-pi, pi]."""
         if not self.materials.closed_form:
             return self._numeric_pressure(a, phi)
-        inside = np.abs(phi) < eps
-        flat = np.ascontiguousarray(np.where(inside, phi, 0.0).ravel())
+        inside = np.abs(phi) < 2 * math.atan(a)
+        flat = np.ascontiguousarray(np.where(inside, phi, 0.0))
         nb, nu = _load.pressure_array(R=self.R, a=a, phi=flat, **self._args())
-        mask = inside.ravel()
-        return _shaped(np.where(mask, nb, 0.0), phi.shape), _shaped(np.where(mask, nu, 0.0), phi.shape)
+        return np.where(inside, nb, 0.0), np.where(inside, nu, 0.0)
 
     def gap(self, a, phi):
         """Gap h(phi) of (5.9) [m]: numpy-broadcast over a and phi; 0 inside the contact."""

@@ -144,13 +144,21 @@ class Curve:
     ddelta_da: np.ndarray
     dG_da_P: np.ndarray
     dG_da_delta: np.ndarray
+    P: np.ndarray = None          # [N/m], set when the curve comes from a Contact (Contact.curve)
+    delta: np.ndarray = None      # [m], likewise
 
     COLUMNS = ("a", "eps", "eps_star", "P_star", "delta_over_Delta", "h_pi_over_Delta", "feasible",
                "stable_load", "stable_grip")
 
     def table(self):
-        """Columns of :attr:`COLUMNS` as a dict of arrays (booleans as 0/1)."""
-        return {k: np.asarray(getattr(self, k), dtype=float) for k in self.COLUMNS}
+        """Columns of :attr:`COLUMNS` (plus P [N/m], delta [m] when dimensional) as a dict of arrays
+        (booleans as 0/1)."""
+        cols = self.COLUMNS + (("P", "delta") if self.P is not None else ())
+        return {k: np.asarray(getattr(self, k), dtype=float) for k in cols}
+
+    def __repr__(self):
+        return (f"Curve({self.regime}, M={self.M:.6g}, theta={self.theta:.6g}, {np.size(self.a)} points"
+                f"{', dimensional' if self.P is not None else ''})")
 
 
 def curve(M, theta, regime="sub-critical", n=2000, gb=None, a=None, alpha_ratio=0.0):
@@ -192,6 +200,8 @@ class Point:
     delta_over_Delta: float
     h_pi_over_Delta: float
     feasible: bool
+    P: float = None               # [N/m], set when the point comes from a Contact (Contact.adherence)
+    delta: float = None           # [m], likewise
 
 
 def _bisect(f, lo, hi):

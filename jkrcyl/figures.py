@@ -256,7 +256,7 @@ def _pressure_panels(cases, regime, title, n, alpha_ratio=0.0):
         a = roots[-1] if regime == "sub-critical" else roots[0]
         eps = 2 * math.atan(a)
         phi = -eps * np.cos(np.pi * (np.arange(n) + 0.5) / n)   # Chebyshev nodes: resolve the edge patches
-        nb, nu = c.pressure(a, phi)
+        nb, nu = c.pressure(a, phi, parts=True)
         sc = c.R / abs(P_target * c.load_scale)
         ys = {"bounded": nb * sc, "unbounded": nu * sc, "total": (nb + nu) * sc}
         lo, hi = pressure_limits(ys, phi, eps)

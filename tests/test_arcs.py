@@ -161,7 +161,7 @@ def test_state_fields_and_equilibrium_for_alpha_pairs(name):
     from scipy.integrate import quad
     for a, P in zip(st.a, st.P):
         eps = 2 * math.atan(a)
-        f = lambda x: sum(c.pressure(a, np.array([x]))[i][0] for i in (0, 1)) * math.cos(x)
+        f = lambda x: sum(c.pressure(a, np.array([x]), parts=True)[i][0] for i in (0, 1)) * math.cos(x)
         val = 2 * c.R * quad(f, 0, eps, limit=200, epsabs=0, epsrel=1e-11)[0]
         assert abs(val - P) < 1e-7 * abs(c.load_scale)
 

@@ -149,7 +149,7 @@ def test_fig04_limits_show_the_edge_patches(built, panel):
     a = max(eq.solve_load(M, 1.0, P_target, "sub-critical"))
     eps = 2 * math.atan(a)
     phi = np.linspace(0.0, 0.999 * eps, 2000)
-    nb, nu = c.pressure(a, phi)
+    nb, nu = c.pressure(a, phi, parts=True)
     total = (nb + nu) * c.R / abs(P_target * c.load_scale)
     tensile = phi[total < 0]
     assert tensile.size and tensile.min() > 0.9 * eps   # one narrow tensile patch next to the edge
@@ -170,7 +170,7 @@ def test_fig12a_limits_show_the_negative_bounded_part(built):
     a = min(eq.solve_load(M, 1.0, P_target, "super-critical"))
     eps = 2 * math.atan(a)
     phi = np.linspace(-0.999 * eps, 0.999 * eps, 801)
-    nb, _ = c.pressure(a, phi)
+    nb, _ = c.pressure(a, phi, parts=True)
     bounded = nb * c.R / abs(P_target * c.load_scale)
     assert bounded.min() < 0
     lo, hi = _panel_limits(fig, 0)
