@@ -14,7 +14,8 @@ import numpy as np
 import pytest
 
 import jkrcyl
-from jkrcyl import forward, paper
+from jkrcyl import forward
+from reference import paper
 
 MAT = jkrcyl.Materials(G=1.0, kappa=2.0, G_I=1.0, kappa_I=2.0)           # vartheta = 1, alpha* = 0
 SINGLE = [b for b in forward.BRANCH_SOLVERS if b not in ("two-patch", "full-contact", "separated")]
@@ -173,3 +174,38 @@ def test_cli_solve_physical_columns():
     rows = [dict(zip(head, x.split(","))) for x in lines[2:]]
     assert all(float(row["P [N/m]"]) == pytest.approx(-500, rel=1e-9) for row in rows)
     assert {row["stable"] for row in rows} <= {"true", "false"}
+
+
+# --- item 4: dimensional curves, adherence points and pressure ----------------------------------------------
+def test_curve_and_adherence_carry_physical_units():
+    c = contact(0.3)
+    cv = c.curve(n=50)
+    assert np.allclose(cv.P, c.state(cv.a).P, rtol=1e-12)
+    assert np.allclose(cv.delta, c.state(cv.a).delta, rtol=1e-12, atol=1e-15 * c.Delta)
+    assert {"P", "delta"} <= set(cv.table())
+    assert repr(cv).startswith("Curve(sub-critical") and len(repr(cv)) < 120
+    (p,) = c.adherence("load")
+    assert p.P == pytest.approx(float(c.state(p.a).P), rel=1e-12)
+    assert p.delta == pytest.approx(float(c.state(p.a).delta), rel=1e-12)
+
+
+def test_pressure_total_sign_wrap_and_arrays():
+    c = contact(0.3)
+    a = np.array([[0.3], [0.6]])
+    phi = np.array([-0.4, 0.0, 0.2, 2.5])
+    N = c.pressure(a, phi)
+    nb, nu = c.pressure(a, phi, parts=True)
+    assert N.shape == (2, 4) and np.array_equal(N, nb + nu)
+    assert np.allclose(c.pressure(a, phi + 2 * math.pi), N, rtol=1e-12, atol=0)   # wrapped like the gap
+    assert np.array_equal(c.pressure(a, -phi), c.pressure(a, phi))      # even in phi
+    assert np.all(N[:, 3] == 0)                                          # outside the contact
+    for i, ai in enumerate(a[:, 0]):
+        assert np.array_equal(c.pressure(ai, phi), N[i])
+    # sign: compressive positive, R int N cos(phi) dphi = P (4.4); phi = eps sin(t) removes the edge singularity
+    for ai in (0.3, 0.6):
+        eps = 2 * math.atan(ai)
+        t, wts = np.polynomial.legendre.leggauss(200)
+        t = 0.5 * math.pi * t
+        ph = eps * np.sin(t)
+        P = c.R * np.sum(0.5 * math.pi * wts * c.pressure(ai, ph) * np.cos(ph) * eps * np.cos(t))
+        assert P == pytest.approx(float(c.state(ai).P), rel=1e-6)
