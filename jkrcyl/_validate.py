@@ -1,15 +1,42 @@
-"""Input checks: every bad value gets a ValueError that names the parameter and the allowed range."""
+"""Input checks: every bad value gets a ValueError that names the parameter and the allowed range.
+
+Documented domain (issue 11): every real input is 0 or has magnitude in [TINY, HUGE] = [1e-100, 1e100]
+(inf only where a parameter allows it, e.g. a rigid body); the contact parameter a = tan(eps/2) lies in
+[A_MIN, A_MAX] = [1e-100, 1e20] (beyond, the closed forms under- or overflow); vartheta <= 1e100 or inf;
+counts n <= N_MAX = 1e6.  Booleans, strings, complex numbers and None are not numbers here.
+"""
 import math
+import numbers
 
 import numpy as np
 
+TINY, HUGE = 1e-100, 1e100
+A_MIN, A_MAX = 1e-100, 1e20
+THETA_MAX = 1e100
+N_MAX = 1_000_000
 
-def finite_scalar(name, value, low=None, high=None, low_open=False, allow_inf=False):
-    """A real number in [low, high] (or (low, high] with low_open); inf only with allow_inf."""
+
+def real(name, value):
+    """float(value) for a real number (int, float, numpy real scalar or size-1 real array), else ValueError."""
+    if isinstance(value, (bool, np.bool_)) or value is None or isinstance(value, (str, bytes)):
+        raise ValueError(f"{name} must be a real number, got {value!r}")
+    if isinstance(value, np.ndarray):
+        if value.size != 1 or value.dtype.kind not in "iuf":
+            raise ValueError(f"{name} must be a real number, got {value!r}")
+        return float(value.reshape(()))
+    if not isinstance(value, numbers.Real):
+        raise ValueError(f"{name} must be a real number, got {value!r}")
     try:
-        v = float(value)
-    except (TypeError, ValueError):
+        return float(value)
+    except (TypeError, ValueError, OverflowError):
         raise ValueError(f"{name} must be a real number, got {value!r}") from None
+
+
+def finite_scalar(name, value, low=None, high=None, low_open=False, allow_inf=False, tiny=TINY, huge=HUGE):
+    """A real number in [low, high] (or (low, high] with low_open); inf only with allow_inf.
+
+    Finite values must also be 0 or of magnitude in [tiny, huge] (the documented domain)."""
+    v = real(name, value)
     if math.isnan(v) or (math.isinf(v) and not allow_inf):
         raise ValueError(f"{name} must be finite, got {v}")
     lo_ok = low is None or (v > low if low_open else v >= low)
@@ -18,21 +45,47 @@ def finite_scalar(name, value, low=None, high=None, low_open=False, allow_inf=Fa
         hi_txt = "inf" if high is None else f"{high:g}"
         bracket = "(" if low_open or low is None else "["
         raise ValueError(f"{name} must be in {bracket}{lo_txt}, {hi_txt}], got {v:g}")
+    if math.isfinite(v) and v != 0 and not tiny <= abs(v) <= huge:
+        zero_ok = low is None or low < 0 or (low == 0 and not low_open)
+        raise ValueError(f"{name} must be {'0 or ' if zero_ok else ''}of magnitude in [{tiny:g}, {huge:g}] "
+                         f"(the supported domain), got {v:g}")
     return v
 
 
+def count(name, value, low, high=N_MAX):
+    """An integer in [low, high] (floats with integral values accepted)."""
+    v = finite_scalar(name, value, low=low, high=high)
+    if v != int(v):
+        raise ValueError(f"{name} must be an integer, got {v:g}")
+    return int(v)
+
+
 def contact_parameter(a):
-    """a = tan(eps/2): float array, every entry finite and > 0."""
-    arr = np.asarray(a, dtype=float)
+    """a = tan(eps/2): float array, every entry in [A_MIN, A_MAX]."""
+    if a is None or isinstance(a, (str, bytes, bool, np.bool_)):
+        raise ValueError(f"a must be a real number or an array of them, got {a!r}")
+    try:
+        arr = np.asarray(a)
+    except (TypeError, ValueError):
+        raise ValueError(f"a must be a real number or an array of them, got {a!r}") from None
+    if arr.dtype.kind not in "iuf":
+        raise ValueError(f"a must be a real number or an array of them, got {a!r}")
+    arr = arr.astype(float)
     if arr.size == 0:
         raise ValueError("a must not be empty")
     bad = ~np.isfinite(arr) | (arr <= 0)
     if bad.any():
         raise ValueError(f"a must be in (0, inf) (a = tan(eps/2), 0 < eps < pi), got {arr[bad].flat[0]:g}")
+    out = (arr < A_MIN) | (arr > A_MAX)
+    if out.any():
+        raise ValueError(f"a must be in [{A_MIN:g}, {A_MAX:g}] (the supported domain of a = tan(eps/2)), "
+                         f"got {arr[out].flat[0]:g}")
     return arr
 
 
 def theta(value):
-    """vartheta = 1/2 + G (kappa_I + 1)/(2 G_I (1 + kappa)) >= 1/2; inf is the rigid cradle."""
-    v = finite_scalar("theta", value, low=0.5, allow_inf=True)
+    """vartheta = 1/2 + G (kappa_I + 1)/(2 G_I (1 + kappa)) in [1/2, THETA_MAX]; inf is the rigid cradle."""
+    v = finite_scalar("theta", value, low=0.5, allow_inf=True, huge=math.inf)
+    if math.isfinite(v) and v > THETA_MAX:
+        raise ValueError(f"theta must be in [0.5, {THETA_MAX:g}] or inf (the supported domain), got {v:g}")
     return v

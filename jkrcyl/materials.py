@@ -2,7 +2,7 @@
 import math
 from dataclasses import dataclass
 
-from ._validate import finite_scalar
+from ._validate import THETA_MAX, finite_scalar
 
 ALPHA_TOLERANCE = 1e-9   # |alpha*| / beta* below this counts as alpha* = 0
 
@@ -30,6 +30,9 @@ class Materials:
             object.__setattr__(self, name, finite_scalar(name, getattr(self, name), low=1.0))
         if math.isinf(self.G) and math.isinf(self.G_I):
             raise ValueError("G and G_I are both inf: at least one body must be deformable")
+        if not (math.isfinite(self.beta) and self.beta > 0 and (self.theta <= THETA_MAX or math.isinf(self.G))):
+            raise ValueError(f"G, G_I: beta* must be finite and vartheta <= {THETA_MAX:g} or inf (supported domain), "
+                             f"got G = {self.G:g}, G_I = {self.G_I:g}")
 
     @classmethod
     def from_young(cls, E, nu, E_I, nu_I):
@@ -72,13 +75,19 @@ class Materials:
 
     @property
     def inv_theta(self):
-        """1/vartheta = (1 + kappa)/(G beta*); 0 for a rigid cradle (G = inf)."""
-        return (1 + self.kappa) / (self.G * self.beta)
+        """1/vartheta; 0 for a rigid cradle (G = inf)."""
+        th = self.theta
+        return 0.0 if math.isinf(th) else 1 / th
 
     @property
     def theta(self):
-        """vartheta = G beta*/(1 + kappa) = 1/2 + G (kappa_I + 1)/(2 G_I (1 + kappa)) (section 4)."""
-        return math.inf if self.inv_theta == 0 else 1 / self.inv_theta
+        """vartheta = G beta*/(1 + kappa) = 1/2 + G (kappa_I + 1)/(2 G_I (1 + kappa)) >= 1/2 (section 4).
+
+        Summed in the second form, so a rigid indenter (G_I = inf) gives exactly 1/2 (the first form rounds
+        to 0.4999999999999999 for nu = 0.5, issue 11)."""
+        if math.isinf(self.G):
+            return math.inf
+        return 0.5 + self.G * (self.kappa_I + 1) / (2 * self.G_I * (1 + self.kappa))
 
     @property
     def inv_G_I(self):
