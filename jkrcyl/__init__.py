@@ -12,4 +12,10 @@ from .critical import a_crit
 from .equilibria import zero_load_contact, zero_load_max_M
 from .materials import Materials
 
-__all__ = ["Contact", "Materials", "State", "a_crit", "zero_load_contact", "zero_load_max_M"]
+try:
+    from importlib.metadata import PackageNotFoundError, version as _version
+    __version__ = _version("jkrcyl")
+except PackageNotFoundError:         # running from a source tree that was never installed
+    __version__ = "0.1.0"
+
+__all__ = ["__version__", "Contact", "Materials", "State", "a_crit", "zero_load_contact", "zero_load_max_M"]

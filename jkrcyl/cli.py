@@ -12,6 +12,7 @@ Errors are one line on stderr naming the bad parameter; exit status 2.
 import argparse
 import json
 import math
+import re
 import sys
 
 import numpy as np
@@ -22,6 +23,11 @@ EXIT_USAGE = 2
 
 
 class _Parser(argparse.ArgumentParser):
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        # "-2e6" and "-inf" are values, not options (argparse alone knows only "-2" and "-.5")
+        self._negative_number_matcher = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-inf$")
+
     def error(self, message):
         sys.stderr.write(f"{self.prog}: error: {message}\n")
         raise SystemExit(EXIT_USAGE)
@@ -54,17 +60,18 @@ def _resolve(args):
     phys = [args.E, args.nu, args.E_I, args.nu_I, args.R, args.Delta, args.w]
     if any(v is not None for v in phys):
         names = ("E", "nu", "E-I", "nu-I", "R", "Delta", "w")
+        if args.M is not None:
+            raise ValueError("M: give either --M (with --theta, --gb) or the physical inputs, not both")
         missing = [n for n, v in zip(names, phys) if v is None]
         if missing:
             raise ValueError(f"--{missing[0]} is required with physical inputs")
-        if args.M is not None:
-            raise ValueError("M: give either --M or the physical inputs, not both")
         from .contact import Contact
         from .materials import Materials
         mat = Materials.from_young(args.E, args.nu, args.E_I, args.nu_I)
         if args.Delta == 0:
             raise ValueError("Delta must be > 0 here (M and P* divide by Delta; neat fit: see jkrcyl.special)")
         c = Contact(R=args.R, Delta=args.Delta, w=args.w, materials=mat)
+        args.contact = c                          # physical columns (P [N/m], delta [m]) in the output
         args.alpha_ratio = mat.alpha_ratio        # alpha* != 0: curve/adherence use the numerical solver
         return eq.from_contact(c)
     if args.M is None:
@@ -75,23 +82,25 @@ def _resolve(args):
 
 def _cmd_curve(args):
     M, th, gb = _resolve(args)
-    n = args.n
-    if n < 2:
-        raise ValueError(f"n must be >= 2, got {n}")
+    from ._validate import count
+    from .cli_forward import PHYSICAL_UNITS, header, json_value, number
+    n = count("n", args.n, low=2)
     cv = eq.curve(M, th, regime=args.regime, n=n, gb=gb, alpha_ratio=getattr(args, "alpha_ratio", 0.0))
-    table = cv.table()
+    table = {k: getattr(cv, k) for k in cv.COLUMNS}          # booleans stay booleans (true/false)
+    c = getattr(args, "contact", None)
+    if c is not None:
+        table.update(P=cv.P_star * c.load_scale, delta=cv.delta_over_Delta * c.Delta)
     out = open(args.output, "w") if args.output else sys.stdout
     try:
         if args.format == "json":
-            json.dump({"M": M, "theta": th, "gb": gb, "regime": args.regime,
-                       **{k: [None if not math.isfinite(x) else x for x in v.tolist()] for k, v in table.items()}},
-                      out)
+            json.dump({"M": json_value(M), "theta": json_value(th), "gb": json_value(gb), "regime": args.regime,
+                       **{k: [json_value(x) for x in v] for k, v in table.items()}}, out)
             out.write("\n")
         else:
-            out.write(f"# M={M!r} theta={th!r} gb={gb!r} regime={args.regime}\n")
-            out.write(",".join(table) + "\n")
+            out.write(f"# M={number(M)} theta={number(th)} gb={number(gb)} regime={args.regime}\n")
+            out.write(header(table, PHYSICAL_UNITS) + "\n")
             for row in zip(*table.values()):
-                out.write(",".join(repr(float(x)) for x in row) + "\n")
+                out.write(",".join(number(x) for x in row) + "\n")
     finally:
         if out is not sys.stdout:
             out.close()
@@ -154,23 +163,23 @@ def _cmd_adherence(args):
                    "zero_load_M_max": None if math.isinf(Mmax) else Mmax}, sys.stdout)
         sys.stdout.write("\n")
         return 0
-    print(f"M = {M:.17g}, theta = {th:g}, gb = {gb:.17g}" + (f", alpha*/beta* = {ar:.6g} (numerical solver)"
+    print(f"M = {M:.10g}, theta = {th:g}, gb = {gb:.10g}" + (f", alpha*/beta* = {ar:.6g} (numerical solver)"
                                                               if ar else ""))
     print("fixed-load adherence (minimum of P* per branch):")
     for p in load or []:
-        print(f"  {p.regime:14s} a = {p.a:.17g}  eps = {p.eps:.12g}  P* = {p.P_star:.17g}  "
+        print(f"  {p.regime:14s} a = {p.a:.10g}  eps = {p.eps:.12g}  P* = {p.P_star:.10g}  "
               f"delta/Delta = {p.delta_over_Delta:.12g}  feasible = {p.feasible}")
     if not load:
         print("  none (no minimum of P* on any branch)")
     print("fixed-grip stationary points (d delta/da = 0):")
     for p in grip:
-        print(f"  {p.regime:14s} {p.kind} a = {p.a:.17g}  P* = {p.P_star:.17g}  "
-              f"delta/Delta = {p.delta_over_Delta:.17g}  feasible = {p.feasible}")
+        print(f"  {p.regime:14s} {p.kind} a = {p.a:.10g}  P* = {p.P_star:.10g}  "
+              f"delta/Delta = {p.delta_over_Delta:.10g}  feasible = {p.feasible}")
     if not grip:
         print("  none")
-    print("zero-load contact (8.1): " + (", ".join(f"a0 = {x:.17g}" for x in a0) if a0 else "none"))
+    print("zero-load contact (8.1): " + (", ".join(f"a0 = {x:.10g}" for x in a0) if a0 else "none"))
     if not math.isinf(Mmax):
-        print(f"  (8.1) has roots for M <= {Mmax:.17g}")
+        print(f"  (8.1) has roots for M <= {Mmax:.10g}")
     if confined:
         print(f"confined regime (slow upward loading, jkrcyl.twopatch): {confined['regime']}")
         print(f"  {confined['summary']}")
@@ -215,6 +224,9 @@ def _cmd_atlas(args):
     from . import atlas
     if args.n_M < 2 or args.n_theta < 2:
         raise ValueError(f"n-M and n-theta must be >= 2, got {args.n_M} and {args.n_theta}")
+    if not args.theta_min < args.theta_max:
+        raise ValueError(f"theta-max must be > theta-min, got theta-min = {args.theta_min:g}, "
+                         f"theta-max = {args.theta_max:g}")
     import pathlib
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -236,6 +248,8 @@ def _cmd_atlas(args):
 
 def build_parser():
     p = _Parser(prog="jkrcyl", description=__doc__.split("\n\n")[0])
+    from . import __version__
+    p.add_argument("--version", action="version", version=f"jkrcyl {__version__}")
     sub = p.add_subparsers(dest="command", metavar="command", title="commands (figures, curve, adherence, two-patch, atlas)", parser_class=_Parser)
     sub.required = True
     f = sub.add_parser("figures", help="draw the paper's Figures 2-12 (PNG, PDF, CSV)",
@@ -299,7 +313,11 @@ def main(argv=None):
     args = parser.parse_args(argv)
     try:
         return args.func(args)
-    except ValueError as exc:
+    except BrokenPipeError:                       # `jkrcyl curve ... | head`: the reader left; no traceback
+        import os
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
+    except (ValueError, ArithmeticError) as exc:  # ArithmeticError: outside the domain the checks know
         msg = str(exc).splitlines()[0] if str(exc) else "invalid input"
         sys.stderr.write(f"jkrcyl {args.command}: error: {msg}\n")
         return EXIT_USAGE

@@ -205,7 +205,8 @@ def fig03(n=600, alpha_ratio=0.0):
 
 
 def figure_contact(M, theta=1.0, alpha_ratio=0.0):
-    """The Contact behind the pressure figures: R = Delta = 1, G = 1, kappa = 1.8 (nu = 0.3) at vartheta = 1.
+    """The Contact behind the pressure figures: R = 2, Delta = 1 (pin radius R - Delta > 0; N R/P depends on
+    neither), G = 1, kappa = 1.8 (nu = 0.3) at vartheta = 1.
 
     alpha_ratio = 0: identical bodies (kappa_I = 1.8, G_I = 1).  Otherwise kappa_I, G_I keep vartheta = 1,
     i.e. (kappa_I + 1)/G_I = kappa + 1, and give (kappa_I - 1)/(kappa_I + 1) = (kappa - 1)/(kappa + 1) - 2
@@ -219,9 +220,9 @@ def figure_contact(M, theta=1.0, alpha_ratio=0.0):
         raise ValueError(f"alpha_ratio: the pressure figures need alpha*/beta* in (-0.36, 0.143], got {alpha_ratio}")
     kappa_I = (1 + q) / (1 - q)
     mat = Materials(G=1.0, kappa=kappa, G_I=(kappa_I + 1) / (kappa + 1), kappa_I=kappa_I)
-    probe = Contact(R=1.0, Delta=1.0, w=1.0, materials=mat)
+    probe = Contact(R=2.0, Delta=1.0, w=1.0, materials=mat)
     w = (M / probe.M) ** 2          # M is proportional to sqrt(w)
-    return Contact(R=1.0, Delta=1.0, w=w, materials=mat)
+    return Contact(R=2.0, Delta=1.0, w=w, materials=mat)
 
 
 def pressure_limits(series, phi, eps, edge=0.97):

@@ -127,12 +127,12 @@ def test_fig09_shows_confinement_contrast_and_half_plane_is_told_apart(built):
 
 
 def _independent_contact(M):
-    """Identical nu = 0.3 bodies (vartheta = 1, alpha* = 0), R = Delta = 1, w from the definition of M of
+    """Identical nu = 0.3 bodies (vartheta = 1, alpha* = 0), R = 2, Delta = 1, w from the definition of M of
     section 6: M = sqrt(w A R)/(sqrt(2) Delta vartheta), A = beta*/(2 pi)."""
     mat = Materials.from_young(E=2.6, nu=0.3, E_I=2.6, nu_I=0.3)
     A = mat.beta / (2 * math.pi)
-    w = 2 * (M * 1.0 * 1.0) ** 2 / (A * 1.0)
-    return Contact(R=1.0, Delta=1.0, w=w, materials=mat)
+    w = 2 * (M * 1.0 * 1.0) ** 2 / (A * 2.0)
+    return Contact(R=2.0, Delta=1.0, w=w, materials=mat)
 
 
 def _panel_limits(fig, i):
