@@ -437,7 +437,7 @@ def branches(M, theta, gb=None, n=None, nodes=N_NODES, h0=0.05, alpha_ratio=0.0)
     # onsets and may run into the corner of two small arcs); clamped so that stray Newton iterates stay evaluable
     lo, hi = 0.1 * EPS_AXIS, math.pi - 0.1 * GAP_FULL
     fx = lambda x: residual(max(x[0], lo), max(x[1], lo), M, th, gb, nodes, ar) if x[0] + x[1] < hi else math.nan
-    f = lambda u: fx(np.exp(u))
+    f = lambda u: fx(np.exp(np.minimum(u, 1.2)))      # exp(1.2) > pi: stray iterates give nan, not overflow
     clip = _clipper(f)
     found = []          # (points in u, ends)
     for e in onset_angles(M, th, gb, ar):
