@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validate import finite_scalar, theta as _check_theta
+from ._validate import contact_parameter, finite_scalar, theta as _check_theta
 from .critical import a_crit as _a_crit
 from .generated import derivatives as _der
 from .generated import gap as _gap
@@ -66,7 +66,7 @@ def _ac(th, gb, ar):
 def _params(M, theta, gb):
     M = finite_scalar("M", M, low=0.0)
     th = _check_theta(theta)
-    gb = default_gb(th) if gb is None else finite_scalar("gb", gb, low=0.0)
+    gb = default_gb(th) if gb is None else finite_scalar("gb", gb, low=0.0, high=1.0)   # (1/G_I)/beta* <= 1
     inv_t = 0.0 if math.isinf(th) else 1.0 / th
     m = M if math.isinf(th) else M * th          # m = M vartheta = zeta beta/(4 pi Delta)
     scale = 1.0 if math.isinf(th) else th        # P* = p/scale
@@ -115,6 +115,33 @@ def _star(a, m, inv_t, gb, ar=0.0):
         gP, gd = np.full_like(a, np.nan), np.full_like(a, np.nan)
     h = _gap.gap_pi_array(Delta=1.0, a=a, beta=1.0, inv_theta=inv_t, zeta=4 * math.pi * m)
     return dict(p=p, dp=dp, dn=dn, ddn=ddn, gP=gP, gd=gd, h=h)
+
+
+SMALL_A_POINTS = 200      # log-spaced points below the root grid (small M, issue 11)
+
+
+def _root_grid(regime, th, n, ac, M):
+    """:func:`_grid` plus log-spaced points below its first one on the branch starting at a = 0: for small M the
+    stationary points sit near a ~ (vartheta M/2)^(2/3) (the half-plane limit (7.3b), section 8.1), below the
+    first point of a grid uniform in eps* (found for M down to 1e-12, tests/test_bad_input.py)."""
+    grid = _grid(regime, th, n, ac)
+    if regime != "sub-critical" or M == 0:
+        return grid
+    lo = (M * (1.0 if math.isinf(th) else th) / 2) ** (2 / 3) / 100
+    if lo >= grid[0]:
+        return grid
+    return np.concatenate([np.geomspace(max(lo, 1e-100), grid[0], SMALL_A_POINTS, endpoint=False), grid])
+
+
+def _on_branch(a, regime, th, ac):
+    """Contact parameters given to :func:`curve` must lie on the branch asked for (a_crit separates them)."""
+    a = contact_parameter(a)
+    if not math.isinf(th):
+        off = a >= ac if regime == "sub-critical" else a <= ac
+        if off.any():
+            side = "<" if regime == "sub-critical" else ">"
+            raise ValueError(f"a must be {side} a_crit = {ac:.6g} on the {regime} branch, got {a[off].flat[0]:g}")
+    return a
 
 
 @dataclass(frozen=True)
@@ -173,7 +200,7 @@ def curve(M, theta, regime="sub-critical", n=2000, gb=None, a=None, alpha_ratio=
     if a is None:
         n = int(finite_scalar("n", n, low=2))
         a = _grid(regime, th, n, ac)
-    a = np.ascontiguousarray(np.asarray(a, dtype=float))
+    a = np.ascontiguousarray(_on_branch(a, regime, th, ac))
     st = _star(a, m, inv_t, gb, ar)
     return Curve(M=M, theta=th, gb=gb, regime=regime, a=a, eps=2 * np.arctan(a), eps_star=_eps_star(a, th, ac),
                  P_star=st["p"] / scale, delta_over_Delta=st["dn"], h_pi_over_Delta=st["h"],
@@ -254,7 +281,7 @@ def stationary_points(M, theta, control="load", regime="sub-critical", gb=None, 
     f_arr = lambda x: _star(x, m, inv_t, gb, ar)[key]
     f_one = lambda x: float(_star(np.array([x]), m, inv_t, gb, ar)[key][0])
     out = []
-    for r, sgn in _roots(f_arr, f_one, _grid(regime, th, n, ac), _brent if ar else _bisect):
+    for r, sgn in _roots(f_arr, f_one, _root_grid(regime, th, n, ac, M), _brent if ar else _bisect):
         st = _star(np.array([r]), m, inv_t, gb, ar)
         out.append(Point(control=control, regime=regime, kind="min" if sgn > 0 else "max", M=M, theta=th,
                          a=r, eps=2 * math.atan(r), eps_star=float(_eps_star(r, th, ac)),
