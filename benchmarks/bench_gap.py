@@ -15,7 +15,7 @@ import warnings
 import numpy as np
 from scipy.integrate import IntegrationWarning, quad
 
-from jkrcyl.generated.gap import gap_pi_array
+from jkrcyl.generated.gap import gap_pi_into
 
 R, DELTA, BETA, INV_THETA, ZETA = 1.0, 1e-3, 3.0, 1.0, 2e-3      # identical materials, vartheta = 1
 KAPPA_I, INV_G_I = 2.0, 1.0                                          # (kappa_I + 1)/(2 G_I) = beta (1 - t/2)
@@ -65,11 +65,12 @@ def main():
     warnings.simplefilter("ignore", IntegrationWarning)   # QUADPACK roundoff notes at 1e-13
     a = np.logspace(-3, 1, 400)
     a = a[np.abs(2 - INV_THETA * (np.log1p(a * a) + 2 * a**4)) > 1e-2]     # away from a_crit (infinite load)
-    gap_pi_array(DELTA, a[:2].copy(), BETA, INV_THETA, ZETA)               # compile
+    hk = np.empty(a.size)
+    gap_pi_into(hk[:2], DELTA, a[:2].copy(), BETA, INV_THETA, ZETA)        # compile
     reps = 200
     t0 = time.perf_counter()
     for _ in range(reps):
-        hk = gap_pi_array(DELTA, a, BETA, INV_THETA, ZETA)
+        gap_pi_into(hk, DELTA, a, BETA, INV_THETA, ZETA)
     t_kernel = (time.perf_counter() - t0) / (reps * a.size)
     t0 = time.perf_counter()
     hq = np.array([h_pi_quad(x) for x in a])

@@ -3,7 +3,7 @@ import argparse
 import pathlib
 
 from . import approach, derivatives, gap, load, pressure
-from . import state
+from . import confined, green, special, state, zero_load
 from .emit import module_source, package_init
 from .report import Report
 
@@ -14,7 +14,11 @@ MODULES = [
     (approach, "Approach delta (section 5): (5.3)-(5.8) with the sums (A.13)-(A.15)."),
     (gap, "Gap function h(phi) outside the contact (5.9) and h(pi) (5.10) in closed form."),
     (derivatives, "Slopes dP/da, d delta/da and dG/da at fixed load and fixed grip (sections 6, 8.2, 8.3)."),
-    (state, "Fused equilibrium state: load_state + approach + gap_pi in one kernel (no new physics)."),
+    (special, "Special cases of section 7 as limits of the general result: (7.1)-(7.7), neat fit."),
+    (zero_load, "Zero-load contact (8.1), its largest M, and the critical contact a_crit (section 4)."),
+    (green, "Green's functions of (2.1) and (5.2) from Michell's solution, any alpha*; work-conjugate approach."),
+    (confined, "Confined regime: the fold comes before h(pi) = 0; super-critical folds zip into full contact."),
+    (state, "Fused equilibrium state: load_state, stress_intensity, approach and gap_pi in one kernel."),
 ]
 
 

@@ -452,7 +452,8 @@ def _kernels():
                       "Approach delta (5.3)/(5.8) [m] at contact parameter a = tan(eps/2), and delta/Delta.\n"
                       "Delta [m], beta = beta* [1/Pa], inv_G_I = 1/G_I [1/Pa], inv_theta = 1/vartheta,\n"
                       "zeta = zeta* = sqrt(2wR/A) [N/m^(1/2)].  R and kappa_I enter only through zeta,\n"
-                      "beta and vartheta.  Stable in float64 for 1e-8 <= a <= 1e4 (away from a_crit).")
+                      "beta and vartheta.  Stable in float64 for 1e-8 <= a <= 1e4 (away from a_crit).",
+                      forms=("into",))
     parts = Kernel("approach_parts", (("d_Delta", dD), ("d_zeta", dz)),
                    "delta = Delta * d_Delta + zeta * d_zeta: d_Delta [-], d_zeta [m/(N/m^(1/2))].")
     return [approach, parts]

@@ -154,7 +154,8 @@ def derive(report):
                                                   "dG_da_P", "dG_da_delta")),
                      "Dimensionless equilibrium at contact parameter a: p = P beta*/(4 pi Delta) (= vartheta P*,\n"
                      "= P_R* of (7.6)), dp/da, delta/Delta, d(delta/Delta)/da, (1/w) dG/da|_P, (1/w) dG/da|_delta.\n"
-                     "m = M vartheta (= M_R* for vartheta = inf), inv_theta = 1/vartheta, gb = (1/G_I)/beta*."))
+                     "m = M vartheta (= M_R* for vartheta = inf), inv_theta = 1/vartheta, gb = (1/G_I)/beta*.",
+                     forms=("into",)))
     return ks
 
 

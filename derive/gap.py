@@ -382,7 +382,7 @@ def _asinh_minus(y, cut=sp.Rational(1, 4), terms=14):
     """arcsinh(y) - y without cancellation: Maclaurin series (Horner) below ``cut`` (< 1e-17 relative)."""
     poly = sum(sp.Integer(-1)**k * sp.factorial(2 * k) / (4**k * sp.factorial(k)**2 * (2 * k + 1)) * _u**(k - 1)
                for k in range(1, terms))
-    series = y**3 * sp.horner(poly, _u).subs(_u, y**2)
+    series = y**3 * sp.horner(poly, _u).subs(_u, sp.UnevaluatedExpr(y**2))    # Horner in one variable
     return sp.Piecewise((series, y < cut), (sp.asinh(y) - y, True))
 
 
@@ -439,27 +439,21 @@ def _kernels():
     k_pi = Kernel("gap_pi", (("h_pi", h_pi),),
                   "Gap at phi = pi (5.10) in closed form [m]: h(pi) = -2 E c0 + c1 (arcsinh(1/a) - 1/E).\n"
                   "The gap inequality holds at every exterior angle iff h_pi >= 0 (the minimum of h over\n"
-                  "eps <= |phi| <= pi is min(0, h_pi), at phi = pi). Same arguments as load_state.")
+                  "eps <= |phi| <= pi is min(0, h_pi), at phi = pi). Same arguments as load_state.",
+                  forms=("into",))
     k_gap = Kernel("gap", (("h", h),),
                    "Gap h(phi) of (5.9) [m] at any angle phi [rad] (periodic, even); 0 inside the contact.\n"
                    "h = -(2 E^2 c0 + c1) sin(phi/2) sigma - c1 cos(phi) arcsinh(sigma/sin(eps/2)),\n"
                    "sigma = sqrt(sin^2(phi/2) - sin^2(eps/2)); regrouped near the contact end.",
-                   array_args=("a", "phi"))
+                   array_args=("a", "phi"), forms=("into",))
     h_min = sp.Min(h_pi, 0)
-    phi_min = sp.Piecewise((sp.pi, h_pi < 0), (2 * sp.atan(a), True))
+    phi_min = sp.Piecewise((sp.pi, sp.Symbol("h_min", real=True) < 0), (2 * sp.atan(a), True))
     k_min = Kernel("gap_min", (("h_min", h_min), ("phi_min", phi_min)),
                    "Minimum of the gap over the exterior arc eps <= |phi| <= pi [m] and where it occurs [rad]:\n"
                    "min(0, h(pi)), at phi = pi when negative (first overclosure), else 0 at the contact end.\n"
                    "Exact (see the derivation report): h has no interior minimum because r0 <= 0.")
-    # normalised by Delta with M = sqrt(w A R)/(sqrt(2) Delta vartheta) (section 6), vartheta finite
-    zeta_of_M = 4 * sp.pi * Delta * theta * M / beta
-    h_pi_star = sp.expand(h_pi.subs({zeta: zeta_of_M, inv_theta: 1 / theta}) / Delta)
-    if Delta in h_pi_star.free_symbols or beta in h_pi_star.free_symbols:
-        raise AssertionError("h(pi)/Delta is not a function of (a, M, vartheta)")
-    k_star = Kernel("gap_pi_normalised", (("h_pi_star", h_pi_star),),
-                    "h(pi)/Delta as a function of a, M and vartheta (section 6 normalisation).")
     del sol
-    return [k_pi, k_gap, k_min, k_star]
+    return [k_pi, k_gap, k_min]
 
 
 def derive(report):

@@ -286,11 +286,18 @@ def _stable_kernels(report, sol):
     return _kernels(forms, P_star)
 
 
+def stress_intensity_forms(C_, c0_, c1_):
+    """K* of (3.4) with r0 of (2.12) from the constants (C, c0, c1), and G* = (pi/4) A K*^2 (3.5)."""
+    K = -sp.sqrt(4 * sp.pi * R) / E / sp.sqrt(2 * a) * (4 / (R * beta) * Em1 * (c0_ - c1_ / E) + C_ / sp.pi)
+    return K, sp.pi / 4 * beta / (2 * sp.pi) * K**2
+
+
 def _kernels(forms, P_star):
     state = Kernel("load_state", tuple((n, forms[n]) for n in ("P", "B", "C", "c0", "c1", "r0")),
                    "Equilibrium at contact parameter a = tan(eps/2): load P (4.4) [N/m], B = int N dphi (4.5a)\n"
                    "[N/m], C = int p dx (4.5b) [N/m], c0, c1 of (2.6) [m], r0 of (2.12) [N/m^2].\n"
-                   "Delta [m], R [m], beta = beta* [1/Pa], inv_theta = 1/vartheta, zeta = sqrt(2wR/A) [N/m^(1/2)].")
+                   "Delta [m], R [m], beta = beta* [1/Pa], inv_theta = 1/vartheta, zeta = sqrt(2wR/A) [N/m^(1/2)].",
+                   forms=("into",))
     load = Kernel("normalised_load", (("P_star", P_star),),
                   "P* = P beta*/(4 pi Delta vartheta) of section 6 as a function of a, M and vartheta.")
     bounded, unbounded = pressure.pressure_in_angle()
@@ -299,10 +306,9 @@ def _kernels(forms, P_star):
     N_u = forms["r0"] * sp.cos(phi / 2) / (E * sp.sqrt(sp.sin(sp.atan(a) - phi / 2) * sp.sin(sp.atan(a) + phi / 2)))
     press = Kernel("pressure", (("N_bounded", N_b), ("N_unbounded", N_u)),
                    "Contact pressure N(phi) of (5.4) [Pa] for |phi| < eps, split into the bounded part and the\n"
-                   "unbounded (r0) part; the total is their sum.", array_args=("phi",))
-    r0s, c0s, c1s, Cs = sp.symbols("r0 c0 c1 C", real=True)
-    K = -sp.sqrt(4 * sp.pi * R) / E / sp.sqrt(2 * a) * (4 / (R * beta) * Em1 * (c0s - c1s / E) + Cs / sp.pi)
-    sif = Kernel("stress_intensity", (("K", K), ("G_release", sp.pi / 4 * beta / (2 * sp.pi) * K**2)),
+                   "unbounded (r0) part; the total is their sum.", array_args=("phi",), forms=("into",))
+    K, G_release = stress_intensity_forms(*sp.symbols("C c0 c1", real=True))
+    sif = Kernel("stress_intensity", (("K", K), ("G_release", G_release)),
                  "Stress-intensity factor K* (3.4) [Pa m^(1/2)] and energy release rate G* = (pi/4) A K*^2 (3.5)\n"
                  "[J/m^2] from the constants c0, c1 [m] and C [N/m] of a pressure solution.",
                  array_args=("C", "a", "c0", "c1"))

@@ -4,9 +4,13 @@
 Approach delta (section 5): (5.3)-(5.8) with the sums (A.13)-(A.15).
 """
 import math
+from collections import namedtuple
 
-import numpy as np
-from numba import njit, prange
+from numba import njit
+
+Approach = namedtuple("Approach", ["delta", "delta_over_Delta"])
+
+ApproachParts = namedtuple("ApproachParts", ["d_Delta", "d_zeta"])
 
 
 @njit(cache=True)
@@ -18,50 +22,37 @@ def approach(Delta, a, beta, inv_G_I, inv_theta, zeta):
     beta and vartheta.  Stable in float64 for 1e-8 <= a <= 1e4 (away from a_crit).
     """
     x0 = a**2
-    x1 = math.log1p(x0)
-    x2 = a**4
-    x3 = 2*x2
-    x4 = inv_theta*(x1 + x3)
-    x5 = 1/(x4 - 2)
-    x6 = a**6
-    x7 = x0 + 1
-    x8 = 1/x7
+    x1 = x0 + 1
+    x2 = 2*x0*x1
+    x3 = math.log1p(x0)
+    x4 = a**4
+    x5 = 2*x4
+    x6 = inv_theta*(x3 + x5)
+    x7 = a**6
+    x8 = 1/x1
     x9 = math.log1p(1/x0)
-    x10 = 2*x0*x7
-    x11 = x10*x9 + x4 + x6*x8 - inv_G_I*x10/beta
-    x12 = 1/math.pi
-    x13 = math.sqrt(a)
-    x14 = beta*(inv_theta*(6*x0 - x1*x2 + 2*x1 + 8*x2 + x6 + 2) + x3 - 4) + 2*x7**2*(beta*x9 - inv_G_I)*(inv_theta*(x0 - x1) + 2)
-    delta = x5*(-Delta*x11 + ((1/4))*x12*x13*x14*x8*zeta)
-    delta_over_Delta = x5*(-x11 + ((1/4))*x12*x13*x14*x8*zeta/Delta)
-    return delta, delta_over_Delta
+    x10 = x2*x9 + x6 + x7*x8 - inv_G_I*x2/beta
+    x11 = 1/math.pi
+    x12 = math.sqrt(a)
+    x13 = (beta*(inv_theta*(6*x0 - x3*x4 + 2*x3 + 8*x4 + x7 + 2) + x5 - 4) + 2*x1**2*(beta*x9 -
+        inv_G_I)*(inv_theta*(x0 - x3) + 2))
+    x14 = 1/(x6 - 2)
+    delta = x14*(-Delta*x10 + (1/4)*x11*x12*x13*x8*zeta)
+    delta_over_Delta = x14*(-x10 + (1/4)*x11*x12*x13*x8*zeta/Delta)
+    return Approach(delta, delta_over_Delta)
 
 
 @njit(cache=True)
-def approach_array(Delta, a, beta, inv_G_I, inv_theta, zeta):
+def approach_into(out, Delta, a, beta, inv_G_I, inv_theta, zeta):
     """
-    Array form of :func:`approach`: a are 1-D arrays.
+    approach at every a[i], into out (a Approach of 1-D arrays of the same length).
     """
-    n = a.shape[0]
-    delta = np.empty(n)
-    delta_over_Delta = np.empty(n)
-    for i in range(n):
-        delta[i], delta_over_Delta[i] = approach(Delta, a[i], beta, inv_G_I, inv_theta, zeta)
-    return delta, delta_over_Delta
-
-
-@njit(parallel=True, cache=True)
-def approach_parallel(Delta, a, beta, inv_G_I, inv_theta, zeta):
-    """
-    Parallel form of :func:`approach_array` (numba prange over all threads);
-    bit-identical results.
-    """
-    n = a.shape[0]
-    delta = np.empty(n)
-    delta_over_Delta = np.empty(n)
-    for i in prange(n):
-        delta[i], delta_over_Delta[i] = approach(Delta, a[i], beta, inv_G_I, inv_theta, zeta)
-    return delta, delta_over_Delta
+    delta = out.delta
+    delta_over_Delta = out.delta_over_Delta
+    for i in range(a.shape[0]):
+        r = approach(Delta, a[i], beta, inv_G_I, inv_theta, zeta)
+        delta[i] = r.delta
+        delta_over_Delta[i] = r.delta_over_Delta
 
 
 @njit(cache=True)
@@ -70,43 +61,17 @@ def approach_parts(a, beta, inv_G_I, inv_theta):
     delta = Delta * d_Delta + zeta * d_zeta: d_Delta [-], d_zeta [m/(N/m^(1/2))].
     """
     x0 = a**2
-    x1 = math.log1p(x0)
-    x2 = a**4
-    x3 = 2*x2
-    x4 = inv_theta*(x1 + x3)
-    x5 = 1/(x4 - 2)
-    x6 = a**6
-    x7 = x0 + 1
-    x8 = 1/x7
-    x9 = math.log1p(1/x0)
-    x10 = 2*x0*x7
-    d_Delta = -x5*(x10*x9 + x4 + x6*x8 - inv_G_I*x10/beta)
-    d_zeta = ((1/4))*math.sqrt(a)*x5*x8*(beta*(inv_theta*(6*x0 - x1*x2 + 2*x1 + 8*x2 + x6 + 2) + x3 - 4) + 2*x7**2*(beta*x9 - inv_G_I)*(inv_theta*(x0 - x1) + 2))/math.pi
-    return d_Delta, d_zeta
-
-
-@njit(cache=True)
-def approach_parts_array(a, beta, inv_G_I, inv_theta):
-    """
-    Array form of :func:`approach_parts`: a are 1-D arrays.
-    """
-    n = a.shape[0]
-    d_Delta = np.empty(n)
-    d_zeta = np.empty(n)
-    for i in range(n):
-        d_Delta[i], d_zeta[i] = approach_parts(a[i], beta, inv_G_I, inv_theta)
-    return d_Delta, d_zeta
-
-
-@njit(parallel=True, cache=True)
-def approach_parts_parallel(a, beta, inv_G_I, inv_theta):
-    """
-    Parallel form of :func:`approach_parts_array` (numba prange over all threads);
-    bit-identical results.
-    """
-    n = a.shape[0]
-    d_Delta = np.empty(n)
-    d_zeta = np.empty(n)
-    for i in prange(n):
-        d_Delta[i], d_zeta[i] = approach_parts(a[i], beta, inv_G_I, inv_theta)
-    return d_Delta, d_zeta
+    x1 = x0 + 1
+    x2 = 2*x0*x1
+    x3 = math.log1p(x0)
+    x4 = a**4
+    x5 = 2*x4
+    x6 = inv_theta*(x3 + x5)
+    x7 = 1/(x6 - 2)
+    x8 = a**6
+    x9 = 1/x1
+    x10 = math.log1p(1/x0)
+    d_Delta = -x7*(x10*x2 + x6 + x8*x9 - inv_G_I*x2/beta)
+    d_zeta = ((1/4)*math.sqrt(a)*x7*x9*(beta*(inv_theta*(6*x0 - x3*x4 + 2*x3 + 8*x4 + x8 + 2) + x5 -
+        4) + 2*x1**2*(beta*x10 - inv_G_I)*(inv_theta*(x0 - x3) + 2))/math.pi)
+    return ApproachParts(d_Delta, d_zeta)

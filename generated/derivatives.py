@@ -4,9 +4,16 @@
 Slopes dP/da, d delta/da and dG/da at fixed load and fixed grip (sections 6, 8.2, 8.3).
 """
 import math
+from collections import namedtuple
 
-import numpy as np
-from numba import njit, prange
+from numba import njit
+
+LoadSlopes = namedtuple("LoadSlopes", ["dP_da", "ddelta_da"])
+
+ReleaseRateSlopes = namedtuple("ReleaseRateSlopes", ["dG_da_P", "dG_da_delta", "dG_dP"])
+
+EquilibriumStar = namedtuple("EquilibriumStar", ["p", "dp_da", "delta_over_Delta", "ddelta_da",
+                                                 "dG_da_P", "dG_da_delta"])
 
 
 @njit(cache=True)
@@ -17,75 +24,51 @@ def load_slopes(Delta, a, beta, inv_G_I, inv_theta, zeta):
     """
     x0 = a**2
     x1 = math.log1p(x0)
-    x2 = a**4
-    x3 = 2*x2
-    x4 = inv_theta*(x1 + x3)
-    x5 = 1/(x4 - 2)
-    x6 = 4*x0
-    x7 = 1/beta
-    x8 = math.pi*Delta*x7
-    x9 = math.sqrt(a)
-    x10 = inv_theta*(x0 - x1) + 2
-    x11 = x10*zeta
-    x12 = 2*a
-    x13 = x12*(-x11*x9 + x6*x8)
-    x14 = x0 + 1
-    x15 = 1/x14
-    x16 = inv_theta*(1 - x15)
-    x17 = a**((3/2))*zeta
-    x18 = 1/x9
-    x19 = inv_theta*(x15 + x6)
-    x20 = x19*x5
+    x2 = inv_theta*(x0 - x1) + 2
+    x3 = x2*zeta
+    x4 = 2*a
+    x5 = 4*x0
+    x6 = 1/beta
+    x7 = math.pi*Delta*x6
+    x8 = math.sqrt(a)
+    x9 = x4*(-x3*x8 + x5*x7)
+    x10 = x0 + 1
+    x11 = 1/x10
+    x12 = inv_theta*(1 - x11)
+    x13 = a**(3/2)*zeta
+    x14 = 1/x8
+    x15 = inv_theta*(x11 + x5)
+    x16 = a**4
+    x17 = 2*x16
+    x18 = inv_theta*(x1 + x17)
+    x19 = 1/(x18 - 2)
+    x20 = x15*x19
+    dP_da = 2*x19*(x10*x20*x9 + (1/2)*x10*(-16*a*x7 + 4*x12*x13 + x14*x3) - x9)
     x21 = a**6
     x22 = 1/x0
     x23 = math.log1p(x22)
-    x24 = x14*x23
-    x25 = inv_G_I*x7
-    x26 = 2*x14
+    x24 = x10*x23
+    x25 = inv_G_I*x6
+    x26 = 2*x10
     x27 = 1/math.pi
     x28 = beta*x23 - inv_G_I
-    x29 = x10*x28
-    x30 = x14**2
+    x29 = x2*x28
+    x30 = x10**2
     x31 = 2*x30
     x32 = 2*x1
-    x33 = beta*(inv_theta*(6*x0 - x1*x2 + 8*x2 + x21 + x32 + 2) + x3 - 4) + x29*x31
-    x34 = x15*zeta
+    x33 = beta*(inv_theta*(6*x0 - x1*x16 + 8*x16 + x21 + x32 + 2) + x17 - 4) + x29*x31
+    x34 = x11*zeta
     x35 = 1/x30
-    x36 = ((1/2))*x27
-    x37 = x17*x33*x36
+    x36 = (1/2)*x27
+    x37 = x13*x33*x36
     x38 = a**3
     x39 = 2*x38
     x40 = 1/(x22 + 1)
-    dP_da = 2*x5*(x13*x14*x20 - x13 + ((1/2))*x14*(-16*a*x8 + x11*x18 + 4*x16*x17))
-    ddelta_da = x5*(Delta*x12*x20*(2*x0*x24 - x0*x25*x26 + x15*x21 + x4) + 2*Delta*(a**7*x35 - 3*a**5*x15 - a*x19 + x12*x14*x25 - x12*x24 - x23*x39 + x25*x39 + x26*x40/a) - x15*x20*x37 + ((1/8))*x18*x27*x33*x34 + x34*x36*x9*(a*beta*(inv_theta*(-x0*x32 + 16*x0 - x15*x2 + 2*x15 + 3*x2 + 6) + x6) + 4*a*x14*x29 - beta*x10*x31*x40/x38 + x12*x16*x28*x30) - x35*x37)
-    return dP_da, ddelta_da
-
-
-@njit(cache=True)
-def load_slopes_array(Delta, a, beta, inv_G_I, inv_theta, zeta):
-    """
-    Array form of :func:`load_slopes`: a are 1-D arrays.
-    """
-    n = a.shape[0]
-    dP_da = np.empty(n)
-    ddelta_da = np.empty(n)
-    for i in range(n):
-        dP_da[i], ddelta_da[i] = load_slopes(Delta, a[i], beta, inv_G_I, inv_theta, zeta)
-    return dP_da, ddelta_da
-
-
-@njit(parallel=True, cache=True)
-def load_slopes_parallel(Delta, a, beta, inv_G_I, inv_theta, zeta):
-    """
-    Parallel form of :func:`load_slopes_array` (numba prange over all threads);
-    bit-identical results.
-    """
-    n = a.shape[0]
-    dP_da = np.empty(n)
-    ddelta_da = np.empty(n)
-    for i in prange(n):
-        dP_da[i], ddelta_da[i] = load_slopes(Delta, a[i], beta, inv_G_I, inv_theta, zeta)
-    return dP_da, ddelta_da
+    ddelta_da = (x19*(Delta*x20*x4*(2*x0*x24 - x0*x25*x26 + x11*x21 + x18) + 2*Delta*(a**7*x35 -
+        3*a**5*x11 - a*x15 + x10*x25*x4 - x23*x39 - x24*x4 + x25*x39 + x26*x40/a) - x11*x20*x37 + (
+        1/8)*x14*x27*x33*x34 + x34*x36*x8*(a*beta*(inv_theta*(-x0*x32 + 16*x0 - x11*x16 + 2*x11 +
+        3*x16 + 6) + x5) + 4*a*x10*x29 - beta*x2*x31*x40/x38 + x12*x28*x30*x4) - x35*x37))
+    return LoadSlopes(dP_da, ddelta_da)
 
 
 @njit(cache=True)
@@ -98,33 +81,33 @@ def release_rate_slopes(Delta, R, a, beta, inv_G_I, inv_theta, zeta):
     x0 = a**2
     x1 = x0 + 1
     x2 = math.log1p(x0)
-    x3 = a**4
-    x4 = 2*x3
-    x5 = inv_theta*(x2 + x4)
-    x6 = 1/(x5 - 2)
-    x7 = 1/beta
-    x8 = 4*x0
-    x9 = math.pi*Delta
-    x10 = inv_theta*(x0 - x2) + 2
-    x11 = math.sqrt(a)
-    x12 = -x10*x11*zeta + x7*x8*x9
-    x13 = 2*beta
-    x14 = x12*x6
-    x15 = x13*x14
-    x16 = math.log(x1)
-    x17 = inv_theta*x16
-    x18 = beta*x17
-    x19 = x1**2
+    x3 = inv_theta*(x0 - x2) + 2
+    x4 = math.sqrt(a)
+    x5 = 1/beta
+    x6 = 4*x0
+    x7 = math.pi*Delta
+    x8 = -x3*x4*zeta + x5*x6*x7
+    x9 = a**4
+    x10 = 2*x9
+    x11 = inv_theta*(x10 + x2)
+    x12 = 1/(x11 - 2)
+    x13 = x12*x8
+    x14 = x1**2
+    x15 = inv_theta*x14
+    x16 = -4*beta*inv_theta*x1*x12*x8 + 4*x7
+    x17 = 2*beta
+    x18 = x13*x17
+    x19 = math.log(x1)
     x20 = inv_theta*x19
-    x21 = -4*beta*inv_theta*x1*x12*x6 + 4*x9
-    x22 = -4*math.pi*Delta*x1 - 2*beta*x12*x6 + inv_theta*x15 + x14*x18 + x15*x20 + x21
+    x21 = beta*x20
+    x22 = -4*math.pi*Delta*x1 - 2*beta*x12*x8 + inv_theta*x18 + x13*x21 + x15*x18 + x16
     x23 = -x22
     x24 = 1/x1
     x25 = beta*inv_theta
     x26 = 4*beta
     x27 = 1/x0
     x28 = inv_theta*x1
-    x29 = -x17
+    x29 = -x20
     x30 = -inv_theta + x28 + x29 + 2
     x31 = 1/x30
     x32 = inv_theta*(1 - x24)
@@ -132,85 +115,64 @@ def release_rate_slopes(Delta, R, a, beta, inv_G_I, inv_theta, zeta):
     x34 = zeta**(-2)
     x35 = x30**(-2)
     x36 = x34*x35
-    x37 = a**((3/2))
+    dG_da_P = (-4*x23*x36*(x23*x24 + (1/4)*x23*x27 + x23*x33 - x24*(8*math.pi*Delta*x1 - x13*x15*x26
+        - x13*x25 - x16))/beta**2)
+    x37 = a**(3/2)
     x38 = Delta*x31
-    x39 = x38*x7
-    x40 = x1/x11
+    x39 = x38*x5
+    x40 = x1/x4
     x41 = x1*x26
     x42 = beta*x28
-    x43 = x13*x19
-    x44 = inv_G_I*x19
-    x45 = x1**3
-    x46 = beta*x20
-    x47 = 2*x20
-    x48 = 2*inv_theta
-    x49 = x16*x28
-    x50 = x13*x49
-    x51 = math.log(a/math.sqrt(x1))
-    x52 = beta*x51
-    x53 = 8*x52
-    x54 = x26*x51
-    x55 = inv_theta*x45
-    x56 = -inv_G_I*x45*x48 + inv_G_I*x47 - x13 + x17*x19*x54 + 2*x17*x44 - x18*x19 + x18 - x19*x53 + x20*x54 + x25*x45 + 3*x25 - x41 - 7*x42 + x43 - 4*x44 + 5*x46 + x50 - x54*x55
-    x57 = 1/x56
-    x58 = 2*x0
-    x59 = -x20 + x28 + x49 + x58
-    x60 = x24*x59
-    x61 = 4*x38
+    x43 = x14*x17
+    x44 = beta*x15
+    x45 = 2*inv_theta
+    x46 = x19*x28
+    x47 = x17*x46
+    x48 = math.log(a/math.sqrt(x1))
+    x49 = beta*x48
+    x50 = 8*x49
+    x51 = x1**3
+    x52 = inv_theta*x51
+    x53 = inv_G_I*x14
+    x54 = 2*x15
+    x55 = x26*x48
+    x56 = (-inv_G_I*x45*x51 + inv_G_I*x54 + x14*x20*x55 - x14*x21 - x14*x50 + x15*x55 - x17 +
+        2*x20*x53 + x21 + x25*x51 + 3*x25 - x41 - 7*x42 + x43 + 5*x44 + x47 - x52*x55 - 4*x53)
+    x57 = 2*x0
+    x58 = -x15 + x28 + x46 + x57
+    x59 = x24*x58
+    x60 = 4*x38
+    x61 = 4*Delta
     x62 = a**6
     x63 = math.log1p(x27)
-    x64 = x1*x58
-    x65 = 4*Delta
-    x66 = x11*x24*x6*zeta*(beta*(inv_theta*(6*x0 - x2*x3 + 2*x2 + 8*x3 + x62 + 2) + x4 - 4) + 2*x10*x19*(beta*x63 - inv_G_I))/math.pi - x6*x65*(-inv_G_I*x64*x7 + x24*x62 + x5 + x63*x64) - x60*x61
-    x67 = x17 - 4*x28 + x47 + x48 - 2
-    x68 = x66*x67
-    x69 = x57*x68
-    x70 = ((1/4))*x69
-    x71 = x11*x39
-    x72 = a**((5/2))
+    x64 = x1*x57
+    x65 = (x12*x24*x4*zeta*(beta*(inv_theta*(6*x0 - x2*x9 + 2*x2 + x62 + 8*x9 + 2) + x10 - 4) +
+        2*x14*x3*(beta*x63 - inv_G_I))/math.pi - x12*x61*(-inv_G_I*x5*x64 + x11 + x24*x62 + x63*x64)
+        - x59*x60)
+    x66 = x20 - 4*x28 + x45 + x54 - 2
+    x67 = x65*x66
+    x68 = 1/x56
+    x69 = x67*x68
+    x70 = (1/4)*x69
+    x71 = x39*x4
+    x72 = a**(5/2)
     x73 = 4*x24
-    x74 = x11*x57
+    x74 = x4*x68
     x75 = a*x25
     x76 = a*inv_G_I
     x77 = 6*x76
-    x78 = a*x52
+    x78 = a*x49
     x79 = 12*x78
     x80 = 1/a
     x81 = x80*(x0*x24 - 1)
-    x82 = x13*x81
-    dG_da_P = -4*x23*x36*(x23*x24 + ((1/4))*x23*x27 + x23*x33 - x24*(8*math.pi*Delta*x1 - x14*x20*x26 - x14*x25 - x21))/beta**2
-    dG_da_delta = -16*math.pi**2*x34*(x37*x39 + x40*x70)*(x1*x70/x37 - x11*x69 - x28*x66*x74*(x24 + x8) + x32*x35*x65*x7*x72 + x39*x72*x73 + x40*x68*(a*x13*x17 - a*x26 + a*x41 + 9*a*x42 + 3*a*x46 + a*x49*x53 - a*x50 - 8*x1*x76 - 16*x1*x78 - x17*x43*x81 + x19*x26*x81 - x20*x77 - x20*x79 - x20*x82 + x24*x75 + x28*x77 + x28*x79 + 4*x49*x76 + x55*x82 - 5*x75)/x56**2 - x61*x67*x74*(2*x28 + x29 + x33*x59 - x48 + x60 - 2) - x71*x73*(x58 + 1) + x71)
-    dG_dP = -x22*x24*x36*x67*x7*x80
-    return dG_da_P, dG_da_delta, dG_dP
-
-
-@njit(cache=True)
-def release_rate_slopes_array(Delta, R, a, beta, inv_G_I, inv_theta, zeta):
-    """
-    Array form of :func:`release_rate_slopes`: a are 1-D arrays.
-    """
-    n = a.shape[0]
-    dG_da_P = np.empty(n)
-    dG_da_delta = np.empty(n)
-    dG_dP = np.empty(n)
-    for i in range(n):
-        dG_da_P[i], dG_da_delta[i], dG_dP[i] = release_rate_slopes(Delta, R, a[i], beta, inv_G_I, inv_theta, zeta)
-    return dG_da_P, dG_da_delta, dG_dP
-
-
-@njit(parallel=True, cache=True)
-def release_rate_slopes_parallel(Delta, R, a, beta, inv_G_I, inv_theta, zeta):
-    """
-    Parallel form of :func:`release_rate_slopes_array` (numba prange over all threads);
-    bit-identical results.
-    """
-    n = a.shape[0]
-    dG_da_P = np.empty(n)
-    dG_da_delta = np.empty(n)
-    dG_dP = np.empty(n)
-    for i in prange(n):
-        dG_da_P[i], dG_da_delta[i], dG_dP[i] = release_rate_slopes(Delta, R, a[i], beta, inv_G_I, inv_theta, zeta)
-    return dG_da_P, dG_da_delta, dG_dP
+    x82 = x17*x81
+    dG_da_delta = (-16*math.pi**2*x34*(x37*x39 + x40*x70)*(x1*x70/x37 - x28*x65*x74*(x24 + x6) +
+        x32*x35*x5*x61*x72 + x39*x72*x73 - x4*x69 + x40*x67*(a*x17*x20 - a*x26 + a*x41 + 9*a*x42 +
+        3*a*x44 + a*x46*x50 - a*x47 - 8*x1*x76 - 16*x1*x78 + x14*x26*x81 - x15*x77 - x15*x79 -
+        x15*x82 - x20*x43*x81 + x24*x75 + x28*x77 + x28*x79 + 4*x46*x76 + x52*x82 - 5*x75)/x56**2 -
+        x60*x66*x74*(2*x28 + x29 + x33*x58 - x45 + x59 - 2) - x71*x73*(x57 + 1) + x71))
+    dG_dP = -x22*x24*x36*x5*x66*x80
+    return ReleaseRateSlopes(dG_da_P, dG_da_delta, dG_dP)
 
 
 @njit(cache=True)
@@ -222,43 +184,46 @@ def equilibrium_star(a, gb, inv_theta, m):
     """
     x0 = a**2
     x1 = x0 + 1
-    x2 = math.log1p(x0)
-    x3 = a**4
-    x4 = 2*x3
-    x5 = inv_theta*(x2 + x4)
-    x6 = 1/(x5 - 2)
-    x7 = math.sqrt(a)
-    x8 = inv_theta*(x0 - x2) + 2
-    x9 = m*x8
-    x10 = -x0 + x7*x9
+    x2 = math.sqrt(a)
+    x3 = math.log1p(x0)
+    x4 = inv_theta*(x0 - x3) + 2
+    x5 = m*x4
+    x6 = -x0 + x2*x5
+    x7 = a**4
+    x8 = 2*x7
+    x9 = inv_theta*(x3 + x8)
+    x10 = 1/(x9 - 2)
     x11 = x10*x6
     x12 = 2*x11
+    p = x1*x12
     x13 = 4*a
-    x14 = x10*x13
+    x14 = x13*x6
     x15 = -x13
-    x16 = a**((3/2))
+    x16 = a**(3/2)
     x17 = m*x16
     x18 = 1/x1
     x19 = 1 - x18
     x20 = inv_theta*x19
     x21 = 4*x20
-    x22 = 1/x7
+    x22 = 1/x2
     x23 = inv_theta*x1
     x24 = 4*x0
     x25 = x18 + x24
-    x26 = x25*x6
+    x26 = x10*x25
+    dp_da = x10*(x1*(x15 + x17*x21 + x22*x5) - x14*x23*x26 + x14)
     x27 = 1/x0
     x28 = math.log1p(x27)
     x29 = gb - x28
     x30 = x1**2
     x31 = 2*x30
-    x32 = x31*x8
+    x32 = x31*x4
     x33 = a**6
-    x34 = 2*x2
-    x35 = inv_theta*(6*x0 - x2*x3 + 8*x3 + x33 + x34 + 2) - x29*x32 + x4 - 4
+    x34 = 2*x3
+    x35 = inv_theta*(6*x0 - x3*x7 + x33 + x34 + 8*x7 + 2) - x29*x32 + x8 - 4
     x36 = 2*x0
     x37 = x1*x36
-    x38 = -gb*x37 + x18*x33 + x28*x37 + x5
+    x38 = -gb*x37 + x18*x33 + x28*x37 + x9
+    delta_over_Delta = x10*(m*x18*x2*x35 - x38)
     x39 = a**3
     x40 = 4*x39
     x41 = 1/x30
@@ -269,6 +234,10 @@ def equilibrium_star(a, gb, inv_theta, m):
     x46 = x17*x35
     x47 = 2*x18
     x48 = a*inv_theta
+    ddelta_da = (x10*(2*a**7*x41 - 6*a**5*x18 + 4*a*gb*x1 + 2*a*inv_theta*x10*x25*x38 - a*x25*x45 +
+        4*gb*x39 - inv_theta*x26*x46*x47 + (1/2)*m*x18*x22*x35 - m*x2*x47*(x19*x29*x31*x48 +
+        x29*x4*x42 + x32*x44/x39 - x40 - x48*(-x0*x34 + 16*x0 - x18*x7 + x47 + 3*x7 + 6)) +
+        4*x1*x43*x44 - x28*x40 - x28*x42 - 2*x41*x46))
     x49 = m**(-2)
     x50 = math.log(x1)
     x51 = inv_theta*x50
@@ -284,73 +253,60 @@ def equilibrium_star(a, gb, inv_theta, m):
     x61 = 4*x18
     x62 = 1/x53
     x63 = x20*x62
+    dG_da_P = -x49*x54*x58*(x27*x58 + x58*x61 + 4*x58*x63 - x61*(4*x11*x59 + x56 + x57 + x60))
     x64 = x23*x50
     x65 = x23 + x36 - x59 + x64
     x66 = x18*x65
-    x67 = m*x18*x35*x6*x7 - x38*x6 - x62*x66
+    x67 = m*x10*x18*x2*x35 - x10*x38 - x62*x66
     x68 = 3*inv_theta
-    x69 = inv_theta*x1**3
-    x70 = 4*x30
-    x71 = inv_theta*x31
-    x72 = 2*x69
+    x69 = 4*x30
+    x70 = inv_theta*x31
+    x71 = inv_theta*x1**3
+    x72 = 2*x71
     x73 = 2*x64
     x74 = x31*x51
     x75 = math.log(a/math.sqrt(x1))
     x76 = x30*x75
     x77 = 4*x75
-    x78 = -gb*x70 + gb*x71 - gb*x72 + gb*x74 - 7*x23 - x24 - x30*x51 + x31 + 4*x51*x76 + x51 + x59*x77 + 5*x59 + x68 - x69*x77 + x69 + x73 - 8*x76 - 6
+    x78 = (-gb*x69 + gb*x70 - gb*x72 + gb*x74 - 7*x23 - x24 - x30*x51 + x31 + 4*x51*x76 + x51 +
+        x59*x77 + 5*x59 + x68 - x71*x77 + x71 + x73 - 8*x76 - 6)
     x79 = 1/x78
-    x80 = x45 + x51 - x55 + x71 - 2
+    x80 = x45 + x51 - x55 + x70 - 2
     x81 = x79*x80
     x82 = x67*x81
     x83 = x1*x82
-    x84 = x62*x7
-    x85 = a**((5/2))
+    x84 = x2*x62
+    x85 = a**(5/2)
     x86 = a*x1
     x87 = a*x23
     x88 = 6*gb
     x89 = a*x59
     x90 = 12*x75
     x91 = x43*(x0*x18 - 1)
-    p = x1*x12
-    dp_da = x6*(x1*(x15 + x17*x21 + x22*x9) - x14*x23*x26 + x14)
-    delta_over_Delta = x6*(m*x18*x35*x7 - x38)
-    ddelta_da = x6*(2*a**7*x41 - 6*a**5*x18 + 4*a*gb*x1 + 2*a*inv_theta*x25*x38*x6 - a*x25*x45 + 4*gb*x39 - inv_theta*x26*x46*x47 + ((1/2))*m*x18*x22*x35 - m*x47*x7*(x19*x29*x31*x48 + x29*x42*x8 + x32*x44/x39 - x40 - x48*(-x0*x34 + 16*x0 - x18*x3 + 3*x3 + x47 + 6)) + 4*x1*x43*x44 - x28*x40 - x28*x42 - 2*x41*x46)
-    dG_da_P = -x49*x54*x58*(x27*x58 + x58*x61 + 4*x58*x63 - x61*(4*x11*x59 + x56 + x57 + x60))
-    dG_da_delta = -x49*(x16*x62 + x22*x83)*(4*x1*x22*x67*x80*(a*x30*x68 + 2*a*x51 + 8*a*x64*x75 - a*x73 + gb*x13*x64 - 8*gb*x86 + x15 + x18*x48 + x42 - 5*x48 + x70*x91 - x71*x91 + x72*x91 - x74*x91 - 16*x75*x86 + x87*x88 + x87*x90 + 9*x87 - x88*x89 - x89*x90)/x78**2 + x21*x54*x85 - x25*x55*x67*x7*x79 - x60*x61*x84 + x61*x62*x85 - 4*x7*x82 - 4*x81*x84*(2*x23 - x45 + x52 + x63*x65 + x66 - 2) + x84 + x83/x16)
-    return p, dp_da, delta_over_Delta, ddelta_da, dG_da_P, dG_da_delta
+    dG_da_delta = (-x49*(x16*x62 + x22*x83)*(4*x1*x22*x67*x80*(a*x30*x68 + 2*a*x51 + 8*a*x64*x75 -
+        a*x73 + gb*x13*x64 - 8*gb*x86 + x15 + x18*x48 + x42 - 5*x48 + x69*x91 - x70*x91 + x72*x91 -
+        x74*x91 - 16*x75*x86 + x87*x88 + x87*x90 + 9*x87 - x88*x89 - x89*x90)/x78**2 -
+        x2*x25*x55*x67*x79 - 4*x2*x82 + x21*x54*x85 - x60*x61*x84 + x61*x62*x85 - 4*x81*x84*(2*x23 -
+        x45 + x52 + x63*x65 + x66 - 2) + x84 + x83/x16))
+    return EquilibriumStar(p, dp_da, delta_over_Delta, ddelta_da, dG_da_P, dG_da_delta)
 
 
 @njit(cache=True)
-def equilibrium_star_array(a, gb, inv_theta, m):
+def equilibrium_star_into(out, a, gb, inv_theta, m):
     """
-    Array form of :func:`equilibrium_star`: a are 1-D arrays.
+    equilibrium_star at every a[i], into out (a EquilibriumStar of 1-D arrays of the same length).
     """
-    n = a.shape[0]
-    p = np.empty(n)
-    dp_da = np.empty(n)
-    delta_over_Delta = np.empty(n)
-    ddelta_da = np.empty(n)
-    dG_da_P = np.empty(n)
-    dG_da_delta = np.empty(n)
-    for i in range(n):
-        p[i], dp_da[i], delta_over_Delta[i], ddelta_da[i], dG_da_P[i], dG_da_delta[i] = equilibrium_star(a[i], gb, inv_theta, m)
-    return p, dp_da, delta_over_Delta, ddelta_da, dG_da_P, dG_da_delta
-
-
-@njit(parallel=True, cache=True)
-def equilibrium_star_parallel(a, gb, inv_theta, m):
-    """
-    Parallel form of :func:`equilibrium_star_array` (numba prange over all threads);
-    bit-identical results.
-    """
-    n = a.shape[0]
-    p = np.empty(n)
-    dp_da = np.empty(n)
-    delta_over_Delta = np.empty(n)
-    ddelta_da = np.empty(n)
-    dG_da_P = np.empty(n)
-    dG_da_delta = np.empty(n)
-    for i in prange(n):
-        p[i], dp_da[i], delta_over_Delta[i], ddelta_da[i], dG_da_P[i], dG_da_delta[i] = equilibrium_star(a[i], gb, inv_theta, m)
-    return p, dp_da, delta_over_Delta, ddelta_da, dG_da_P, dG_da_delta
+    p = out.p
+    dp_da = out.dp_da
+    delta_over_Delta = out.delta_over_Delta
+    ddelta_da = out.ddelta_da
+    dG_da_P = out.dG_da_P
+    dG_da_delta = out.dG_da_delta
+    for i in range(a.shape[0]):
+        r = equilibrium_star(a[i], gb, inv_theta, m)
+        p[i] = r.p
+        dp_da[i] = r.dp_da
+        delta_over_Delta[i] = r.delta_over_Delta
+        ddelta_da[i] = r.ddelta_da
+        dG_da_P[i] = r.dG_da_P
+        dG_da_delta[i] = r.dG_da_delta

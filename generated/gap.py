@@ -4,9 +4,11 @@
 Gap function h(phi) outside the contact (5.9) and h(pi) (5.10) in closed form.
 """
 import math
+from collections import namedtuple
 
-import numpy as np
-from numba import njit, prange
+from numba import njit
+
+GapMin = namedtuple("GapMin", ["h_min", "phi_min"])
 
 
 @njit(cache=True)
@@ -17,44 +19,33 @@ def gap_pi(Delta, a, beta, inv_theta, zeta):
     eps <= |phi| <= pi is min(0, h_pi), at phi = pi). Same arguments as load_state.
     """
     x0 = a**2
-    x1 = math.log1p(x0)
-    x2 = x0 + 1
-    x3 = math.sqrt(x2)
-    x4 = 4*Delta
-    x5 = math.sqrt(a)*zeta
-    x6 = beta/math.pi
-    x7 = 1/x0
+    x1 = x0 + 1
+    x2 = math.sqrt(x1)
     if (a > 4):
-        b0 = ((1/1221113708701286400))*(-x7*(-x7*(x7*(x7*(11*x7*(13*x7*(x7*(289*x7*(361*x7*(49*x7*(529*x7*(625*x7*(754 - 729*x7) - 488592) + 268725600) - 13734864000) + 5191778592000) - 1578300691968000) + 1669491398615040) - 23116034750054400.0) + 273189501591552000.0) - 296798470864896000.0) + 327084029116416000.0) + 366334112610385920.0) + 407037902900428800.0)/a**3
+        x3 = 1/x0
+        b0 = ((1/1221113708701286400)*(-x3*(-x3*(-x3*(-x3*(11*x3*(13*x3*(x3*(289*x3*(361*x3*(49*x3*(
+            529*x3*(625*x3*(754 - 729*x3) - 488592) + 268725600) - 13734864000) + 5191778592000) -
+            1578300691968000) + 1669491398615040) - 23116034750054400.0) + 273189501591552000.0) +
+            296798470864896000.0) + 327084029116416000.0) + 366334112610385920.0) +
+            407037902900428800.0)/a**3)
     else:
-        b0 = math.asinh(1/a) - 1/x3
-    h_pi = -(b0*x2*x6*(-x5*(inv_theta*(x0 - x1) + 2) + math.pi*x0*x4/beta) + x3*(-inv_theta*x5*x6*(2*x0 + 1) + x4))/(inv_theta*(2*a**4 + x1) - 2)
+        b0 = math.asinh(1/a) - 1/x2
+    x4 = math.log1p(x0)
+    x5 = 4*Delta
+    x6 = math.sqrt(a)*zeta
+    x7 = beta/math.pi
+    h_pi = (-(b0*x1*x7*(-x6*(inv_theta*(x0 - x4) + 2) + math.pi*x0*x5/beta) + x2*(-inv_theta*x6*x7*(
+        2*x0 + 1) + x5))/(inv_theta*(2*a**4 + x4) - 2))
     return h_pi
 
 
 @njit(cache=True)
-def gap_pi_array(Delta, a, beta, inv_theta, zeta):
+def gap_pi_into(out, Delta, a, beta, inv_theta, zeta):
     """
-    Array form of :func:`gap_pi`: a are 1-D arrays.
+    gap_pi at every a[i], into out (a 1-D array of the same length).
     """
-    n = a.shape[0]
-    h_pi = np.empty(n)
-    for i in range(n):
-        h_pi[i] = gap_pi(Delta, a[i], beta, inv_theta, zeta)
-    return h_pi
-
-
-@njit(parallel=True, cache=True)
-def gap_pi_parallel(Delta, a, beta, inv_theta, zeta):
-    """
-    Parallel form of :func:`gap_pi_array` (numba prange over all threads);
-    bit-identical results.
-    """
-    n = a.shape[0]
-    h_pi = np.empty(n)
-    for i in prange(n):
-        h_pi[i] = gap_pi(Delta, a[i], beta, inv_theta, zeta)
-    return h_pi
+    for i in range(a.shape[0]):
+        out[i] = gap_pi(Delta, a[i], beta, inv_theta, zeta)
 
 
 @njit(cache=True)
@@ -64,93 +55,69 @@ def gap(Delta, a, beta, inv_theta, phi, zeta):
     h = -(2 E^2 c0 + c1) sin(phi/2) sigma - c1 cos(phi) arcsinh(sigma/sin(eps/2)),
     sigma = sqrt(sin^2(phi/2) - sin^2(eps/2)); regrouped near the contact end.
     """
-    x0 = ((1/2))*phi
+    x0 = (1/2)*phi
     x1 = abs(math.sin(x0))
-    x2 = abs(math.cos(x0))
-    x3 = (x1 <= x2)
-    x4 = a**2
-    x5 = x4 + 1
-    x6 = math.sqrt(x5)
-    x7 = 1/x6
-    x8 = a*x7
-    x9 = x1 + x8
-    x10 = -x1 + x8
-    x11 = x10*x9
-    x12 = x2 + x7
-    x13 = x2 - x7
-    x14 = x12*x13
-    x15 = -x11
-    x16 = -x14
-    if x3:
-        b0 = x15
+    x2 = a**2
+    x3 = x2 + 1
+    x4 = math.sqrt(x3)
+    x5 = 1/x4
+    x6 = a*x5
+    x7 = x1 + x6
+    x8 = -x7*(-x1 + x6)
+    x9 = abs(math.cos(x0))
+    x10 = -(-x5 + x9)*(x5 + x9)
+    x11 = (x1 <= x9)
+    x12 = 1/a
+    x13 = x12*x4
+    x14 = x13*math.sqrt(max(0, x8))
+    x15 = x13*math.sqrt(max(0, x10))
+    if x11:
+        b0 = x8
     else:
-        b0 = x16
-    x17 = b0
-    x18 = max(0, x17)
-    x19 = math.sqrt(x18)
-    x20 = 1/a
-    x21 = x20*x6
-    x22 = x19*x21
-    x23 = math.asinh(x22)
-    x24 = 4*Delta
-    x25 = math.log1p(x4)
-    x26 = math.sqrt(a)
-    x27 = x26*zeta
-    x28 = 1/math.pi
-    x29 = beta*x28
-    x30 = x29*(-x27*(inv_theta*(-x25 + x4) + 2) + math.pi*x24*x4/beta)
-    x31 = inv_theta*(2*a**4 + x25) - 2
-    x32 = math.cos(phi)/x31
-    x33 = -1/x31
-    x34 = 2*x4 + 1
-    x35 = x21*math.sqrt(max(0, x15))
-    x36 = x21*math.sqrt(max(0, x16))
-    x37 = x30*x5
-    x38 = x5**((3/2))
-    x39 = 1/x4
-    if x3:
-        b1 = -x10*x9
+        b0 = x10
+    x16 = max(0, b0)
+    x17 = math.sqrt(x16)
+    x18 = x13*x17
+    x19 = math.asinh(x18)
+    x20 = 4*Delta
+    x21 = math.sqrt(a)
+    x22 = x21*zeta
+    x23 = 1/math.pi
+    x24 = beta*x23
+    x25 = math.log1p(x2)
+    x26 = x24*(-x22*(inv_theta*(x2 - x25) + 2) + math.pi*x2*x20/beta)
+    x27 = inv_theta*(2*a**4 + x25) - 2
+    x28 = math.cos(phi)/x27
+    x29 = -1/x27
+    x30 = 2*x2 + 1
+    x31 = x3**(3/2)
+    if (((x14 < 1/4)) if x11 else ((x15 < 1/4))):
+        x32 = x16*x3/x2
+        b1 = ((1/42107369265561600)*x16**(3/2)*x31*(x32*(x32*(x32*(x32*(11*x32*(13*x32*(x32*(
+            289*x32*(361*x32*(49*x32*(529*x32*(702 - 625*x32) - 421200) + 23680800) - 9945936000) +
+            3401510112000) - 4112047779840) + 66425387212800) - 942032764108800) + 1279303753728000)
+            - 1879793270784000) + 3158052694917120) - 7017894877593600)/a**3)
     else:
-        b1 = -x12*x13
-    x40 = max(0, b1)
-    x41 = x39*x40*x5
-    if (((x35 < (1/4))) if x3 else ((x36 < (1/4)))):
-        b2 = -(1/42107369265561600)*x18**((3/2))*x38*(-x41*(x41*(x39*x40*x5*(x41*(11*x39*x40*x5*(13*x41*(x39*x40*x5*(289*x41*(361*x39*x40*x5*(49*x41*(529*x39*x40*x5*(702 - 625*x41) - 421200) + 23680800) - 9945936000) + 3401510112000) - 4112047779840) + 66425387212800) - 942032764108800) + 1279303753728000) - 1879793270784000) + 3158052694917120) + 7017894877593600)/a**3
+        b1 = -x18 + x19
+    if (((x8 <= 0)) if x11 else ((x10 <= 0))):
+        b2 = 0
+    elif (((x14 > 1)) if x11 else ((x15 > 1))):
+        b2 = x3*(-x1*x17*x29*(inv_theta*x22*x24*x30 - x20 + x26) + x19*x26*x28)
     else:
-        b2 = -x22 + x23
-    if (((x11 >= 0)) if x3 else ((x14 >= 0))):
-        b3 = 0
-    elif (((x35 > 1)) if x3 else ((x36 > 1))):
-        b3 = x5*(-x1*x19*x33*(inv_theta*x27*x29*x34 - x24 + x30) + x23*x30*x32)
-    else:
-        b3 = b2*x32*x37 + x19*(x17*x33*(2*x1*x20*x30*x38 + x37 - x5*(beta*inv_theta*x26*x28*x34*zeta - x24))/x9 + x29*x6*zeta/x26)
-    h = b3
+        x33 = x26*x3
+        b2 = (b1*x28*x33 + x17*(b0*x29*(2*x1*x12*x26*x31 - x3*(beta*inv_theta*x21*x23*x30*zeta -
+            x20) + x33)/x7 + x24*x4*zeta/x21))
+    h = b2
     return h
 
 
 @njit(cache=True)
-def gap_array(Delta, a, beta, inv_theta, phi, zeta):
+def gap_into(out, Delta, a, beta, inv_theta, phi, zeta):
     """
-    Array form of :func:`gap`: a, phi are 1-D arrays.
+    gap at every a, phi[i], into out (a 1-D array of the same length).
     """
-    n = a.shape[0]
-    h = np.empty(n)
-    for i in range(n):
-        h[i] = gap(Delta, a[i], beta, inv_theta, phi[i], zeta)
-    return h
-
-
-@njit(parallel=True, cache=True)
-def gap_parallel(Delta, a, beta, inv_theta, phi, zeta):
-    """
-    Parallel form of :func:`gap_array` (numba prange over all threads);
-    bit-identical results.
-    """
-    n = a.shape[0]
-    h = np.empty(n)
-    for i in prange(n):
-        h[i] = gap(Delta, a[i], beta, inv_theta, phi[i], zeta)
-    return h
+    for i in range(a.shape[0]):
+        out[i] = gap(Delta, a[i], beta, inv_theta, phi[i], zeta)
 
 
 @njit(cache=True)
@@ -161,106 +128,26 @@ def gap_min(Delta, a, beta, inv_theta, zeta):
     Exact (see the derivation report): h has no interior minimum because r0 <= 0.
     """
     x0 = a**2
-    x1 = math.log1p(x0)
-    x2 = 1/(inv_theta*(2*a**4 + x1) - 2)
-    x3 = x0 + 1
-    x4 = math.sqrt(x3)
+    x1 = x0 + 1
+    x2 = math.sqrt(x1)
+    if (a > 4):
+        x3 = 1/x0
+        b0 = ((1/1221113708701286400)*(-x3*(-x3*(-x3*(-x3*(11*x3*(13*x3*(x3*(289*x3*(361*x3*(49*x3*(
+            529*x3*(625*x3*(754 - 729*x3) - 488592) + 268725600) - 13734864000) + 5191778592000) -
+            1578300691968000) + 1669491398615040) - 23116034750054400.0) + 273189501591552000.0) +
+            296798470864896000.0) + 327084029116416000.0) + 366334112610385920.0) +
+            407037902900428800.0)/a**3)
+    else:
+        b0 = math.asinh(1/a) - 1/x2
+    x4 = math.log1p(x0)
     x5 = 4*Delta
     x6 = math.sqrt(a)*zeta
     x7 = beta/math.pi
-    x8 = x4*(-inv_theta*x6*x7*(2*x0 + 1) + x5)
-    x9 = 1/x0
-    x10 = -x9*(11*x9*(13*x9*(x9*(289*x9*(361*x9*(49*x9*(529*x9*(625*x9*(754 - 729*x9) - 488592) + 268725600) - 13734864000) + 5191778592000) - 1578300691968000) + 1669491398615040) - 23116034750054400.0) + 273189501591552000.0) + 296798470864896000.0
-    x11 = ((1/1221113708701286400))/a**3
-    x12 = (a > 4)
-    x13 = math.asinh(1/a) - 1/x4
-    x14 = x3*x7*(-x6*(inv_theta*(x0 - x1) + 2) + math.pi*x0*x5/beta)
-    if x12:
-        b0 = x11*(-x9*(-x9*(-x10*x9 + 327084029116416000.0) + 366334112610385920.0) + 407037902900428800.0)
-    else:
-        b0 = x13
-    h_min = min(0, -x2*(b0*x14 + x8))
-    if (((x2*(x11*x14*(-x9*(-x9*(-x10*x9 + 327084029116416000.0) + 366334112610385920.0) + 407037902900428800.0) + x8) > 0)) if x12 else ((x2*(x13*x14 + x8) > 0))):
+    h_min = (min(0, -(b0*x1*x7*(-x6*(inv_theta*(x0 - x4) + 2) + math.pi*x0*x5/beta) + x2*(
+        -inv_theta*x6*x7*(2*x0 + 1) + x5))/(inv_theta*(2*a**4 + x4) - 2)))
+    if (h_min < 0):
         b1 = math.pi
     else:
         b1 = 2*math.atan(a)
     phi_min = b1
-    return h_min, phi_min
-
-
-@njit(cache=True)
-def gap_min_array(Delta, a, beta, inv_theta, zeta):
-    """
-    Array form of :func:`gap_min`: a are 1-D arrays.
-    """
-    n = a.shape[0]
-    h_min = np.empty(n)
-    phi_min = np.empty(n)
-    for i in range(n):
-        h_min[i], phi_min[i] = gap_min(Delta, a[i], beta, inv_theta, zeta)
-    return h_min, phi_min
-
-
-@njit(parallel=True, cache=True)
-def gap_min_parallel(Delta, a, beta, inv_theta, zeta):
-    """
-    Parallel form of :func:`gap_min_array` (numba prange over all threads);
-    bit-identical results.
-    """
-    n = a.shape[0]
-    h_min = np.empty(n)
-    phi_min = np.empty(n)
-    for i in prange(n):
-        h_min[i], phi_min[i] = gap_min(Delta, a[i], beta, inv_theta, zeta)
-    return h_min, phi_min
-
-
-@njit(cache=True)
-def gap_pi_normalised(M, a, theta):
-    """
-    h(pi)/Delta as a function of a, M and vartheta (section 6 normalisation).
-    """
-    x0 = a**4
-    x1 = 1/theta
-    x2 = a**2
-    x3 = math.log1p(x2)
-    x4 = math.sqrt(x2 + 1)
-    x5 = math.sqrt(a)
-    x6 = M*x4
-    x7 = a**((5/2))
-    if (a > 4):
-        b0 = ((1/1221113708701286400))*(407037902900428800.0 - 366334112610385920.0/x2 + 327084029116416000.0/x0 - 296798470864896000.0/a**6 + 273189501591552000.0/a**8 - 254276382250598400.0/a**10 + 238737270001950720.0/a**12 - 225696998951424000.0/a**14 + 214560633871584000.0/a**16 - 204911081554608000.0/a**18 + 196447362968656800.0/a**20 - 188946645473489904.0/a**22 + 182240205896498750.0/a**24 - 176197758751389375.0/a**26)/a**3
-    else:
-        b0 = math.asinh(1/a) - 1/x4
-    x8 = b0
-    x9 = M*x8
-    x10 = x7*x9
-    x11 = x5*x9
-    x12 = 2*theta
-    h_pi_star = 4*(a**((9/2))*x9 - x0*x8 + x10*x12 - x10*x3 + x10 + x11*x12 - x11*x3 - x2*x8 - x4 + x5*x6 + 2*x6*x7)/(2*x0*x1 + x1*x3 - 2)
-    return h_pi_star
-
-
-@njit(cache=True)
-def gap_pi_normalised_array(M, a, theta):
-    """
-    Array form of :func:`gap_pi_normalised`: a are 1-D arrays.
-    """
-    n = a.shape[0]
-    h_pi_star = np.empty(n)
-    for i in range(n):
-        h_pi_star[i] = gap_pi_normalised(M, a[i], theta)
-    return h_pi_star
-
-
-@njit(parallel=True, cache=True)
-def gap_pi_normalised_parallel(M, a, theta):
-    """
-    Parallel form of :func:`gap_pi_normalised_array` (numba prange over all threads);
-    bit-identical results.
-    """
-    n = a.shape[0]
-    h_pi_star = np.empty(n)
-    for i in prange(n):
-        h_pi_star[i] = gap_pi_normalised(M, a[i], theta)
-    return h_pi_star
+    return GapMin(h_min, phi_min)

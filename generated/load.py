@@ -4,9 +4,15 @@
 Load-contact size relation (sections 3-4): (4.4), (4.5), (2.6), (3.4), (3.5), (5.4), P* of section 6.
 """
 import math
+from collections import namedtuple
 
-import numpy as np
-from numba import njit, prange
+from numba import njit
+
+LoadState = namedtuple("LoadState", ["P", "B", "C", "c0", "c1", "r0"])
+
+Pressure = namedtuple("Pressure", ["N_bounded", "N_unbounded"])
+
+StressIntensity = namedtuple("StressIntensity", ["K", "G_release"])
 
 
 @njit(cache=True)
@@ -16,68 +22,55 @@ def load_state(Delta, R, a, beta, inv_theta, zeta):
     [N/m], C = int p dx (4.5b) [N/m], c0, c1 of (2.6) [m], r0 of (2.12) [N/m^2].
     Delta [m], R [m], beta = beta* [1/Pa], inv_theta = 1/vartheta, zeta = sqrt(2wR/A) [N/m^(1/2)].
     """
-    x0 = a**2
-    x1 = math.log1p(x0)
-    x2 = 2*a**4
-    x3 = x1 + x2
-    x4 = 1/(inv_theta*x3 - 2)
-    x5 = x0 + 1
-    x6 = 4*x0
-    x7 = 1/beta
-    x8 = math.pi*Delta*x7
-    x9 = inv_theta*(x0 - x1) + 2
-    x10 = math.sqrt(a)
-    x11 = x10*zeta
-    x12 = x4*x5*(-x11*x9 + x6*x8)
-    x13 = 2*Delta
-    x14 = 2*x0
-    x15 = beta*x11*(x14 + 1)
-    x16 = 1/R
-    x17 = x16*x4
-    x18 = math.sqrt(x5)
-    x19 = 1/math.pi
+    x0 = math.sqrt(a)
+    x1 = x0*zeta
+    x2 = a**2
+    x3 = math.log1p(x2)
+    x4 = 2*a**4
+    x5 = x3 + x4
+    x6 = 1/(inv_theta*x5 - 2)
+    x7 = x2 + 1
+    x8 = 4*x2
+    x9 = 1/beta
+    x10 = math.pi*Delta*x9
+    x11 = inv_theta*(x2 - x3) + 2
+    x12 = x6*x7*(-x1*x11 + x10*x8)
     P = -2*x12
-    B = -4*x17*x7*(math.pi*x13*x3 - x15)
-    C = x17*(-8*x0*x8*(x14 - (x14 - 1)/(x18 + 1)) + x10*zeta*(-2*inv_theta*(2*x1 + 1) + x18*(inv_theta*(3*x1 - x2 + 2) - 6) + x6*x9 + 8))
-    c0 = x4*(-(1/2)*inv_theta*x15*x19 + x13)
+    x13 = 2*Delta
+    x14 = 2*x2
+    x15 = beta*x1*(x14 + 1)
+    x16 = 1/R
+    x17 = x16*x6
+    B = -4*x17*x9*(math.pi*x13*x5 - x15)
+    x18 = math.sqrt(x7)
+    C = (x17*(x0*zeta*(-2*inv_theta*(2*x3 + 1) + x11*x8 + x18*(inv_theta*(3*x3 - x4 + 2) - 6) + 8) -
+        8*x10*x2*(x14 - (x14 - 1)/(x18 + 1))))
+    x19 = 1/math.pi
+    c0 = x6*(-1/2*inv_theta*x15*x19 + x13)
     c1 = -beta*x12*x19
-    r0 = -x11*x16*x18*x19
-    return P, B, C, c0, c1, r0
+    r0 = -x1*x16*x18*x19
+    return LoadState(P, B, C, c0, c1, r0)
 
 
 @njit(cache=True)
-def load_state_array(Delta, R, a, beta, inv_theta, zeta):
+def load_state_into(out, Delta, R, a, beta, inv_theta, zeta):
     """
-    Array form of :func:`load_state`: a are 1-D arrays.
+    load_state at every a[i], into out (a LoadState of 1-D arrays of the same length).
     """
-    n = a.shape[0]
-    P = np.empty(n)
-    B = np.empty(n)
-    C = np.empty(n)
-    c0 = np.empty(n)
-    c1 = np.empty(n)
-    r0 = np.empty(n)
-    for i in range(n):
-        P[i], B[i], C[i], c0[i], c1[i], r0[i] = load_state(Delta, R, a[i], beta, inv_theta, zeta)
-    return P, B, C, c0, c1, r0
-
-
-@njit(parallel=True, cache=True)
-def load_state_parallel(Delta, R, a, beta, inv_theta, zeta):
-    """
-    Parallel form of :func:`load_state_array` (numba prange over all threads);
-    bit-identical results.
-    """
-    n = a.shape[0]
-    P = np.empty(n)
-    B = np.empty(n)
-    C = np.empty(n)
-    c0 = np.empty(n)
-    c1 = np.empty(n)
-    r0 = np.empty(n)
-    for i in prange(n):
-        P[i], B[i], C[i], c0[i], c1[i], r0[i] = load_state(Delta, R, a[i], beta, inv_theta, zeta)
-    return P, B, C, c0, c1, r0
+    P = out.P
+    B = out.B
+    C = out.C
+    c0 = out.c0
+    c1 = out.c1
+    r0 = out.r0
+    for i in range(a.shape[0]):
+        r = load_state(Delta, R, a[i], beta, inv_theta, zeta)
+        P[i] = r.P
+        B[i] = r.B
+        C[i] = r.C
+        c0[i] = r.c0
+        c1[i] = r.c1
+        r0[i] = r.r0
 
 
 @njit(cache=True)
@@ -93,31 +86,6 @@ def normalised_load(M, a, theta):
 
 
 @njit(cache=True)
-def normalised_load_array(M, a, theta):
-    """
-    Array form of :func:`normalised_load`: a are 1-D arrays.
-    """
-    n = a.shape[0]
-    P_star = np.empty(n)
-    for i in range(n):
-        P_star[i] = normalised_load(M, a[i], theta)
-    return P_star
-
-
-@njit(parallel=True, cache=True)
-def normalised_load_parallel(M, a, theta):
-    """
-    Parallel form of :func:`normalised_load_array` (numba prange over all threads);
-    bit-identical results.
-    """
-    n = a.shape[0]
-    P_star = np.empty(n)
-    for i in prange(n):
-        P_star[i] = normalised_load(M, a[i], theta)
-    return P_star
-
-
-@njit(cache=True)
 def pressure(Delta, R, a, beta, inv_theta, phi, zeta):
     """
     Contact pressure N(phi) of (5.4) [Pa] for |phi| < eps, split into the bounded part and the
@@ -125,46 +93,34 @@ def pressure(Delta, R, a, beta, inv_theta, phi, zeta):
     """
     x0 = 1/R
     x1 = a**2
-    x2 = math.log1p(x1)
-    x3 = 1/beta
-    x4 = 4*Delta
+    x2 = (1/2)*phi
+    x3 = math.atan(a)
+    x4 = math.sqrt(-math.sin(x2 - x3)*math.sin(x2 + x3))
     x5 = 1/math.pi
-    x6 = math.sqrt(a)*zeta
-    x7 = ((1/2))*phi
-    x8 = math.cos(x7)
-    x9 = math.atan(a)
-    x10 = math.sqrt(-math.sin(x7 - x9)*math.sin(x7 + x9))
-    x11 = x5*x8
-    N_bounded = -4*x0*(x10*x11*(x1 + 1)*(math.pi*x1*x3*x4 - x6*(inv_theta*(x1 - x2) + 2)) + ((1/2))*x3*(-beta*inv_theta*x5*x6*(2*x1 + 1) + x4)*math.atanh(x10/x8))/(inv_theta*(2*a**4 + x2) - 2)
-    N_unbounded = -x0*x11*x6/x10
-    return N_bounded, N_unbounded
+    x6 = math.cos(x2)
+    x7 = x5*x6
+    x8 = math.log1p(x1)
+    x9 = 1/beta
+    x10 = 4*Delta
+    x11 = math.sqrt(a)*zeta
+    N_bounded = (-4*x0*(x4*x7*(x1 + 1)*(math.pi*x1*x10*x9 - x11*(inv_theta*(x1 - x8) + 2)) + (
+        1/2)*x9*(-beta*inv_theta*x11*x5*(2*x1 + 1) + x10)*math.atanh(x4/x6))/(inv_theta*(2*a**4 +
+        x8) - 2))
+    N_unbounded = -x0*x11*x7/x4
+    return Pressure(N_bounded, N_unbounded)
 
 
 @njit(cache=True)
-def pressure_array(Delta, R, a, beta, inv_theta, phi, zeta):
+def pressure_into(out, Delta, R, a, beta, inv_theta, phi, zeta):
     """
-    Array form of :func:`pressure`: phi are 1-D arrays.
+    pressure at every phi[i], into out (a Pressure of 1-D arrays of the same length).
     """
-    n = phi.shape[0]
-    N_bounded = np.empty(n)
-    N_unbounded = np.empty(n)
-    for i in range(n):
-        N_bounded[i], N_unbounded[i] = pressure(Delta, R, a, beta, inv_theta, phi[i], zeta)
-    return N_bounded, N_unbounded
-
-
-@njit(parallel=True, cache=True)
-def pressure_parallel(Delta, R, a, beta, inv_theta, phi, zeta):
-    """
-    Parallel form of :func:`pressure_array` (numba prange over all threads);
-    bit-identical results.
-    """
-    n = phi.shape[0]
-    N_bounded = np.empty(n)
-    N_unbounded = np.empty(n)
-    for i in prange(n):
-        N_bounded[i], N_unbounded[i] = pressure(Delta, R, a, beta, inv_theta, phi[i], zeta)
-    return N_bounded, N_unbounded
+    N_bounded = out.N_bounded
+    N_unbounded = out.N_unbounded
+    for i in range(phi.shape[0]):
+        r = pressure(Delta, R, a, beta, inv_theta, phi[i], zeta)
+        N_bounded[i] = r.N_bounded
+        N_unbounded[i] = r.N_unbounded
 
 
 @njit(cache=True)
@@ -179,32 +135,5 @@ def stress_intensity(C, R, a, beta, c0, c1):
     x3 = 1/x2
     x4 = C/math.pi + 4*x0*(c0 - c1*x3)/(R*beta*(x2 + 1))
     K = -math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(R)*x3*x4/math.sqrt(a)
-    G_release = ((1/4))*math.pi*R*beta*x4**2/(a*x1)
-    return K, G_release
-
-
-@njit(cache=True)
-def stress_intensity_array(C, R, a, beta, c0, c1):
-    """
-    Array form of :func:`stress_intensity`: C, a, c0, c1 are 1-D arrays.
-    """
-    n = C.shape[0]
-    K = np.empty(n)
-    G_release = np.empty(n)
-    for i in range(n):
-        K[i], G_release[i] = stress_intensity(C[i], R, a[i], beta, c0[i], c1[i])
-    return K, G_release
-
-
-@njit(parallel=True, cache=True)
-def stress_intensity_parallel(C, R, a, beta, c0, c1):
-    """
-    Parallel form of :func:`stress_intensity_array` (numba prange over all threads);
-    bit-identical results.
-    """
-    n = C.shape[0]
-    K = np.empty(n)
-    G_release = np.empty(n)
-    for i in prange(n):
-        K[i], G_release[i] = stress_intensity(C[i], R, a[i], beta, c0[i], c1[i])
-    return K, G_release
+    G_release = (1/4)*math.pi*R*beta*x4**2/(a*x1)
+    return StressIntensity(K, G_release)

@@ -4,8 +4,8 @@
     c = jkrcyl.Contact(R=1.0, Delta=0.01, w=1e-4, materials=m)
     s = c.state(a)       # a = tan(eps/2): P, B, C, P_star, K, delta, h_pi, feasible, ...
 
-The kernels are emitted by ``make derive`` into jkrcyl.generated; jkrcyl.paper types the
-paper's printed formulas by hand and serves as the reference in the tests.
+The kernels are emitted by ``make derive`` into jkrcyl.generated and reached through jkrcyl.numerics;
+the printed formulas the tests compare with live in the top-level package reference/ (not shipped).
 """
 from .contact import Contact, State
 from .critical import a_crit

@@ -2,7 +2,8 @@
 
 Documented domain (issue 11): every real input is 0 or has magnitude in [TINY, HUGE] = [1e-100, 1e100]
 (inf only where a parameter allows it, e.g. a rigid body); the contact parameter a = tan(eps/2) lies in
-[A_MIN, A_MAX] = [1e-100, 1e20] (beyond, the closed forms under- or overflow); vartheta <= 1e100 or inf;
+[A_MIN, A_MAX] = [1e-100, 1e20] (beyond, the closed forms under- or overflow), a <= PRESSURE_A_MAX = 1e4 for
+the pressure; vartheta <= 1e100 or inf;
 counts n <= N_MAX = 1e6.  Booleans, strings, complex numbers and None are not numbers here.
 """
 import math
@@ -12,6 +13,7 @@ import numpy as np
 
 TINY, HUGE = 1e-100, 1e100
 A_MIN, A_MAX = 1e-100, 1e20
+PRESSURE_A_MAX = 1e4       # Contact.pressure: beyond (eps > pi - 2e-4) atanh near 1 in (5.4) loses the bounded part
 THETA_MAX = 1e100
 N_MAX = 1_000_000
 

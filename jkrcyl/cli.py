@@ -151,8 +151,9 @@ def _cmd_adherence(args):
         a0 = eq.solve_load(M, th, 0.0, gb=gb, alpha_ratio=ar)
         Mmax = math.inf
     else:
-        a0 = eq.zero_load_contact(M, th)
-        Mmax = eq.zero_load_max_M(th)[0]
+        from .numerics.zero_load import zero_load_contact, zero_load_max_M
+        a0 = zero_load_contact(M, th)
+        Mmax = zero_load_max_M(th)[0]
     confined = None
     if not math.isinf(th) and M > 0 and not ar:
         from . import twopatch
@@ -197,13 +198,16 @@ def _cmd_adherence(args):
 def _cmd_figures(args):
     from . import figures
 
-    def bar(i, n, name):
-        width = 30
-        k = int(width * i / n)
-        sys.stderr.write(f"\r[{'#' * k}{'.' * (width - k)}] {i}/{n} {name:8s}")
+    from tqdm import tqdm
+    shown = []
+
+    def bar(i, n, name):                      # figures.draw_all reports (done, total, next figure)
+        if not shown:
+            shown.append(tqdm(total=n, unit="figures", file=sys.stderr))
+        shown[0].set_postfix_str(name)
+        shown[0].update(i - shown[0].n)
         if i == n:
-            sys.stderr.write("\n")
-        sys.stderr.flush()
+            shown[0].close()
 
     only = None
     if args.only:
@@ -233,7 +237,7 @@ def _cmd_atlas(args):
     Ms, th = atlas.default_grid(args.n_M, args.n_theta, M_max=args.M_max, theta_min=args.theta_min,
                                 theta_max=args.theta_max, with_inf=not args.no_inf)
     t0 = time.perf_counter()
-    res = atlas.classify(Ms, th, progress=None if args.quiet else atlas.text_progress())
+    res = atlas.classify(Ms, th, progress=not args.quiet, two_patch=args.two_patch)
     t1 = time.perf_counter()
     atlas.write_npz(out / "atlas.npz", res)
     if not args.no_csv:
@@ -291,8 +295,10 @@ def build_parser():
     cli_forward.register(sub, _float)
     t = sub.add_parser("atlas", help="regime atlas over (M, vartheta): npz, CSV and a regime map",
                        description="Classify every (M, vartheta) pair of a grid: sub-critical and super-critical "
-                                   "fixed-load detachment (feasible or not), overclosure before detachment, "
-                                   "zero-load contact (8.1), adherence force. The last row is vartheta = inf, "
+                                   "fixed-load adherence points (feasible or not), zero-load contact (8.1), "
+                                   "adherence force, and what slow pulling does in the hole (the confined "
+                                   "classes: detach and land on the top, zip into full contact, or the gap "
+                                   "closes first). The last row is vartheta = inf, "
                                    "where M means M_R* and P* means P_R* of (7.6). Writes atlas.npz, atlas.csv, "
                                    "atlas.png and atlas.pdf into OUT (see jkrcyl.atlas for the fields).")
     t.add_argument("--out", default="atlas", help="output folder (default: atlas)")
@@ -304,6 +310,8 @@ def build_parser():
     t.add_argument("--no-inf", action="store_true", help="leave out the vartheta = inf row")
     t.add_argument("--no-csv", action="store_true", help="skip atlas.csv (the npz holds the same data)")
     t.add_argument("--quiet", action="store_true", help="no progress bar")
+    t.add_argument("--two-patch", action="store_true",
+                   help="run the two-patch analysis (~1 s per pair) where the gap closes first (none on the default grid)")
     t.set_defaults(func=_cmd_atlas)
     return p
 

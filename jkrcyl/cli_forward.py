@@ -55,8 +55,13 @@ def json_value(x):
     return float(f"{x:.10g}") if math.isfinite(x) else None
 
 
-def header(keys):
-    return ",".join(f"{k} [{UNITS[k]}]" if UNITS.get(k) else k for k in keys)
+def header(keys, units=None):
+    """CSV header with units in brackets (default :data:`UNITS`; pass e.g. PHYSICAL_UNITS for P, delta only)."""
+    units = UNITS if units is None else units
+    return ",".join(f"{k} [{units[k]}]" if units.get(k) else k for k in keys)
+
+
+PHYSICAL_UNITS = {"P": "N/m", "delta": "m"}
 
 
 def write_rows(rows, fmt, out=sys.stdout, meta=None):

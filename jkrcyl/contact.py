@@ -7,14 +7,12 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ._validate import contact_parameter, finite_scalar
+from ._validate import PRESSURE_A_MAX, contact_parameter, finite_scalar
 from .critical import a_crit
-from .generated import gap as _gap
-from .generated import load as _load
-from .generated import state as _state
+from .numerics import kernels as _k
 from .materials import Materials
 
-PARALLEL_MIN = 20000   # state() uses the prange kernel from this many contact parameters on
+PARALLEL_MIN = _k.PARALLEL_MIN   # state() uses the prange kernel from this many contact parameters on
 
 
 @dataclass(frozen=True)
@@ -97,16 +95,9 @@ class Contact:
         flat = np.ascontiguousarray(arr.ravel())
         if method == "numeric" or not self.materials.closed_form:
             return self._numeric_state(arr, flat)
-        # prange over both cores for long inputs: bit-identical to the serial loop (tests/test_parallel.py)
-        kernel = _state.full_state_parallel if flat.size >= PARALLEL_MIN else _state.full_state_array
-        P, B, C, c0, c1, r0, delta, h_pi = kernel(
-            R=self.R, a=flat, inv_G_I=self.materials.inv_G_I, **self._args())
-        K, G_release = _load.stress_intensity_array(C=C, R=self.R, a=flat, beta=self.beta, c0=c0, c1=c1)
-        shape = arr.shape
-        fields = {k: _shaped(v, shape) for k, v in dict(
-            a=flat, P=P, B=B, C=C, c0=c0, c1=c1, r0=r0, K=K, G_release=G_release, delta=delta,
-            h_pi=h_pi).items()}
-        return State(contact=self, **fields)
+        s = _k.full_state(flat, R=self.R, inv_G_I=self.materials.inv_G_I, **self._args())
+        fields = {k: _shaped(v, arr.shape) for k, v in s._asdict().items()}
+        return State(contact=self, a=_shaped(flat, arr.shape), **fields)
 
     def _numeric_state(self, arr, flat):
         from .numerics.arcs import single_arc_state
@@ -176,6 +167,9 @@ class Contact:
         ndarray or float, or a tuple of two when parts=True
         """
         a_arr, phi_arr = np.broadcast_arrays(contact_parameter(a), np.asarray(phi, dtype=float))
+        if np.max(a_arr) > PRESSURE_A_MAX:
+            raise ValueError(f"a must be <= {PRESSURE_A_MAX:g} in pressure() (the bounded part of (5.4) loses its "
+                             f"digits beyond: atanh near 1), got {np.max(a_arr):g}")
         if not np.isfinite(phi_arr).all():
             raise ValueError("phi must be finite")
         wrapped = np.mod(phi_arr + math.pi, 2 * math.pi) - math.pi
@@ -195,7 +189,7 @@ class Contact:
             return self._numeric_pressure(a, phi)
         inside = np.abs(phi) < 2 * math.atan(a)
         flat = np.ascontiguousarray(np.where(inside, phi, 0.0))
-        nb, nu = _load.pressure_array(R=self.R, a=a, phi=flat, **self._args())
+        nb, nu = _k.pressure(a, flat, R=self.R, **self._args())
         return np.where(inside, nb, 0.0), np.where(inside, nu, 0.0)
 
     def gap(self, a, phi):
@@ -205,8 +199,7 @@ class Contact:
             raise ValueError("phi must be finite")
         if not self.materials.closed_form:
             return _shaped(self._numeric_gap(a_arr.ravel(), phi_arr.ravel()), a_arr.shape)
-        h = _gap.gap_array(a=np.ascontiguousarray(a_arr.ravel()), phi=np.ascontiguousarray(phi_arr.ravel()),
-                           **self._args())
+        h = _k.gap(a_arr.ravel(), phi_arr.ravel(), **self._args())
         return _shaped(h, a_arr.shape)
 
 

@@ -16,8 +16,8 @@ stability is dP*/da > 0 sub-critically and dP*/da < 0 super-critically (tests/te
 way the adherence force at fixed load is a minimum of P*.  At a super-critical minimum a further pull
 lowers G: the contact grows instead of detaching (jkrcyl.twopatch: it zips into full contact).
 
-Root finding: sign changes of the slope kernels on a fine grid, then bisection to adjacent
-doubles (no scipy).  Where no root exists the result is an empty list.
+Root finding (jkrcyl.numerics.roots): sign changes of the kernels on a fine grid, each refined by
+Brent's method and bisection to adjacent doubles.  Where no root exists the result is an empty list.
 """
 import functools
 import math
@@ -27,9 +27,9 @@ import numpy as np
 
 from ._validate import contact_parameter, finite_scalar, theta as _check_theta
 from .critical import a_crit as _a_crit
-from .generated import derivatives as _der
-from .generated import gap as _gap
-from .generated import load as _load
+from .numerics import kernels as _k
+from .numerics import roots as _roots
+from .numerics.zero_load import zero_load_contact, zero_load_max_M   # noqa: F401  (public names)
 
 REGIMES = ("sub-critical", "super-critical")
 CONTROLS = ("load", "grip")
@@ -67,10 +67,7 @@ def _params(M, theta, gb):
     M = finite_scalar("M", M, low=0.0)
     th = _check_theta(theta)
     gb = default_gb(th) if gb is None else finite_scalar("gb", gb, low=0.0, high=1.0)   # (1/G_I)/beta* <= 1
-    inv_t = 0.0 if math.isinf(th) else 1.0 / th
-    m = M if math.isinf(th) else M * th          # m = M vartheta = zeta beta/(4 pi Delta)
-    scale = 1.0 if math.isinf(th) else th        # P* = p/scale
-    return M, th, gb, inv_t, m, scale
+    return M, th, gb
 
 
 def _check_regime(regime, th):
@@ -105,16 +102,39 @@ def _grid(regime, th, n, ac=None):
 
 
 def _star(a, m, inv_t, gb, ar=0.0):
+    """Normalised equilibrium as a dict p (= vartheta P*), dp, dn, ddn, gP, gd, h, m = M vartheta
+    (tests/test_arcs.py compares the solver with it)."""
     a = np.ascontiguousarray(np.atleast_1d(np.asarray(a, dtype=float)))
     if ar != 0.0:
         from .numerics.arcs import star
         return star(a, m, math.inf if inv_t == 0 else 1.0 / inv_t, gb, ar)
-    # (1/w) dG/da is undefined without adhesion (G = w = 0): nan there; m = 1e-150 leaves p, delta exact
-    p, dp, dn, ddn, gP, gd = _der.equilibrium_star_array(a=a, gb=gb, inv_theta=inv_t, m=m if m > 0 else 1e-150)
-    if m == 0:
-        gP, gd = np.full_like(a, np.nan), np.full_like(a, np.nan)
-    h = _gap.gap_pi_array(Delta=1.0, a=a, beta=1.0, inv_theta=inv_t, zeta=4 * math.pi * m)
-    return dict(p=p, dp=dp, dn=dn, ddn=ddn, gP=gP, gd=gd, h=h)
+    s = _k.star_m(a, inv_theta=inv_t, m=m, gb=gb)
+    return dict(p=s.p, dp=s.dp_da, dn=s.delta_over_Delta, ddn=s.ddelta_da, gP=s.dG_da_P, gd=s.dG_da_delta,
+                h=s.h_pi_over_Delta)
+
+
+def _star_of(a, M, th, gb, ar=0.0):
+    """The normalised equilibrium (jkrcyl.numerics.kernels.Star) at the contact parameters a."""
+    if ar == 0.0:
+        return _k.star(np.atleast_1d(a), M, th, gb)
+    n = _k.normalise(M, th)
+    s = _star(a, n.m, n.inv_theta, gb, ar)
+    return _k.Star(P_star=s["p"] / n.scale, dP_star_da=s["dp"] / n.scale, delta_over_Delta=s["dn"],
+                   ddelta_da=s["ddn"], dG_da_P=s["gP"], dG_da_delta=s["gd"], h_pi_over_Delta=s["h"])
+
+
+_star_root = _roots.brent_solver(_k.star_residual_nb)
+
+
+def _star_roots(field, M, th, gb, ar, grid, target=0.0):
+    """Where the Star field crosses target on the grid: [(a, sign of field - target right of a)]."""
+    values = getattr(_star_of(grid, M, th, gb, ar), field) - target
+    if ar != 0.0:      # each evaluation is a collocation solve (numerics.arcs)
+        f = lambda x, args: float(getattr(_star_of(np.array([x]), M, th, gb, ar), field)[0]) - target
+        return _roots.grid_roots(values, grid, lambda lo, hi, flo, fhi: _roots.brent(f, lo, hi, (), flo, fhi))
+    n = _k.normalise(M, th)
+    args = (n.inv_theta, n.m if n.m > 0 else 1e-150, gb, _k.STAR_FIELDS[field], n.scale, target)
+    return _roots.grid_roots(values, grid, lambda lo, hi, flo, fhi: _star_root(lo, hi, flo, fhi, args))
 
 
 SMALL_A_POINTS = 200      # log-spaced points below the root grid (small M, issue 11)
@@ -193,19 +213,19 @@ def curve(M, theta, regime="sub-critical", n=2000, gb=None, a=None, alpha_ratio=
 
     alpha_ratio = alpha*/beta* != 0: numerical solution (jkrcyl.numerics.arcs); eps* then uses its pole a_crit.
     """
-    M, th, gb, inv_t, m, scale = _params(M, theta, gb)
+    M, th, gb = _params(M, theta, gb)
     ar = _alpha(alpha_ratio)
     _check_regime(regime, th)
     ac = _ac(th, gb, ar)
     if a is None:
-        n = int(finite_scalar("n", n, low=2))
+        n = int(finite_scalar("n", n, low=2, high=1e6))
         a = _grid(regime, th, n, ac)
     a = np.ascontiguousarray(_on_branch(a, regime, th, ac))
-    st = _star(a, m, inv_t, gb, ar)
+    st = _star_of(a, M, th, gb, ar)
     return Curve(M=M, theta=th, gb=gb, regime=regime, a=a, eps=2 * np.arctan(a), eps_star=_eps_star(a, th, ac),
-                 P_star=st["p"] / scale, delta_over_Delta=st["dn"], h_pi_over_Delta=st["h"],
-                 feasible=st["h"] >= 0, stable_load=st["gP"] > 0, stable_grip=st["gd"] > 0,
-                 dP_star_da=st["dp"] / scale, ddelta_da=st["ddn"], dG_da_P=st["gP"], dG_da_delta=st["gd"])
+                 P_star=st.P_star, delta_over_Delta=st.delta_over_Delta, h_pi_over_Delta=st.h_pi_over_Delta,
+                 feasible=st.h_pi_over_Delta >= 0, stable_load=st.dG_da_P > 0, stable_grip=st.dG_da_delta > 0,
+                 dP_star_da=st.dP_star_da, ddelta_da=st.ddelta_da, dG_da_P=st.dG_da_P, dG_da_delta=st.dG_da_delta)
 
 
 @dataclass(frozen=True)
@@ -231,39 +251,6 @@ class Point:
     delta: float = None           # [m], likewise
 
 
-def _bisect(f, lo, hi):
-    """Root of f in [lo, hi] with f(lo) f(hi) < 0, to adjacent doubles (or exact zero)."""
-    flo = f(lo)
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if mid <= lo or mid >= hi:
-            break
-        fm = f(mid)
-        if fm == 0:
-            return mid
-        if (fm < 0) == (flo < 0):
-            lo, flo = mid, fm
-        else:
-            hi = mid
-    return lo if abs(flo) <= abs(f(hi)) else hi
-
-
-def _brent(f, lo, hi):
-    """Root by Brent's method to 1e-14 relative (alpha* != 0: each f is a collocation solve, smooth in a)."""
-    from scipy.optimize import brentq
-    return brentq(f, lo, hi, xtol=1e-300, rtol=1e-14)
-
-
-def _roots(f_arr, f_one, a_grid, refine=_bisect):
-    """Sign changes of f on the grid refined by bisection: list of (a, sign of f right of the root)."""
-    v = f_arr(a_grid)
-    out = []
-    for i in np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0]:
-        r = refine(f_one, float(a_grid[i]), float(a_grid[i + 1]))
-        out.append((r, 1 if v[i + 1] > 0 else -1))
-    return out
-
-
 ROOT_GRID = 4000
 
 
@@ -271,22 +258,20 @@ def stationary_points(M, theta, control="load", regime="sub-critical", gb=None, 
     """All points of one branch where dP*/da = 0 (load) or d(delta/Delta)/da = 0 (grip)."""
     if control not in CONTROLS:
         raise ValueError(f"control must be 'load' or 'grip', got {control!r}")
-    M, th, gb, inv_t, m, scale = _params(M, theta, gb)
+    M, th, gb = _params(M, theta, gb)
     ar = _alpha(alpha_ratio)
     _check_regime(regime, th)
     ac = _ac(th, gb, ar)
     if ar != 0.0 and n == ROOT_GRID:
         n = NUMERIC_ROOT_GRID
-    key = "dp" if control == "load" else "ddn"
-    f_arr = lambda x: _star(x, m, inv_t, gb, ar)[key]
-    f_one = lambda x: float(_star(np.array([x]), m, inv_t, gb, ar)[key][0])
+    field = "dP_star_da" if control == "load" else "ddelta_da"
     out = []
-    for r, sgn in _roots(f_arr, f_one, _root_grid(regime, th, n, ac, M), _brent if ar else _bisect):
-        st = _star(np.array([r]), m, inv_t, gb, ar)
+    for r, sgn in _star_roots(field, M, th, gb, ar, _root_grid(regime, th, n, ac, M)):
+        st = _star_of(np.array([r]), M, th, gb, ar)
         out.append(Point(control=control, regime=regime, kind="min" if sgn > 0 else "max", M=M, theta=th,
                          a=r, eps=2 * math.atan(r), eps_star=float(_eps_star(r, th, ac)),
-                         P_star=float(st["p"][0] / scale), delta_over_Delta=float(st["dn"][0]),
-                         h_pi_over_Delta=float(st["h"][0]), feasible=bool(st["h"][0] >= 0)))
+                         P_star=float(st.P_star[0]), delta_over_Delta=float(st.delta_over_Delta[0]),
+                         h_pi_over_Delta=float(st.h_pi_over_Delta[0]), feasible=bool(st.h_pi_over_Delta[0] >= 0)))
     return out
 
 
@@ -312,75 +297,26 @@ def adherence(M, theta, control="load", gb=None, regimes=None, alpha_ratio=0.0):
 
 def solve_load(M, theta, P_star, regime="sub-critical", gb=None, n=ROOT_GRID, alpha_ratio=0.0):
     """Contact parameters a on a branch where P*(a) = P_star (sorted; [] if none)."""
-    M, th, gb, inv_t, m, scale = _params(M, theta, gb)
+    M, th, gb = _params(M, theta, gb)
     ar = _alpha(alpha_ratio)
     _check_regime(regime, th)
     if ar != 0.0 and n == ROOT_GRID:
         n = NUMERIC_ROOT_GRID
     target = finite_scalar("P_star", P_star)
-    f_arr = lambda x: _star(x, m, inv_t, gb, ar)["p"] / scale - target
-    f_one = lambda x: float(f_arr(np.array([x]))[0])
     grid = _grid(regime, th, n, _ac(th, gb, ar))
-    return sorted(r for r, _ in _roots(f_arr, f_one, grid, _brent if ar else _bisect))
+    return sorted(r for r, _ in _star_roots("P_star", M, th, gb, ar, grid, target))
 
 
 def solve_approach(M, theta, delta_over_Delta, regime="sub-critical", gb=None, n=ROOT_GRID, alpha_ratio=0.0):
     """Contact parameters a on a branch where delta/Delta = the given value (sorted)."""
-    M, th, gb, inv_t, m, scale = _params(M, theta, gb)
+    M, th, gb = _params(M, theta, gb)
     ar = _alpha(alpha_ratio)
     _check_regime(regime, th)
     if ar != 0.0 and n == ROOT_GRID:
         n = NUMERIC_ROOT_GRID
     target = finite_scalar("delta_over_Delta", delta_over_Delta)
-    f_arr = lambda x: _star(x, m, inv_t, gb, ar)["dn"] - target
-    f_one = lambda x: float(f_arr(np.array([x]))[0])
-    return sorted(r for r, _ in _roots(f_arr, f_one, _grid(regime, th, n, _ac(th, gb, ar)),
-                                       _brent if ar else _bisect))
-
-
-# --- zero load (8.1) ----------------------------------------------------------------------------
-def zero_load_equation(a0, M, theta):
-    """Left side of (8.1): a0^(3/2)/M - a0^2 - 2 vartheta + log(1 + a0^2)."""
-    return a0**1.5 / M - a0**2 - 2 * theta + math.log1p(a0 * a0)
-
-
-def zero_load_contact(M, theta):
-    """Sorted contact parameters a0 > 0 of the non-trivial zero-load equilibria (8.1); [] if none.
-
-    For vartheta = inf (M = M_R*), (7.6) gives the single root a0 = (2 M_R*)^(2/3).
-    Exact tangency (M equal to :func:`zero_load_max_M`) counts as no root unless hit exactly.
-    """
-    M = finite_scalar("M", M, low=0.0)
-    th = _check_theta(theta)
-    if M == 0:
-        return []
-    if math.isinf(th):
-        return [(2 * M) ** (2.0 / 3.0)]
-    # (8.1) times M: g(a) = a^1.5 - M (a^2 + 2 theta - log1p(a^2)); negative at 0 and at infinity
-    g = lambda x: x**1.5 - M * (x * x + 2 * th - math.log1p(x * x))
-    hi = max(10.0, 4.0 / (M * M))
-    grid = np.geomspace(1e-12, hi, 20000)
-    v = grid**1.5 - M * (grid**2 + 2 * th - np.log1p(grid**2))
-    roots = [_bisect(g, float(grid[i]), float(grid[i + 1]))
-             for i in np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0]]
-    return sorted(roots)
-
-
-def zero_load_max_M(theta):
-    """The largest M with a zero-load contact (8.1): max over a of a^(3/2)/(a^2 + 2 vartheta - log(1 + a^2)).
-
-    Returns (M_max, a at the maximum).  (8.1) has two roots for M < M_max and none for M > M_max.
-    """
-    th = _check_theta(theta)
-    if math.isinf(th):
-        return math.inf, math.inf
-    # d/da log of the ratio: 1.5/a - (2a - 2a/(1+a^2))/(a^2 + 2 th - L) = 0
-    h = lambda x: 1.5 * (x * x + 2 * th - math.log1p(x * x)) - x * (2 * x - 2 * x / (1 + x * x))
-    lo, hi = 1e-6, 1.0
-    while h(hi) > 0:
-        hi *= 2
-    a_m = _bisect(h, lo, hi)
-    return a_m**1.5 / (a_m**2 + 2 * th - math.log1p(a_m**2)), a_m
+    grid = _grid(regime, th, n, _ac(th, gb, ar))
+    return sorted(r for r, _ in _star_roots("delta_over_Delta", M, th, gb, ar, grid, target))
 
 
 def two_patch(M, theta, n=None, gb=None, alpha_ratio=0.0):

@@ -1,4 +1,4 @@
-"""The paper's printed formulas, typed by hand: the reference the tests compare the kernels with.
+"""The paper's printed formulas, typed by hand: the reference derive/ and the tests compare the kernels with.
 
 Every function takes ``lib`` (``math`` for float64, ``numpy`` for arrays, ``mpmath`` for high
 precision) so that a test can evaluate the printed formula at 50 digits.  Names carry the equation number.  Where the

@@ -11,8 +11,8 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from jkrcyl import paper
-from jkrcyl.generated.approach import approach, approach_array, approach_parts
+from reference import paper
+from jkrcyl.generated.approach import Approach, approach, approach_into, approach_parts
 
 # alpha* = 0 material pairs (G, kappa, G_I, kappa_I): (kappa - 1)/G = (kappa_I - 1)/G_I
 PAIRS = {
@@ -146,7 +146,8 @@ def test_delta_over_Delta_and_array_form():
     beta, t, g = constants(*PAIRS["identical"])
     zeta = zeta_of_w(0.004, beta)
     av = np.array([1e-3, 0.2, 0.7, 3.0])
-    d, dd = approach_array(DELTA, av, beta, g, t, zeta)
+    d, dd = Approach(np.empty(av.size), np.empty(av.size))
+    approach_into(Approach(d, dd), DELTA, av, beta, g, t, zeta)
     for i, ai in enumerate(av):
         with mp.workdps(30):
             ref = delta_exact(ai, beta, t, g, DELTA, zeta, R)

@@ -14,7 +14,7 @@ import pytest
 
 import jkrcyl
 from jkrcyl import equilibria as eq
-from jkrcyl import paper as pp
+from reference import paper as pp
 from jkrcyl import special
 from jkrcyl.generated import derivatives as der
 

@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 import jkrcyl
-from jkrcyl import paper
-from jkrcyl.generated.load import load_state, load_state_array, normalised_load, stress_intensity
+from reference import paper
+from jkrcyl.generated.load import LoadState, load_state, load_state_into, normalised_load, stress_intensity
 
 mp.mp.dps = 50
 A_GRID = np.geomspace(1e-6, 50, 61)
@@ -97,7 +97,8 @@ def test_error_near_a_crit_follows_condition_number():
 
 def test_array_form_equals_scalar():
     a = np.geomspace(1e-4, 30, 17)
-    arrays = load_state_array(0.01, 1.0, a, 3.0, 1.0, 0.02)
+    arrays = LoadState(*(np.empty(a.size) for _ in LoadState._fields))
+    load_state_into(arrays, 0.01, 1.0, a, 3.0, 1.0, 0.02)
     for i, ai in enumerate(a):
         assert tuple(col[i] for col in arrays) == load_state(0.01, 1.0, ai, 3.0, 1.0, 0.02)
 

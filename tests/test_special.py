@@ -8,7 +8,7 @@ import pytest
 
 import jkrcyl
 from jkrcyl import equilibria as eq
-from jkrcyl import paper as pp
+from reference import paper as pp
 from jkrcyl import special
 
 A = np.array([1e-3, 0.05, 0.3, 0.7, 0.9])

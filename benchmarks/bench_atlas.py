@@ -1,0 +1,59 @@
+"""Benchmark (not a test): the regime atlas with the confined classes (issue 9 item 3, issue 12 item 4).
+
+Run: python benchmarks/bench_atlas.py [--n 1000]
+
+Times, in one run: the classification of the default n x n grid (+ the vartheta = inf row) with all cores
+(numba prange) and one core on a slice, the outputs (npz, CSV, map), and the two-patch analysis
+(jkrcyl.twopatch.confined_events) that the confined classes stand in for -- per pair, and extrapolated to
+the grid.  Goal: the default 1000 x 1000 atlas under 60 s on 2 cores.
+"""
+import argparse
+import os
+import pathlib
+import tempfile
+import time
+
+import numpy as np
+
+from jkrcyl import atlas
+from jkrcyl import twopatch as tp
+
+
+def timed(fn):
+    t0 = time.perf_counter()
+    out = fn()
+    return time.perf_counter() - t0, out
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--n", type=int, default=1000)
+    args = ap.parse_args(argv)
+    atlas.classify(*atlas.default_grid(8, 8))                       # compile / load the numba cache
+    Ms, th = atlas.default_grid(args.n, args.n)
+    t_par, res = timed(lambda: atlas.classify(Ms, th))
+    rows = max(1, args.n // 20)
+    t_ser, _ = timed(lambda: atlas.classify(Ms, th[:rows], parallel=False))
+    per_pair = t_ser / (rows * Ms.size)
+    with tempfile.TemporaryDirectory() as d:
+        d = pathlib.Path(d)
+        t_npz, _ = timed(lambda: atlas.write_npz(d / "atlas.npz", res))
+        t_csv, _ = timed(lambda: atlas.write_csv(d / "atlas.csv", res))
+        t_png, _ = timed(lambda: atlas.draw(res, str(d / "atlas")))
+    total = t_par + t_npz + t_csv + t_png
+    codes, counts = np.unique(res["confined"], return_counts=True)
+    print(f"atlas {Ms.size} x {th.size} pairs on {os.cpu_count()} cores:")
+    print(f"  classify (prange)      {t_par:7.2f} s   ({t_par / res['confined'].size * 1e6:.2f} us per pair)")
+    print(f"  classify (1 core)      {per_pair * 1e6:7.2f} us per pair on {rows} rows; "
+          f"speed-up {per_pair * res['confined'].size / t_par:.2f}x")
+    print(f"  npz {t_npz:.2f} s, CSV {t_csv:.2f} s, map {t_png:.2f} s; total {total:.2f} s "
+          f"(goal <= 60 s: {'met' if total <= 60 else 'NOT met'})")
+    print("  confined classes: " + ", ".join(f"{c}: {n}" for c, n in zip(codes.tolist(), counts.tolist())))
+    t_tp, ev = timed(lambda: tp.confined_events(0.4, 1.0))
+    print(f"two-patch analysis (confined_events, M = 0.4, vartheta = 1): {t_tp:.2f} s -> {ev.regime}; "
+          f"for every pair {t_tp * res['confined'].size / 3600:.0f} h on one core, "
+          f"{t_tp / (t_par / res['confined'].size):.0f}x the atlas cost per pair")
+
+
+if __name__ == "__main__":
+    main()

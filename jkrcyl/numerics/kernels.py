@@ -1,0 +1,199 @@
+"""The one bridge between the generated kernels (jkrcyl.generated) and the library.
+
+Only this module imports jkrcyl.generated (tests/test_layer.py enforces it).  It owns the conversion of
+the paper's parameters to kernel arguments -- vartheta = inf is ``inv_theta = 0``; the normalised
+kernels of section 6 take ``m = M vartheta`` (M_R* when vartheta = inf) with Delta = beta* = 1, and
+P* = p/scale with scale = vartheta (1 when vartheta = inf) -- calls every kernel by keyword and hands
+back named results, so that a new kernel argument or output cannot silently shift positions.
+"""
+import math
+from collections import namedtuple
+
+import numpy as np
+from numba import njit
+
+from ..generated import derivatives as _der
+from ..generated import gap as _gap
+from ..generated import load as _load
+from ..generated import special as _special
+from ..generated import state as _state
+from ..generated import zero_load as _zl
+from . import roots
+
+PARALLEL_MIN = 20000   # full_state uses the prange kernel from this many contact parameters on
+
+FullState = _state.FullState      # P, B, C, c0, c1, r0, K, G_release, delta, h_pi
+Normalised = namedtuple("Normalised", ["inv_theta", "m", "scale"])
+Pressure = namedtuple("Pressure", ["bounded", "unbounded"])
+StarM = namedtuple("StarM", _der.EquilibriumStar._fields + ("h_pi_over_Delta",))
+Star = namedtuple("Star", ["P_star", "dP_star_da", "delta_over_Delta", "ddelta_da", "dG_da_P",
+                           "dG_da_delta", "h_pi_over_Delta"])
+
+
+# --- parameters -----------------------------------------------------------------------------------
+def inv_theta_of(theta):
+    """1/vartheta, 0 for the rigid cradle vartheta = inf (section 7.2)."""
+    return 0.0 if math.isinf(theta) else 1.0 / theta
+
+
+def normalise(M, theta):
+    """Arguments of the normalised kernels: inv_theta, m = M vartheta (M_R* if inf), scale (P* = p/scale)."""
+    if math.isinf(theta):
+        return Normalised(0.0, M, 1.0)
+    return Normalised(1.0 / theta, M * theta, theta)
+
+
+def _empty(result, n):
+    return result(*(np.empty(n) for _ in result._fields))
+
+
+def _array(x):
+    return np.ascontiguousarray(x, dtype=float)
+
+
+# --- dimensional kernels (Contact) ------------------------------------------------------------------
+def full_state(a, *, R, Delta, beta, inv_theta, inv_G_I, zeta):
+    """Equilibrium state at the contact parameters a (1-D): a :data:`FullState` of arrays."""
+    a = _array(a)
+    out = _empty(FullState, a.size)
+    # prange over all cores for long inputs: bit-identical to the serial loop (tests/test_parallel.py)
+    fill = _state.full_state_into_parallel if a.size >= PARALLEL_MIN else _state.full_state_into
+    fill(out, Delta=Delta, R=R, a=a, beta=beta, inv_G_I=inv_G_I, inv_theta=inv_theta, zeta=zeta)
+    return out
+
+
+def pressure(a, phi, *, R, Delta, beta, inv_theta, zeta):
+    """Pressure N(phi) of (5.4) [Pa] at one contact parameter a, phi 1-D inside the contact."""
+    phi = _array(phi)
+    out = _empty(_load.Pressure, phi.size)
+    _load.pressure_into(out, Delta=Delta, R=R, a=float(a), beta=beta, inv_theta=inv_theta, phi=phi,
+                        zeta=zeta)
+    return Pressure(bounded=out.N_bounded, unbounded=out.N_unbounded)
+
+
+def gap(a, phi, *, Delta, beta, inv_theta, zeta):
+    """Gap h(phi) of (5.9) [m]; a and phi 1-D of equal length."""
+    a, phi = _array(a), _array(phi)
+    out = np.empty(a.size)
+    _gap.gap_into(out, Delta=Delta, a=a, beta=beta, inv_theta=inv_theta, phi=phi, zeta=zeta)
+    return out
+
+
+def gap_pi(a, *, Delta, beta, inv_theta, zeta):
+    """Gap at phi = pi (5.10) [m] at the contact parameters a (1-D); Delta = 0 allowed."""
+    a = _array(a)
+    out = np.empty(a.size)
+    _gap.gap_pi_into(out, Delta=Delta, a=a, beta=beta, inv_theta=inv_theta, zeta=zeta)
+    return out
+
+
+# --- normalised kernels (section 6: equilibria, atlas) ----------------------------------------------
+def star_m(a, *, inv_theta, m, gb):
+    """Normalised equilibrium in the kernel's own scale (p = vartheta P*, m = M vartheta): a :data:`StarM`.
+
+    (1/w) dG/da is undefined without adhesion (G = w = 0): NaN there; m = 1e-150 leaves p and delta exact.
+    """
+    a = _array(a)
+    out = _empty(_der.EquilibriumStar, a.size)
+    _der.equilibrium_star_into(out, a=a, gb=gb, inv_theta=inv_theta, m=m if m > 0 else 1e-150)
+    nan = np.full(a.size, np.nan)
+    return StarM(*out[:4], out.dG_da_P if m > 0 else nan, out.dG_da_delta if m > 0 else nan,
+                 gap_pi(a, Delta=1.0, beta=1.0, inv_theta=inv_theta, zeta=4 * math.pi * m))
+
+
+def star(a, M, theta, gb):
+    """Normalised equilibrium of section 6 at the contact parameters a (1-D): a :data:`Star` of arrays."""
+    n = normalise(M, theta)
+    s = star_m(a, inv_theta=n.inv_theta, m=n.m, gb=gb)
+    return Star(P_star=s.p / n.scale, dP_star_da=s.dp_da / n.scale, delta_over_Delta=s.delta_over_Delta,
+                ddelta_da=s.ddelta_da, dG_da_P=s.dG_da_P, dG_da_delta=s.dG_da_delta,
+                h_pi_over_Delta=s.h_pi_over_Delta)
+
+
+STAR_FIELDS = {"P_star": 0, "dP_star_da": 1, "delta_over_Delta": 2, "ddelta_da": 3}
+
+
+@njit(cache=True)
+def star_residual_nb(a, args):
+    """Field k of the normalised equilibrium minus a target: args = (inv_theta, m, gb, k, scale, target),
+    k as :data:`STAR_FIELDS` (P* fields divide the kernel's p by scale, as :func:`star`)."""
+    inv_theta, m, gb, k, scale, target = args
+    r = _der.equilibrium_star(a=a, gb=gb, inv_theta=inv_theta, m=m)
+    value = (r.p, r.dp_da, r.delta_over_Delta, r.ddelta_da)[k]
+    return (value / scale if k < 2 else value) - target
+
+
+# numba scalars of the atlas: Delta = beta* = 1, m = M vartheta
+@njit(cache=True)
+def p_nb(a, inv_theta, m):
+    """p = vartheta P* (P_R* for vartheta = inf) from the load (4.4)."""
+    r = _load.load_state(Delta=1.0, R=1.0, a=a, beta=1.0, inv_theta=inv_theta, zeta=4.0 * math.pi * m)
+    return r.P / (4.0 * math.pi)
+
+
+@njit(cache=True)
+def dp_da_nb(a, inv_theta, m):
+    """dp/da along the equilibrium (sign of dP*/da)."""
+    r = _der.load_slopes(Delta=1.0, a=a, beta=1.0, inv_G_I=0.0, inv_theta=inv_theta,
+                         zeta=4.0 * math.pi * m)
+    return r.dP_da / (4.0 * math.pi)
+
+
+@njit(cache=True)
+def h_pi_nb(a, inv_theta, m):
+    """h(pi)/Delta of (5.10)."""
+    return _gap.gap_pi(Delta=1.0, a=a, beta=1.0, inv_theta=inv_theta, zeta=4.0 * math.pi * m)
+
+
+# --- a_crit (section 4) and the zero-load contact (8.1) ------------------------------------------------
+@njit(cache=True)
+def _critical(u, args):
+    r = _zl.critical_equation(theta=args[0], u=u)
+    return r.f, r.df_du
+
+
+_critical_newton = roots.newton_solver(_critical)
+
+
+@njit(cache=True)
+def a_crit_nb(theta):
+    """a_crit(vartheta), unchecked (inf for inf): Newton on u = a^2 for f(u) = 2 vartheta - log1p(u) - 2u^2,
+    decreasing and concave, so Newton from the right of the root converges monotonically."""
+    if math.isinf(theta):
+        return math.inf
+    return math.sqrt(_critical_newton(max(math.sqrt(theta), 2.0 * theta), (theta,)))
+
+
+@njit(cache=True)
+def zero_load_residual_nb(a, args):
+    """(8.1) times M: a^(3/2) - m (2 + inv_theta (a^2 - log(1 + a^2))); args = (inv_theta, m)."""
+    return _zl.zero_load_residual(a=a, inv_theta=args[0], m=args[1])
+
+
+@njit(cache=True)
+def zero_load_rigid_nb(m):
+    """The zero-load contact of the rigid cradle, m = M_R*."""
+    return _zl.zero_load_rigid(m=m)
+
+
+@njit(cache=True)
+def zero_load_stationary_nb(a, args):
+    """> 0 below the a of M_max, < 0 above it; args = (vartheta,)."""
+    return _zl.zero_load_max(a=a, theta=args[0]).stationary
+
+
+@njit(cache=True)
+def zero_load_M0_nb(a, theta):
+    """The M for which a is a zero-load contact: a^(3/2)/(a^2 + 2 vartheta - log(1 + a^2))."""
+    return _zl.zero_load_max(a=a, theta=theta).M0
+
+
+# --- special cases of section 7 (derive/special.py) ---------------------------------------------------
+def special(name, **args):
+    """A kernel of generated/special.py by name, on numpy arrays (vectorised over its arguments)."""
+    kernel = getattr(_special, name)
+    arrays = {k: np.asarray(v, dtype=float) for k, v in args.items()}
+    shape = np.broadcast_shapes(*(v.shape for v in arrays.values()))
+    flat = {k: np.ascontiguousarray(np.broadcast_to(v, shape)).ravel() for k, v in arrays.items()}
+    values = [kernel(**{k: float(v[i]) for k, v in flat.items()}) for i in range(int(np.prod(shape)))]
+    return np.asarray(values).reshape(shape + np.shape(values[0]) if values else shape)

@@ -1,0 +1,129 @@
+"""The one root-finding toolkit of jkrcyl: bracketing on a grid, Brent's method, Newton.
+
+Each algorithm is written once, as plain Python taking the function ``f(x, args)``; the numba form is
+the same source compiled around one njit ``f`` (:func:`brent_solver`, :func:`newton_solver`), so the
+library (a Python callable, e.g. one collocation solve per evaluation) and the atlas (njit loops over
+millions of pairs) refine roots identically.  Closures over a jitted ``f`` are cached by numba per ``f``.
+"""
+import functools
+
+import numpy as np
+from numba import njit
+
+EPS = 2.220446049250313e-16
+
+
+def _make_brent(f):
+    def brent(lo, hi, flo, fhi, args):
+        """Root of f in [lo, hi] with f(lo) f(hi) < 0: Brent's method (inverse quadratic / secant steps
+        safeguarded by bisection), then bisection of the last bracket to adjacent doubles."""
+        a, b, fa, fb = lo, hi, flo, fhi
+        c, fc = a, fa
+        d = b - a
+        e = d
+        for _ in range(200):
+            if (fb > 0.0) == (fc > 0.0):
+                c, fc = a, fa
+                d = b - a
+                e = d
+            if abs(fc) < abs(fb):
+                a, fa = b, fb
+                b, fb = c, fc
+                c, fc = a, fa
+            tol = 2.0 * EPS * abs(b) + 1e-300
+            xm = 0.5 * (c - b)
+            if abs(xm) <= tol or fb == 0.0:
+                break
+            if abs(e) >= tol and abs(fa) > abs(fb):
+                s = fb / fa
+                if a == c:
+                    p = 2.0 * xm * s
+                    q = 1.0 - s
+                else:
+                    q = fa / fc
+                    r = fb / fc
+                    p = s * (2.0 * xm * q * (q - r) - (b - a) * (r - 1.0))
+                    q = (q - 1.0) * (r - 1.0) * (s - 1.0)
+                if p > 0.0:
+                    q = -q
+                p = abs(p)
+                if 2.0 * p < min(3.0 * xm * q - abs(tol * q), abs(e * q)):
+                    e = d
+                    d = p / q
+                else:
+                    d = xm
+                    e = d
+            else:
+                d = xm
+                e = d
+            a, fa = b, fb
+            b = b + d if abs(d) > tol else b + (tol if xm > 0.0 else -tol)
+            fb = f(b, args)
+        if fb == 0.0 or (fb > 0.0) == (fc > 0.0):
+            return b
+        lo, hi, flo, fhi = (b, c, fb, fc) if b < c else (c, b, fc, fb)
+        for _ in range(64):
+            mid = 0.5 * (lo + hi)
+            if mid <= lo or mid >= hi:
+                break
+            fm = f(mid, args)
+            if fm == 0.0:
+                return mid
+            if (fm > 0.0) == (flo > 0.0):
+                lo, flo = mid, fm
+            else:
+                hi, fhi = mid, fm
+        return lo if abs(flo) <= abs(fhi) else hi
+    return brent
+
+
+def _make_newton(f_df):
+    def newton(x0, args):
+        """Newton from x0 until |step| <= 1e-16 |x| (200 steps at most)."""
+        x = x0
+        for _ in range(200):
+            fx, dfx = f_df(x, args)
+            step = fx / dfx
+            x -= step
+            if abs(step) <= 1e-16 * abs(x):
+                break
+        return x
+    return newton
+
+
+@functools.lru_cache(maxsize=None)
+def brent_solver(f):
+    """njit ``solve(lo, hi, flo, fhi, args)`` for an njit ``f(x, args)``; see :func:`brent`."""
+    return njit(cache=True)(_make_brent(f))
+
+
+@functools.lru_cache(maxsize=None)
+def newton_solver(f_df):
+    """njit ``solve(x0, args)`` for an njit ``f_df(x, args) -> (f, df/dx)``."""
+    return njit(cache=True)(_make_newton(f_df))
+
+
+def brent(f, lo, hi, args=(), flo=None, fhi=None):
+    """Root of a Python callable ``f(x, args)`` in [lo, hi] (sign change), to adjacent doubles."""
+    flo = f(lo, args) if flo is None else flo
+    fhi = f(hi, args) if fhi is None else fhi
+    if flo == 0.0:
+        return lo
+    if fhi == 0.0:
+        return hi
+    if (flo > 0.0) == (fhi > 0.0):
+        raise ValueError(f"brent: no sign change in [{lo!r}, {hi!r}]")
+    return _make_brent(f)(float(lo), float(hi), float(flo), float(fhi), args)
+
+
+def grid_roots(values, grid, solve):
+    """Sign changes of ``values`` (f on the increasing ``grid``) refined by ``solve(lo, hi, flo, fhi)``.
+
+    Returns ``[(root, +1 or -1), ...]``: the sign is that of f right of the root (+1: f rises).
+    """
+    v = np.asarray(values, dtype=float)
+    out = []
+    for i in np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0]:
+        r = solve(float(grid[i]), float(grid[i + 1]), float(v[i]), float(v[i + 1]))
+        out.append((r, 1 if v[i + 1] > 0 else -1))
+    return out

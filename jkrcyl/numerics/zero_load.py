@@ -1,0 +1,74 @@
+"""The zero-load contact (8.1) and the largest M that has one: the one implementation (library and atlas).
+
+(8.1) times M vartheta is the residual g(a) = a^(3/2) - m (2 + (a^2 - log(1 + a^2))/vartheta), m = M vartheta
+(derive/zero_load.py): negative at a = 0 and for large a, positive between its two roots exactly when
+M < M_max(vartheta) = max_a a^(3/2)/(a^2 + 2 vartheta - log(1 + a^2)).  So the two roots are bracketed by
+[0, a_max] and [a_max, a_hi], a_max the a of M_max.  For vartheta = inf (M = M_R*, (7.6)) there is one
+root, a0 = (2 M_R*)^(2/3).
+"""
+import math
+
+from numba import njit
+
+from .._validate import finite_scalar, theta as _check_theta
+from . import kernels, roots
+
+_residual_root = roots.brent_solver(kernels.zero_load_residual_nb)
+_stationary_root = roots.brent_solver(kernels.zero_load_stationary_nb)
+
+
+@njit(cache=True)
+def zero_load_max_nb(theta):
+    """(M_max, a at the maximum) of (8.1) for vartheta >= 1/2; (inf, inf) for vartheta = inf."""
+    if math.isinf(theta):
+        return math.inf, math.inf
+    args = (theta,)
+    lo, hi = 1e-6, 1.0
+    while kernels.zero_load_stationary_nb(hi, args) > 0.0:
+        hi *= 2.0
+    a_max = _stationary_root(lo, hi, kernels.zero_load_stationary_nb(lo, args),
+                             kernels.zero_load_stationary_nb(hi, args), args)
+    return kernels.zero_load_M0_nb(a_max, theta), a_max
+
+
+@njit(cache=True)
+def zero_load_roots_nb(M, theta, M_max, a_max):
+    """(n, a_small, a_large): the n in {0, 1, 2} zero-load contact parameters of (8.1) (0.0 where absent);
+    M_max, a_max from :func:`zero_load_max_nb`.  M = M_max exactly counts as no root."""
+    if not M > 0.0:
+        return 0, 0.0, 0.0
+    if math.isinf(theta):
+        a0 = kernels.zero_load_rigid_nb(M)
+        return 1, a0, a0
+    if not M < M_max:
+        return 0, 0.0, 0.0
+    args = (1.0 / theta, M * theta)
+    hi = max(10.0, 4.0 / (M * M))                      # g(a) ~ a^1.5 - M a^2 < 0 beyond 1/M^2
+    g_lo = kernels.zero_load_residual_nb(0.0, args)
+    g_m = kernels.zero_load_residual_nb(a_max, args)
+    g_hi = kernels.zero_load_residual_nb(hi, args)
+    if not (g_lo < 0.0 < g_m and g_hi < 0.0):
+        return 0, 0.0, 0.0
+    return 2, _residual_root(0.0, a_max, g_lo, g_m, args), _residual_root(a_max, hi, g_m, g_hi, args)
+
+
+def zero_load_max_M(theta):
+    """The largest M with a zero-load contact (8.1): max over a of a^(3/2)/(a^2 + 2 vartheta - log(1 + a^2)).
+
+    Returns (M_max, a at the maximum); (inf, inf) for vartheta = inf.  (8.1) has two roots for
+    M < M_max and none for M > M_max.
+    """
+    M_max, a_max = zero_load_max_nb(_check_theta(theta))
+    return float(M_max), float(a_max)
+
+
+def zero_load_contact(M, theta):
+    """Sorted contact parameters a0 > 0 of the non-trivial zero-load equilibria (8.1); [] if none.
+
+    For vartheta = inf (M = M_R*), (7.6) gives the single root a0 = (2 M_R*)^(2/3).
+    Exact tangency (M equal to :func:`zero_load_max_M`) counts as no root.
+    """
+    M = finite_scalar("M", M, low=0.0)
+    th = _check_theta(theta)
+    n, a_small, a_large = zero_load_roots_nb(M, th, *zero_load_max_nb(th))
+    return [float(a_small), float(a_large)][:n] if n != 1 else [float(a_small)]
