@@ -1,4 +1,6 @@
 """Material pair of section 2: (G, kappa) the confining body with the hole, (G_I, kappa_I) the indenter."""
+from __future__ import annotations
+
 import math
 from dataclasses import dataclass
 
@@ -15,6 +17,23 @@ class Materials:
     Dundurs parameter alpha* = (kappa - 1)/(2G) - (kappa_I - 1)/(2G_I) to vanish (section 2,
     :attr:`closed_form`); otherwise :meth:`jkrcyl.Contact.state` solves (2.1) numerically
     (jkrcyl.numerics.arcs).
+
+    Parameters
+    ----------
+    G : float
+        Shear modulus of the body with the hole [Pa]; math.inf for a rigid cradle (vartheta = inf, section 7.2).
+    kappa : float
+        Its Kolosov constant, >= 1 (3 - 4 nu in plane strain, 1 when incompressible).
+    G_I : float
+        Shear modulus of the indenter (the pin) [Pa]; math.inf for a rigid pin.
+    kappa_I : float
+        Its Kolosov constant, >= 1.
+
+    Raises
+    ------
+    ValueError
+        Naming the parameter: not a real number, G or G_I <= 0, kappa < 1, both bodies rigid, a magnitude outside
+        the documented domain (jkrcyl._validate), beta* not finite or vartheta above 1e100 (finite G).
     """
 
     G: float
@@ -35,8 +54,26 @@ class Materials:
                              f"got G = {self.G:g}, G_I = {self.G_I:g}")
 
     @classmethod
-    def from_young(cls, E, nu, E_I, nu_I):
-        """Plane strain: G = E/(2(1 + nu)), kappa = 3 - 4 nu; E [Pa] (math.inf: rigid), nu in (-1, 0.5]."""
+    def from_young(cls, E: float, nu: float, E_I: float, nu_I: float) -> "Materials":
+        """The pair from Young's moduli and Poisson ratios, in plane strain (section 2).
+
+        Parameters
+        ----------
+        E, E_I : float
+            Young's moduli of the body with the hole and of the indenter [Pa], > 0; math.inf for a rigid body.
+        nu, nu_I : float
+            Poisson ratios, in (-1, 0.5].
+
+        Returns
+        -------
+        Materials
+            G = E/(2(1 + nu)) [Pa], kappa = 3 - 4 nu (and likewise for the indenter).
+
+        Raises
+        ------
+        ValueError
+            Naming E, nu, E_I or nu_I (or G, G_I for a pair outside the domain), with the allowed range.
+        """
         pairs = []
         for e_name, e, n_name, n in (("E", E, "nu", nu), ("E_I", E_I, "nu_I", nu_I)):
             e = finite_scalar(e_name, e, low=0.0, low_open=True, allow_inf=True)
@@ -46,27 +83,33 @@ class Materials:
         return cls(G=G, kappa=kappa, G_I=G_I, kappa_I=kappa_I)
 
     @property
-    def beta(self):
+    def beta(self) -> float:
         """beta* = (kappa + 1)/(2G) + (kappa_I + 1)/(2G_I) [1/Pa] (section 2)."""
         return (self.kappa + 1) / (2 * self.G) + (self.kappa_I + 1) / (2 * self.G_I)
 
     @property
-    def alpha_star(self):
+    def alpha_star(self) -> float:
         """Second Dundurs parameter in compliance form, (kappa - 1)/(2G) - (kappa_I - 1)/(2G_I) [1/Pa]."""
         return (self.kappa - 1) / (2 * self.G) - (self.kappa_I - 1) / (2 * self.G_I)
 
     @property
-    def alpha_ratio(self):
+    def alpha_ratio(self) -> float:
         """alpha*/beta* (dimensionless, in (-1, 1); <= 1/2 in size for nu, nu_I >= 0); 0 for the closed forms."""
         return self.alpha_star / self.beta
 
     @property
-    def closed_form(self):
+    def closed_form(self) -> bool:
         """True when alpha* = 0 (|alpha*/beta*| <= ALPHA_TOLERANCE): the paper's closed forms hold exactly."""
         return abs(self.alpha_ratio) <= ALPHA_TOLERANCE
 
-    def require_closed_form(self, what="the closed form"):
-        """Raise ValueError (naming alpha*) unless alpha* = 0."""
+    def require_closed_form(self, what: str = "the closed form") -> None:
+        """Raise ValueError (naming alpha*) unless alpha* = 0.
+
+        Parameters
+        ----------
+        what : str
+            The operation that needs the closed form, quoted in the message.
+        """
         if not self.closed_form:
             raise ValueError(
                 f"{what} needs alpha* = 0, got alpha* = (kappa - 1)/(2G) - (kappa_I - 1)/(2G_I) = "
@@ -74,13 +117,13 @@ class Materials:
                 "holds only for (kappa - 1)/G = (kappa_I - 1)/G_I; use method='numeric' or 'auto'")
 
     @property
-    def inv_theta(self):
-        """1/vartheta; 0 for a rigid cradle (G = inf)."""
+    def inv_theta(self) -> float:
+        """1/vartheta (dimensionless, section 4); 0 for a rigid cradle (G = inf)."""
         th = self.theta
         return 0.0 if math.isinf(th) else 1 / th
 
     @property
-    def theta(self):
+    def theta(self) -> float:
         """vartheta = G beta*/(1 + kappa) = 1/2 + G (kappa_I + 1)/(2 G_I (1 + kappa)) >= 1/2 (section 4).
 
         Summed in the second form, so a rigid indenter (G_I = inf) gives exactly 1/2 (the first form rounds
@@ -90,5 +133,6 @@ class Materials:
         return 0.5 + self.G * (self.kappa_I + 1) / (2 * self.G_I * (1 + self.kappa))
 
     @property
-    def inv_G_I(self):
+    def inv_G_I(self) -> float:
+        """1/G_I [1/Pa]; 0 for a rigid indenter."""
         return 1 / self.G_I
