@@ -22,8 +22,10 @@ Brent's method and bisection to adjacent doubles.  Where no root exists the resu
 import functools
 import math
 from dataclasses import dataclass
+from typing import List, Optional, Sequence, Tuple
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from ._validate import contact_parameter, finite_scalar, theta as _check_theta
 from .critical import a_crit as _a_crit
@@ -36,11 +38,21 @@ CONTROLS = ("load", "grip")
 RUBBERY_A_MAX = 3.0      # vartheta = inf: curves run over 0 < a < RUBBERY_A_MAX (a_crit = inf)
 
 
-def default_gb(theta):
+def default_gb(theta: float) -> float:
     """(1/G_I)/beta* for the incompressible alpha* = 0 pair kappa = kappa_I = 1, G/G_I = 2 vartheta - 1.
 
     vartheta = 1/2 is a rigid indenter (gb = 0), vartheta = 1 identical incompressible bodies
     (gb = 1/2), vartheta = inf a rigid cradle (gb = 1).  Only the approach delta depends on gb.
+
+    Parameters
+    ----------
+    theta : float
+        vartheta >= 1/2 (section 4), or inf.
+
+    Returns
+    -------
+    float
+        gb = 1 - 1/(2 vartheta) (dimensionless, in [0, 1]).
     """
     th = _check_theta(theta)
     return 1.0 if math.isinf(th) else 1.0 - 1.0 / (2.0 * th)
@@ -208,10 +220,33 @@ class Curve:
                 f"{', dimensional' if self.P is not None else ''})")
 
 
-def curve(M, theta, regime="sub-critical", n=2000, gb=None, a=None, alpha_ratio=0.0):
+def curve(M: float, theta: float, regime: str = "sub-critical", n: int = 2000, gb: Optional[float] = None,
+          a: "Optional[ArrayLike]" = None, alpha_ratio: float = 0.0) -> "Curve":
     """The equilibrium branch ``regime`` at (M, vartheta): n points uniform in eps*, or at given a.
 
     alpha_ratio = alpha*/beta* != 0: numerical solution (jkrcyl.numerics.arcs); eps* then uses its pole a_crit.
+
+    Parameters
+    ----------
+    M : float
+        Normalised adhesion sqrt(w A R)/(sqrt(2) Delta vartheta) (section 6; M_R* of (7.6) for vartheta = inf), >= 0.
+    theta : float
+        vartheta >= 1/2 (section 4), or inf (rigid cradle, section 7.2).
+    regime : {'sub-critical', 'super-critical'}
+        The branch: a < a_crit or a > a_crit of (4.4) (only 'sub-critical' for vartheta = inf).
+    n : int
+        Points, uniform in eps* = 2 atan(a/a_crit)/pi (ignored when a is given), 2 <= n <= 1e6.
+    gb : float, optional
+        (1/G_I)/beta* in [0, 1], used by the approach only (default: :func:`default_gb`).
+    a : array_like, optional
+        Contact parameters tan(eps/2) on the branch, instead of the grid.
+    alpha_ratio : float
+        alpha*/beta* in (-1, 1] (0: the paper's closed forms).
+
+    Returns
+    -------
+    Curve
+        P* (section 6), delta/Delta (5.8), h(pi)/Delta (5.10), stability from dG/da (section 8.3), per point.
     """
     M, th, gb = _params(M, theta, gb)
     ar = _alpha(alpha_ratio)
@@ -254,8 +289,26 @@ class Point:
 ROOT_GRID = 4000
 
 
-def stationary_points(M, theta, control="load", regime="sub-critical", gb=None, n=ROOT_GRID, alpha_ratio=0.0):
-    """All points of one branch where dP*/da = 0 (load) or d(delta/Delta)/da = 0 (grip)."""
+def stationary_points(M: float, theta: float, control: str = "load", regime: str = "sub-critical",
+                      gb: Optional[float] = None, n: int = ROOT_GRID, alpha_ratio: float = 0.0) -> List["Point"]:
+    """All points of one branch where dP*/da = 0 (load) or d(delta/Delta)/da = 0 (grip) (section 8).
+
+    Parameters
+    ----------
+    M, theta, gb, alpha_ratio
+        As for :func:`curve`.
+    control : {'load', 'grip'}
+        Stationary points of P* (fixed load) or of delta/Delta (fixed grip).
+    regime : {'sub-critical', 'super-critical'}
+        The branch searched.
+    n : int
+        Root grid (sign changes refined by Brent's method).
+
+    Returns
+    -------
+    list of Point
+        Increasing in a; ``kind`` says 'min' or 'max'.
+    """
     if control not in CONTROLS:
         raise ValueError(f"control must be 'load' or 'grip', got {control!r}")
     M, th, gb = _params(M, theta, gb)
@@ -275,11 +328,25 @@ def stationary_points(M, theta, control="load", regime="sub-critical", gb=None, 
     return out
 
 
-def adherence(M, theta, control="load", gb=None, regimes=None, alpha_ratio=0.0):
+def adherence(M: float, theta: float, control: str = "load", gb: Optional[float] = None,
+              regimes: Optional[Sequence[str]] = None, alpha_ratio: float = 0.0) -> List["Point"]:
     """Adherence points, sub-critical branch first.
 
     control='load': per branch, the lowest local minimum of P* (the 'x' of Fig. 3), if any.
     control='grip': every point with d delta/da = 0 (the 'o' of Fig. 3; .kind says min or max).
+
+    Parameters
+    ----------
+    M, theta, gb, alpha_ratio
+        As for :func:`curve`.
+    control : {'load', 'grip'}
+    regimes : sequence of str, optional
+        Branches searched (default both; only 'sub-critical' for vartheta = inf).
+
+    Returns
+    -------
+    list of Point
+        Normalised P* (section 6) and delta/Delta (5.8) at each point; empty if none.
     """
     th = _check_theta(theta)
     regimes = (("sub-critical",) if math.isinf(th) else REGIMES) if regimes is None else regimes
@@ -295,8 +362,24 @@ def adherence(M, theta, control="load", gb=None, regimes=None, alpha_ratio=0.0):
     return out
 
 
-def solve_load(M, theta, P_star, regime="sub-critical", gb=None, n=ROOT_GRID, alpha_ratio=0.0):
-    """Contact parameters a on a branch where P*(a) = P_star (sorted; [] if none)."""
+def solve_load(M: float, theta: float, P_star: float, regime: str = "sub-critical", gb: Optional[float] = None,
+               n: int = ROOT_GRID, alpha_ratio: float = 0.0) -> List[float]:
+    """Contact parameters a on a branch where P*(a) = P_star (sorted; [] if none).
+
+    Parameters
+    ----------
+    M, theta, regime, gb, alpha_ratio
+        As for :func:`curve`.
+    P_star : float
+        Normalised load P beta*/(4 pi Delta vartheta) (section 6).
+    n : int
+        Root grid.
+
+    Returns
+    -------
+    list of float
+        Contact parameters tan(eps/2) (the dimensional forward problem is :meth:`jkrcyl.Contact.solve`).
+    """
     M, th, gb = _params(M, theta, gb)
     ar = _alpha(alpha_ratio)
     _check_regime(regime, th)
@@ -307,8 +390,24 @@ def solve_load(M, theta, P_star, regime="sub-critical", gb=None, n=ROOT_GRID, al
     return sorted(r for r, _ in _star_roots("P_star", M, th, gb, ar, grid, target))
 
 
-def solve_approach(M, theta, delta_over_Delta, regime="sub-critical", gb=None, n=ROOT_GRID, alpha_ratio=0.0):
-    """Contact parameters a on a branch where delta/Delta = the given value (sorted)."""
+def solve_approach(M: float, theta: float, delta_over_Delta: float, regime: str = "sub-critical",
+                   gb: Optional[float] = None, n: int = ROOT_GRID, alpha_ratio: float = 0.0) -> List[float]:
+    """Contact parameters a on a branch where delta/Delta = the given value (sorted).
+
+    Parameters
+    ----------
+    M, theta, regime, gb, alpha_ratio
+        As for :func:`curve`.
+    delta_over_Delta : float
+        Normalised approach (5.8).
+    n : int
+        Root grid.
+
+    Returns
+    -------
+    list of float
+        Contact parameters tan(eps/2); empty if none.
+    """
     M, th, gb = _params(M, theta, gb)
     ar = _alpha(alpha_ratio)
     _check_regime(regime, th)
@@ -319,7 +418,8 @@ def solve_approach(M, theta, delta_over_Delta, regime="sub-critical", gb=None, n
     return sorted(r for r, _ in _star_roots("delta_over_Delta", M, th, gb, ar, grid, target))
 
 
-def two_patch(M, theta, n=None, gb=None, alpha_ratio=0.0):
+def two_patch(M: float, theta: float, n: Optional[int] = None, gb: Optional[float] = None,
+              alpha_ratio: float = 0.0) -> list:
     """Two-patch equilibrium branches (top contact at phi = pi, issue 12): :func:`jkrcyl.twopatch.branches`.
 
     A list of :class:`jkrcyl.twopatch.TwoPatchCurve` (Curve fields plus a_top, stable_load, stable_grip);
@@ -329,6 +429,17 @@ def two_patch(M, theta, n=None, gb=None, alpha_ratio=0.0):
     return twopatch.branches(M, theta, gb=gb, n=n, alpha_ratio=alpha_ratio)
 
 
-def from_contact(contact):
-    """(M, vartheta, gb) of a :class:`jkrcyl.Contact` (M is M_R* when vartheta = inf)."""
+def from_contact(contact) -> Tuple[float, float, float]:
+    """(M, vartheta, gb) of a :class:`jkrcyl.Contact` (M is M_R* when vartheta = inf).
+
+    Parameters
+    ----------
+    contact : jkrcyl.Contact
+        Needs Delta > 0 (M divides by it).
+
+    Returns
+    -------
+    (float, float, float)
+        M (section 6), vartheta (section 4), gb = (1/G_I)/beta*.
+    """
     return contact.M, contact.theta, contact.materials.inv_G_I / contact.beta
