@@ -36,7 +36,17 @@ GAUSS_PANELS = 48
 
 @dataclass(frozen=True, repr=False)
 class Jump:
-    """A jump of the quasi-static path at fixed load (load control) or fixed approach (grip control)."""
+    """A jump of the quasi-static path at fixed load (load control) or fixed approach (grip control).
+
+    Attributes
+    ----------
+    kind : str
+        'snap-in', 'pull-off', 'zip' or 'top-contact' (see the module docstring).
+    leg : int
+        The leg of the path on which it happens (0: first loading, then alternately down and up).
+    before, after : jkrcyl.forward.Equilibrium
+        The states it joins (same P under load control, same delta under grip control).
+    """
 
     kind: str
     leg: int
@@ -308,26 +318,37 @@ def _same(s1, s2, rel=1e-6):
         abs(s1.P - s2.P) <= rel * max(abs(s1.P), 1e-300) + 1e-300
 
 
-def cycle(contact, P_max=None, P_min=None, control="load", n=2000, delta_max=None, delta_min=None) -> Cycle:
+def cycle(contact, P_max: Optional[float] = None, P_min: Optional[float] = None, control: str = "load",
+          n: int = 2000, delta_max: Optional[float] = None, delta_min: Optional[float] = None) -> Cycle:
     """Quasi-static cycle from first contact up to the maximum, down to the minimum and up again.
+
+    First contact is the free pin touching the bottom of the hole (P = 0, delta = 0), which snaps in to the stable
+    zero-load contact (8.1) (under grip: the stable contact at delta = 0).
 
     Parameters
     ----------
     contact : jkrcyl.Contact
         Needs Delta > 0.
     P_max, P_min : float
-        Load limits [N/m] (control='load'), P_min < P_max; positive pushes the pin into the hole.
+        Load limits [N/m] (control='load'), P_min < P_max; positive pushes the pin into the hole (section 6).
     control : {'load', 'grip'}
         What is driven; jumps happen at fixed load or fixed approach.
     n : int
-        Points of the returned path at most (the path is thinned evenly; jumps and turning points kept).
+        Points of the returned path at most, 10 <= n <= 1e6 (the path is thinned evenly; jumps and turning points
+        kept).
     delta_max, delta_min : float
-        Approach limits [m] (control='grip'), delta_min < delta_max.
+        Approach limits [m] (control='grip', the approach of (5.8)), delta_min < delta_max.
 
     Returns
     -------
     Cycle
-        The path, every jump (kind, before, after) and the energy dissipated per cycle [J/m].
+        The path, every jump (kind, before, after) and the energy dissipated per cycle [J/m] (the loop area
+        int P d(delta); None if the loop did not close).
+
+    Raises
+    ------
+    ValueError
+        Naming the parameter: a missing or reversed limit pair, ``control``, ``n``, or Delta = 0.
     """
     if control not in ("load", "grip"):
         raise ValueError(f"control must be 'load' or 'grip', got {control!r}")
@@ -397,8 +418,20 @@ def _thin(m, n, path, legs):
 
 
 # --- energy -----------------------------------------------------------------------------------------------
-def loop_energy(path, first_leg) -> float:
+def loop_energy(path, first_leg: int) -> float:
     """int P d(delta) [J/m] around the steady loop (legs first_leg, first_leg + 1).
+
+    Parameters
+    ----------
+    path : _Path
+        The recorded path (points, tracks, jumps) of :func:`cycle`.
+    first_leg : int
+        First leg of the steady loop.
+
+    Returns
+    -------
+    float
+        The energy dissipated per cycle per unit length [J/m].
 
     Single-patch stretches by Gauss-Legendre in a, P d(delta)/da from jkrcyl.equilibria slopes; jumps at fixed load
     add P (delta_2 - delta_1), at fixed approach nothing; two-patch and full-contact stretches by the trapezoid

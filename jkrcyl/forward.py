@@ -48,6 +48,7 @@ class Problem:
 
     @classmethod
     def of(cls, contact) -> "Problem":
+        """The normalised problem (M, vartheta, gb, alpha*/beta*) of a :class:`jkrcyl.Contact` with Delta > 0."""
         M, th, gb = eq.from_contact(contact)
         return cls(contact, M, th, gb, contact.materials.alpha_ratio)
 
@@ -255,7 +256,17 @@ def _onsets(key):
 
 
 def confined(pb: Problem) -> bool:
-    """True when some single-patch state closes the gap at phi = pi (h(pi) = 0): two-patch states exist."""
+    """True when some single-patch state closes the gap at phi = pi (h(pi) = 0 of (5.10)): two-patch states exist.
+
+    Parameters
+    ----------
+    pb : Problem
+        The contact in the normalisation of section 6.
+
+    Returns
+    -------
+    bool
+    """
     return bool(_onsets(pb.key))
 
 
@@ -449,6 +460,7 @@ class PullOff:
 
     @property
     def detached(self) -> bool:
+        """True when the pin detaches (``P`` is a number)."""
         return self.P is not None
 
     def __bool__(self) -> bool:
@@ -529,12 +541,21 @@ def pull_off(contact, control: str = "load") -> PullOff:
     Parameters
     ----------
     contact : jkrcyl.Contact
+        Needs a clearance Delta > 0.
     control : {'load', 'grip'}
+        Fixed load (the detachment is a minimum of P along the stable branch) or fixed grip (a minimum of the
+        approach delta, (5.8)).
 
     Returns
     -------
     PullOff
-        ``P`` is None (and ``reason`` says why) when the pin does not detach.
+        ``P`` [N/m], ``contact_width`` = 2 R eps [m] and ``delta`` [m] at detachment; ``P`` is None (and ``reason``
+        says why) when the pin does not detach.
+
+    Raises
+    ------
+    ValueError
+        Naming ``control`` (not 'load' or 'grip') or ``Delta`` (Delta = 0: the neat fit, section 7.3).
     """
     if control not in ("load", "grip"):
         raise ValueError(f"control must be 'load' or 'grip', got {control!r}")
