@@ -10,7 +10,7 @@ from .report import Report
 # (module, docstring of the generated file); order = order of the report
 MODULES = [
     (pressure, "Pressure solution (section 2): checks only, its kernel is emitted with the load."),
-    (load, "Load-contact size relation (sections 3-4): (4.4), (4.5), (2.6), (3.4), (3.5), (5.4), P* of section 6."),
+    (load, "Load-contact size (sections 3-4): (4.4), (4.5), (2.6), (3.4), (3.5), (5.4), P* of section 6."),
     (approach, "Approach delta (section 5): (5.3)-(5.8) with the sums (A.13)-(A.15)."),
     (gap, "Gap function h(phi) outside the contact (5.9) and h(pi) (5.10) in closed form."),
     (derivatives, "Slopes dP/da, d delta/da and dG/da at fixed load and fixed grip (sections 6, 8.2, 8.3)."),

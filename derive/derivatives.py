@@ -4,7 +4,11 @@
 * G at fixed load: rows (2.15a), (2.15b) of the system are solved for (B, C) with P given (the
   Griffith row (3.6b) dropped), r0 and K* follow from (2.12), (3.4), and G = (pi/4) A K*^2 (3.5);
   dG/da|_P is its sympy derivative, evaluated on the equilibrium P = P(a).
-* G at fixed grip: the same with P eliminated in favour of the approach delta of (5.3).
+* G at fixed grip: the same with P eliminated in favour of the approach delta of (5.3); and at fixed
+  work-conjugate approach delta_work = delta + P/(8 pi G_I) (derive.green), the grip a testing machine
+  holds when the load is spread over the pin (issue 10, item 4).  At fixed a, delta_work = delta + c P
+  with c = 1/(8 pi G_I) >= 0 is the paper's delta driven through a spring of compliance c: its
+  stability lies between the paper's fixed grip (c = 0) and fixed load (c = inf).
 
 Stability (section 8.3): the contact grows when G < w and shrinks when G > w (G is the energy
 release rate of the exterior crack, whose advance shrinks the contact), so an equilibrium is
@@ -21,7 +25,7 @@ import mpmath as mp
 import sympy as sp
 from sympy.polys.matrices import DomainMatrix
 
-from . import approach, checks, load, pressure
+from . import approach, checks, green, load, pressure
 from .kernel import Kernel
 from .report import NEW
 from .symbols import (B, C, Delta, E, P, R, a, beta, c0, c1, inv_G_I, inv_theta, zeta)
@@ -60,10 +64,11 @@ def fixed_load_K():
     return load.stress_intensity(r0s)
 
 
-def fixed_grip_K():
+def fixed_grip_K(compliance=0):
     """K*(a; delta): as fixed_load_K with P eliminated through the approach (5.3).
 
-    At fixed a, K* and delta are both linear in (P, Delta): solve delta(P) = delta for P.
+    At fixed a, K* and delta are both linear in (P, Delta): solve delta(P) + compliance P = delta for P
+    (compliance = 0: the paper's delta; green.work_shift(1, inv_G_I): the work-conjugate approach).
     """
     Bs, Cs, c0s, c1s, r0s = _without_griffith()
     d53, r0sym = approach.approach_53()
@@ -72,7 +77,7 @@ def fixed_grip_K():
     rest = _rat(d_of_P.subs(P, 0))
     K = load.stress_intensity(r0s)
     kP, kD = sp.diff(K, P), K.subs(P, 0)
-    return kP * (delta - rest) / uP + kD
+    return kP * (delta - rest) / (uP + compliance) + kD
 
 
 def _equilibrium():
@@ -119,13 +124,16 @@ def derive(report):
                   "sympy derivative of the closed-form approach (derive.approach)")
 
     K_P = fixed_load_K()
-    K_d = fixed_grip_K()
     L_ = sp.log(a / E)
-    K_d = K_d.subs(Lsym, L_)
+    K_d = fixed_grip_K().subs(Lsym, L_)
+    K_w = fixed_grip_K(green.work_shift(1, inv_G_I)).subs(Lsym, L_)
+    dw_eq = d_eq + green.work_shift(P_eq, inv_G_I)            # work-conjugate approach on the equilibrium
     G_P = sp.pi / 4 * A_ * K_P**2
     G_d = sp.pi / 4 * A_ * K_d**2
+    G_w = sp.pi / 4 * A_ * K_w**2
     dG_P = sp.diff(G_P, a).subs(P, P_eq) / w_
     dG_d = sp.diff(G_d, a).subs(delta, d_eq) / w_
+    dG_w = sp.diff(G_w, a).subs(delta, dw_eq) / w_
     dG_dP = sp.diff(G_P, P).subs(P, P_eq) / w_
     report.result("Energy release rate at fixed load", sp.Eq(sp.Symbol("K^*(a; P)"), K_P), NEW,
                   "(2.15a), (2.15b) solved for (B, C) at given P (Griffith row dropped); r0 from (2.12), "
@@ -133,27 +141,37 @@ def derive(report):
     report.result("Energy release rate at fixed grip", sp.Symbol(r"K^*(a; \delta)"), NEW,
                   "as at fixed load, with P eliminated through the approach (5.3) (K* and delta are "
                   "linear in (P, Delta) at fixed a); dG/da|_delta by sympy differentiation")
-    _check(report, K_P, K_d, dG_P, dG_d, dG_dP, dP, dd)
+    report.result("Energy release rate at fixed work-conjugate approach", sp.Symbol(r"K^*(a; \delta_{work})"),
+                  NEW, "as at fixed grip, with P eliminated through delta + P/(8 pi G_I) = delta_work "
+                  "(derive.green); dG/da|_delta_work by sympy differentiation")
+    _check(report, K_P, K_d, K_w, dG_P, dG_d, dG_w, dG_dP, dP, dd)
     _stability_sign(report, K_P)
 
     ks = [Kernel("load_slopes", (("dP_da", dP), ("ddelta_da", dd)),
                  "dP/da [N/m] and d delta/da [m] along the equilibrium curve (sympy derivatives of (4.4)\n"
                  "and of the approach (5.8)).  Same arguments as load_state and approach."),
-          Kernel("release_rate_slopes", (("dG_da_P", dG_P), ("dG_da_delta", dG_d), ("dG_dP", dG_dP)),
-                 "(1/w) dG/da at fixed load P and at fixed approach delta, and (1/w) dG/dP at fixed a\n"
-                 "[1/(N/m)], on the equilibrium at contact parameter a.  Fixed-load (fixed-grip)\n"
-                 "equilibrium is stable when dG_da_P (dG_da_delta) > 0.")]
+          Kernel("release_rate_slopes", (("dG_da_P", dG_P), ("dG_da_delta", dG_d), ("dG_da_delta_work", dG_w),
+                                         ("dG_dP", dG_dP)),
+                 "(1/w) dG/da at fixed load P, at fixed approach delta (5.8) and at fixed work-conjugate\n"
+                 "approach delta_work = delta + P/(8 pi G_I), and (1/w) dG/dP at fixed a [1/(N/m)], on the\n"
+                 "equilibrium at contact parameter a.  Equilibrium at fixed load (delta, delta_work) is\n"
+                 "stable when dG_da_P (dG_da_delta, dG_da_delta_work) > 0.")]
     p = P_eq * beta / (4 * sp.pi * Delta)
     dn = d_eq / Delta
+    dwn = dw_eq / Delta
     star = {"p": p, "dp_da": sp.diff(p, a), "delta_over_Delta": dn, "ddelta_da": sp.diff(dn, a),
-            "dG_da_P": dG_P, "dG_da_delta": dG_d}
+            "dG_da_P": dG_P, "dG_da_delta": dG_d, "delta_work_over_Delta": dwn,
+            "ddelta_work_da": sp.diff(dwn, a)}
     star = {k: _dimensionless(v) for k, v in star.items()}
     star = _drop_scales(report, star)
     ks.append(Kernel("equilibrium_star",
                      tuple((k, star[k]) for k in ("p", "dp_da", "delta_over_Delta", "ddelta_da",
-                                                  "dG_da_P", "dG_da_delta")),
+                                                  "dG_da_P", "dG_da_delta", "delta_work_over_Delta",
+                                                  "ddelta_work_da")),
                      "Dimensionless equilibrium at contact parameter a: p = P beta*/(4 pi Delta) (= vartheta P*,\n"
-                     "= P_R* of (7.6)), dp/da, delta/Delta, d(delta/Delta)/da, (1/w) dG/da|_P, (1/w) dG/da|_delta.\n"
+                     "= P_R* of (7.6)), dp/da, delta/Delta, d(delta/Delta)/da, (1/w) dG/da|_P, (1/w) dG/da|_delta,\n"
+                     "delta_work/Delta and its slope (work-conjugate approach; its fixed-grip stability follows\n"
+                     "from the slope's sign, jkrcyl.equilibria, as dG/da|_delta_work cancels at large a).\n"
                      "m = M vartheta (= M_R* for vartheta = inf), inv_theta = 1/vartheta, gb = (1/G_I)/beta*.",
                      forms=("into",)))
     return ks
@@ -191,15 +209,17 @@ def _stability_sign(report, K_P):
                    "with the emitted slope kernels, to full double precision)")
 
 
-def _check(report, K_P, K_d, dG_P, dG_d, dG_dP, dP, dd):
+def _check(report, K_P, K_d, K_w, dG_P, dG_d, dG_w, dG_dP, dP, dd):
     """Numbers at 50 digits: K on the equilibrium is the Griffith value, the slopes match mpmath
     differentiation of the closed forms, and dG/da|_P = -dG/dP dP/da on the equilibrium."""
     P_eq, d_eq = _equilibrium()
     syms = (a, R, Delta, beta, inv_theta, zeta, inv_G_I)
-    f = checks.mp_function([K_P.subs(P, P_eq), K_d.subs(delta, d_eq), dG_P, dG_d, dG_dP, dP, dd,
-                            P_eq, d_eq], syms)
+    dw_eq = d_eq + green.work_shift(P_eq, inv_G_I)
+    f = checks.mp_function([K_P.subs(P, P_eq), K_d.subs(delta, d_eq), K_w.subs(delta, dw_eq), dG_P, dG_d, dG_w,
+                            dG_dP, dP, dd, P_eq, d_eq], syms)
     fKP = checks.mp_function(K_P, (a, R, Delta, beta, inv_theta, P))
     fKd = checks.mp_function(K_d, (a, R, Delta, beta, inv_theta, inv_G_I, delta))
+    fKw = checks.mp_function(K_w, (a, R, Delta, beta, inv_theta, inv_G_I, delta))
     fP = checks.mp_function(P_eq, syms)
     fd = checks.mp_function(d_eq, syms)
     griffith, slopes, chain = [], [], []
@@ -211,18 +231,22 @@ def _check(report, K_P, K_d, dG_P, dG_d, dG_dP, dP, dd):
                 Keq = mp.sqrt(4 * wv / (mp.pi * bv / (2 * mp.pi)))
                 for av in (mp.mpf("0.05"), mp.mpf("0.4"), mp.mpf("1.3"), mp.mpf(3)):
                     vals = f(av, Rv, Dv, bv, tv, zv, gv)
-                    KP, Kd, gP, gd, gdP, dPv, ddv, Pv, dv = vals
-                    griffith += [(KP, Keq), (Kd, Keq)]
+                    KP, Kd, Kw, gP, gd, gw, gdP, dPv, ddv, Pv, dv = vals
+                    griffith += [(KP, Keq), (Kd, Keq), (Kw, Keq)]
                     args = (Rv, Dv, bv, tv, zv, gv)
                     slopes.append((dPv, mp.diff(lambda s: fP(s, *args), av)))
                     slopes.append((ddv, mp.diff(lambda s: fd(s, *args), av)))
                     G = lambda K: mp.pi / 4 * bv / (2 * mp.pi) * K**2 / wv
                     slopes.append((gP, mp.diff(lambda s: G(fKP(s, Rv, Dv, bv, tv, Pv)), av)))
                     slopes.append((gd, mp.diff(lambda s: G(fKd(s, Rv, Dv, bv, tv, gv, dv)), av)))
+                    dwv = dv + Pv * gv / (8 * mp.pi)          # delta_work = delta + P/(8 pi G_I), typed here
+                    slopes.append((gw, mp.diff(lambda s: G(fKw(s, Rv, Dv, bv, tv, gv, dwv)), av)))
                     chain.append((gP, -gdP * dPv))
-    report.check("K*(a; P(a)) and K*(a; delta(a)) equal the Griffith value sqrt(4w/(pi A)) on the equilibrium",
+    report.check("K*(a; P(a)), K*(a; delta(a)) and K*(a; delta_work(a)) equal the Griffith value sqrt(4w/(pi A)) "
+                 "on the equilibrium",
                  checks.assert_close("Griffith", griffith), len(griffith))
-    report.check("dP/da, d delta/da, dG/da|_P, dG/da|_delta vs mpmath numerical differentiation of the "
+    report.check("dP/da, d delta/da, dG/da|_P, dG/da|_delta, dG/da|_delta_work vs mpmath numerical "
+                 "differentiation of the "
                  "undifferentiated closed forms", checks.assert_close("slopes", slopes), len(slopes))
     report.check("dG/da|_P = -(dG/dP)|_a dP/da on the equilibrium (stability changes where dP/da = 0)",
                  checks.assert_close("chain rule", chain), len(chain))

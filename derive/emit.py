@@ -71,6 +71,19 @@ def wrap(line, width=WIDTH):
     return lines
 
 
+def wrap_args(head, names, tail, width=WIDTH):
+    """``head`` + comma-separated ``names`` + ``tail``, continued under the first name when too long."""
+    lines, current = [], head
+    for k, name in enumerate(names):
+        piece = name + (", " if k < len(names) - 1 else tail)
+        if len(current) + len(piece.rstrip()) > width and current != head:
+            lines.append(current.rstrip())
+            current = " " * len(head)
+        current += piece
+    lines.append(current)
+    return lines
+
+
 def _docstring(text, indent="    "):
     lines = text.strip().splitlines()
     body = "\n".join((indent + ln) if ln.strip() else "" for ln in lines)
@@ -206,7 +219,7 @@ class _Body:
         if len(names) == 1:
             out.append(f"    return {names[0]}")
         else:
-            out += wrap(f"    return {self.kernel.result}({', '.join(names)})")
+            out += wrap_args(f"    return {self.kernel.result}(", names, ")")
         return out
 
 
@@ -270,20 +283,11 @@ def module_source(source, doc, kernels):
 
 
 def _wrap_call(line, width=WIDTH):
-    """A namedtuple definition wrapped after commas."""
+    """A namedtuple definition ``X = namedtuple("X", [...])`` wrapped after commas."""
     if len(line) <= width:
         return [line]
     head, rest = line.split("[", 1)
-    words = rest.split(", ")
-    out, current = [], head + "["
-    for k, word in enumerate(words):
-        piece = word + (", " if k < len(words) - 1 else "")
-        if len(current) + len(piece.rstrip()) > width:
-            out.append(current.rstrip())
-            current = " " * (len(head) + 1)
-        current += piece
-    out.append(current)
-    return out
+    return wrap_args(head + "[", rest[:-len("])")].split(", "), "])", width)
 
 
 def package_init(modules):

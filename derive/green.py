@@ -317,8 +317,8 @@ def kernel_sum(report, C0, Cn, V1, U1_point, U1_body, s1, s2):
                  len(pairs))
     report.result("The solver's kernel before the derivation", r"k_1 = \frac{1/G_I}{\beta^*} - "
                   r"\frac{\alpha^*}{2\beta^*}", DIFFERS,
-                  "the hand-typed kernel that jkrcyl.numerics.arcs still uses (its delta at alpha* != 0 is offset; "
-                  "switching to k1 above is open: a superposition check then loses accuracy, 3e-8)")
+                  "the hand-typed kernel jkrcyl.numerics.arcs used before this derivation; the solver now takes "
+                  "k0, k1, ka from kernel_constants (generated/green.py), the derived k1 above")
     report.proof("its extra -alpha*/(2 beta*) cos t shifts only the reference of delta (by alpha* P/(8 pi)); "
                  "P, B, K, the pressure and h(phi) are unchanged: C_1 never enters them")
     return k0n, k1n, k1wn, C1_rim, C1_work
@@ -351,6 +351,11 @@ def equation_21(report, C0, Cn):
 
 
 # --- 5. the work-conjugate approach ------------------------------------------------------------------------
+def work_shift(load, inv_GI):
+    """delta_work - delta = P/(8 pi G_I) (proved in :func:`work_conjugate`); used by derive.derivatives."""
+    return load * inv_GI / (8 * sp.pi)
+
+
 def work_conjugate(report, U1_point, U1_body):
     # energy of the n = 1 disk field loaded over its area: direct integral of sigma:eps/2 vs Clapeyron
     x = r * _c
@@ -370,7 +375,7 @@ def work_conjugate(report, U1_point, U1_body):
                  "negative for nu_I > 1/4: the paper's delta is the conjugate of no elastic loading there, which "
                  "is how Fig. 7 gets a negative load-approach stiffness without adhesion")
     shift = sp.simplify((U1_point - U1_body) * P / (sp.pi * R))
-    _require("delta_work - delta", shift - P / (8 * sp.pi * G_I))
+    _require("delta_work - delta", shift - work_shift(P, 1 / G_I))
     report.result("The work-conjugate approach", sp.Eq(sp.Symbol("delta_{work}"),
                   delta + P / (8 * sp.pi * sp.Symbol("G_I"))), NEW,
                   "the n = 1 amplitude of N is P/(pi R); delta moves the disk's reference from its rim "
@@ -406,5 +411,5 @@ def derive(report):
              "delta [m] as (5.8), P [N/m] (2.2), inv_G_I = 1/G_I [1/Pa].")
     return [Kernel("kernel_constants", (("k0", k0n), ("k1", k1n), ("k1_work", k1wn), ("ka", ar)), doc_k,
                    array_args=("ar",), extra_args=(ar, gb, inv_theta)),
-            Kernel("approach_work", (("delta_work", delta + P * inv_G_I / (8 * sp.pi)),), doc_w,
-                   array_args=("P", "delta"))]
+            Kernel("approach_work", (("delta_work", delta + work_shift(P, inv_G_I)),), doc_w,
+                   array_args=("P", "delta"), forms=("into",))]

@@ -10,10 +10,12 @@ from numba import njit
 
 LoadSlopes = namedtuple("LoadSlopes", ["dP_da", "ddelta_da"])
 
-ReleaseRateSlopes = namedtuple("ReleaseRateSlopes", ["dG_da_P", "dG_da_delta", "dG_dP"])
+ReleaseRateSlopes = namedtuple("ReleaseRateSlopes", ["dG_da_P", "dG_da_delta", "dG_da_delta_work",
+                                                     "dG_dP"])
 
 EquilibriumStar = namedtuple("EquilibriumStar", ["p", "dp_da", "delta_over_Delta", "ddelta_da",
-                                                 "dG_da_P", "dG_da_delta"])
+                                                 "dG_da_P", "dG_da_delta", "delta_work_over_Delta",
+                                                 "ddelta_work_da"])
 
 
 @njit(cache=True)
@@ -74,112 +76,161 @@ def load_slopes(Delta, a, beta, inv_G_I, inv_theta, zeta):
 @njit(cache=True)
 def release_rate_slopes(Delta, R, a, beta, inv_G_I, inv_theta, zeta):
     """
-    (1/w) dG/da at fixed load P and at fixed approach delta, and (1/w) dG/dP at fixed a
-    [1/(N/m)], on the equilibrium at contact parameter a.  Fixed-load (fixed-grip)
-    equilibrium is stable when dG_da_P (dG_da_delta) > 0.
+    (1/w) dG/da at fixed load P, at fixed approach delta (5.8) and at fixed work-conjugate
+    approach delta_work = delta + P/(8 pi G_I), and (1/w) dG/dP at fixed a [1/(N/m)], on the
+    equilibrium at contact parameter a.  Equilibrium at fixed load (delta, delta_work) is
+    stable when dG_da_P (dG_da_delta, dG_da_delta_work) > 0.
     """
     x0 = a**2
     x1 = x0 + 1
     x2 = math.log1p(x0)
     x3 = inv_theta*(x0 - x2) + 2
     x4 = math.sqrt(a)
-    x5 = 1/beta
-    x6 = 4*x0
-    x7 = math.pi*Delta
-    x8 = -x3*x4*zeta + x5*x6*x7
-    x9 = a**4
-    x10 = 2*x9
-    x11 = inv_theta*(x10 + x2)
-    x12 = 1/(x11 - 2)
-    x13 = x12*x8
-    x14 = x1**2
-    x15 = inv_theta*x14
-    x16 = -4*beta*inv_theta*x1*x12*x8 + 4*x7
-    x17 = 2*beta
-    x18 = x13*x17
-    x19 = math.log(x1)
-    x20 = inv_theta*x19
-    x21 = beta*x20
-    x22 = -4*math.pi*Delta*x1 - 2*beta*x12*x8 + inv_theta*x18 + x13*x21 + x15*x18 + x16
-    x23 = -x22
-    x24 = 1/x1
-    x25 = beta*inv_theta
-    x26 = 4*beta
-    x27 = 1/x0
-    x28 = inv_theta*x1
-    x29 = -x20
-    x30 = -inv_theta + x28 + x29 + 2
-    x31 = 1/x30
-    x32 = inv_theta*(1 - x24)
-    x33 = x31*x32
-    x34 = zeta**(-2)
-    x35 = x30**(-2)
-    x36 = x34*x35
-    dG_da_P = (-4*x23*x36*(x23*x24 + (1/4)*x23*x27 + x23*x33 - x24*(8*math.pi*Delta*x1 - x13*x15*x26
-        - x13*x25 - x16))/beta**2)
-    x37 = a**(3/2)
-    x38 = Delta*x31
-    x39 = x38*x5
-    x40 = x1/x4
-    x41 = x1*x26
-    x42 = beta*x28
-    x43 = x14*x17
-    x44 = beta*x15
-    x45 = 2*inv_theta
-    x46 = x19*x28
-    x47 = x17*x46
-    x48 = math.log(a/math.sqrt(x1))
-    x49 = beta*x48
-    x50 = 8*x49
-    x51 = x1**3
-    x52 = inv_theta*x51
-    x53 = inv_G_I*x14
-    x54 = 2*x15
-    x55 = x26*x48
-    x56 = (-inv_G_I*x45*x51 + inv_G_I*x54 + x14*x20*x55 - x14*x21 - x14*x50 + x15*x55 - x17 +
-        2*x20*x53 + x21 + x25*x51 + 3*x25 - x41 - 7*x42 + x43 + 5*x44 + x47 - x52*x55 - 4*x53)
-    x57 = 2*x0
-    x58 = -x15 + x28 + x46 + x57
-    x59 = x24*x58
-    x60 = 4*x38
-    x61 = 4*Delta
-    x62 = a**6
-    x63 = math.log1p(x27)
-    x64 = x1*x57
-    x65 = (x12*x24*x4*zeta*(beta*(inv_theta*(6*x0 - x2*x9 + 2*x2 + x62 + 8*x9 + 2) + x10 - 4) +
-        2*x14*x3*(beta*x63 - inv_G_I))/math.pi - x12*x61*(-inv_G_I*x5*x64 + x11 + x24*x62 + x63*x64)
-        - x59*x60)
-    x66 = x20 - 4*x28 + x45 + x54 - 2
-    x67 = x65*x66
-    x68 = 1/x56
-    x69 = x67*x68
-    x70 = (1/4)*x69
-    x71 = x39*x4
-    x72 = a**(5/2)
-    x73 = 4*x24
-    x74 = x4*x68
-    x75 = a*x25
-    x76 = a*inv_G_I
-    x77 = 6*x76
-    x78 = a*x49
-    x79 = 12*x78
-    x80 = 1/a
-    x81 = x80*(x0*x24 - 1)
-    x82 = x17*x81
-    dG_da_delta = (-16*math.pi**2*x34*(x37*x39 + x40*x70)*(x1*x70/x37 - x28*x65*x74*(x24 + x6) +
-        x32*x35*x5*x61*x72 + x39*x72*x73 - x4*x69 + x40*x67*(a*x17*x20 - a*x26 + a*x41 + 9*a*x42 +
-        3*a*x44 + a*x46*x50 - a*x47 - 8*x1*x76 - 16*x1*x78 + x14*x26*x81 - x15*x77 - x15*x79 -
-        x15*x82 - x20*x43*x81 + x24*x75 + x28*x77 + x28*x79 + 4*x46*x76 + x52*x82 - 5*x75)/x56**2 -
-        x60*x66*x74*(2*x28 + x29 + x33*x58 - x45 + x59 - 2) - x71*x73*(x57 + 1) + x71))
-    dG_dP = -x22*x24*x36*x5*x66*x80
-    return ReleaseRateSlopes(dG_da_P, dG_da_delta, dG_dP)
+    x5 = x4*zeta
+    x6 = 1/beta
+    x7 = 4*x0
+    x8 = math.pi*Delta
+    x9 = -x3*x5 + x6*x7*x8
+    x10 = a**4
+    x11 = 2*x10
+    x12 = inv_theta*(x11 + x2)
+    x13 = 1/(x12 - 2)
+    x14 = x13*x9
+    x15 = x1**2
+    x16 = inv_theta*x15
+    x17 = -4*beta*inv_theta*x1*x13*x9 + 4*x8
+    x18 = 2*beta
+    x19 = x14*x18
+    x20 = math.log(x1)
+    x21 = inv_theta*x20
+    x22 = beta*x21
+    x23 = -4*math.pi*Delta*x1 - 2*beta*x13*x9 + inv_theta*x19 + x14*x22 + x16*x19 + x17
+    x24 = -x23
+    x25 = zeta**(-2)
+    x26 = 1/x1
+    x27 = beta*inv_theta
+    x28 = 4*beta
+    x29 = 1/x0
+    x30 = inv_theta*x1
+    x31 = -x21
+    x32 = -inv_theta + x30 + x31 + 2
+    x33 = 1/x32
+    x34 = inv_theta*(1 - x26)
+    x35 = x33*x34
+    x36 = x32**(-2)
+    x37 = 4*x36
+    dG_da_P = (-x24*x25*x37*(x24*x26 + (1/4)*x24*x29 + x24*x35 - x26*(8*math.pi*Delta*x1 -
+        x14*x16*x28 - x14*x27 - x17))/beta**2)
+    x38 = math.log(a/math.sqrt(x1))
+    x39 = beta*x38
+    x40 = a*x39
+    x41 = 16*x1*x40
+    x42 = 12*x40
+    x43 = x30*x42
+    x44 = x16*x42
+    x45 = 1/a
+    x46 = x0*x26 - 1
+    x47 = x45*x46
+    x48 = x15*x28
+    x49 = x20*x30
+    x50 = 8*x39
+    x51 = a*x49*x50
+    x52 = x18*x47
+    x53 = x15*x18
+    x54 = x21*x53
+    x55 = 16*math.pi**2*x25
+    x56 = a**(3/2)
+    x57 = Delta*x6
+    x58 = x56*x57
+    x59 = 1/x4
+    x60 = x1*x59
+    x61 = x1**3
+    x62 = inv_theta*x61
+    x63 = x1*x28
+    x64 = beta*x30
+    x65 = inv_G_I*x15
+    x66 = beta*x16
+    x67 = 2*x16
+    x68 = 2*inv_theta
+    x69 = x18*x49
+    x70 = x28*x38
+    x71 = (-inv_G_I*x61*x68 + inv_G_I*x67 + x15*x21*x70 - x15*x22 - x15*x50 + x16*x70 - x18 +
+        2*x21*x65 + x22 + x27*x61 + 3*x27 + x53 - x62*x70 - x63 - 7*x64 - 4*x65 + 5*x66 + x69)
+    x72 = 1/x71
+    x73 = 2*x0
+    x74 = -x16 + x30 + x49 + x73
+    x75 = x26*x74
+    x76 = 4*Delta
+    x77 = x33*x76
+    x78 = a**6
+    x79 = math.log1p(x29)
+    x80 = x1*x73
+    x81 = 1/math.pi
+    x82 = (-x13*x26*x5*x81*(beta*(inv_theta*(6*x0 - x10*x2 + 8*x10 + 2*x2 + x78 + 2) + x11 - 4) +
+        2*x15*x3*(beta*x79 - inv_G_I)) + x13*x76*(-inv_G_I*x6*x80 + x12 + x26*x78 + x79*x80) +
+        x75*x77)
+    x83 = -x82
+    x84 = x72*x83
+    x85 = x21 - 4*x30 + x67 + x68 - 2
+    x86 = (1/4)*x85
+    x87 = x84*x86
+    x88 = x4*x57
+    x89 = x33*x88
+    x90 = a**(5/2)*x57
+    x91 = 4*x26
+    x92 = x90*x91
+    x93 = x91*(x73 + 1)
+    x94 = x4*x85
+    x95 = x77*(2*x30 + x31 + x35*x74 - x68 + x75 - 2)
+    x96 = x4*(x26 + x7)
+    x97 = 1/x56
+    x98 = a*x28
+    x99 = a*x27
+    x100 = 5*x99
+    x101 = a*x63
+    x102 = a*inv_G_I
+    x103 = 8*x1*x102
+    x104 = 9*a*x64
+    x105 = 6*x102
+    x106 = x105*x30
+    x107 = x26*x99
+    x108 = a*x18*x21
+    x109 = 3*a*x66
+    x110 = x105*x16
+    x111 = a*x69
+    x112 = 4*x102*x49
+    dG_da_delta = (-x55*(x33*x58 + x60*x87)*(x1*x87*x97 - x30*x84*x96 + x33*x92 + x34*x37*x90 +
+        x60*x83*x85*(-x100 + x101 - x103 + x104 + x106 + x107 + x108 + x109 - x110 - x111 + x112 -
+        x16*x52 - x41 + x43 - x44 + x47*x48 - x47*x54 + x51 + x52*x62 - x98)/x71**2 - x72*x94*x95 -
+        x84*x94 - x89*x93 + x89))
+    x113 = x33*x71
+    x114 = 1/x15
+    x115 = inv_G_I + x113*x114
+    x116 = 1/x115
+    x117 = inv_G_I*x1*x14*x81 + x82
+    x118 = x26*x86
+    x119 = x114*x94
+    x120 = -x117
+    x121 = x116*x120
+    x122 = x121*x26
+    x123 = -x45*x46
+    x124 = x123*x18
+    dG_da_delta_work = (-x36*x55*(-x116*x117*x118*x59 + x58)*(-inv_theta*x122*x96 - x116*x119*x95 +
+        x118*x121*x97 + x119*x121 + x122*x35*x94 + 4*x35*x90 - x88*x93 + x88 + x92 -
+        x120*x33*x59*x85*(a*x113*x34 + 2*a*x26*x71 + x100 - x101 + x103 - x104 - x106 - x107 - x108
+        - x109 + x110 + x111 - x112 + x123*x48 - x123*x54 - x124*x16 + x124*x62 + x41 - x43 + x44 -
+        x51 + x98)/(x115**2*x61)))
+    dG_dP = -x23*x25*x26*x36*x45*x6*x85
+    return ReleaseRateSlopes(dG_da_P, dG_da_delta, dG_da_delta_work, dG_dP)
 
 
 @njit(cache=True)
 def equilibrium_star(a, gb, inv_theta, m):
     """
     Dimensionless equilibrium at contact parameter a: p = P beta*/(4 pi Delta) (= vartheta P*,
-    = P_R* of (7.6)), dp/da, delta/Delta, d(delta/Delta)/da, (1/w) dG/da|_P, (1/w) dG/da|_delta.
+    = P_R* of (7.6)), dp/da, delta/Delta, d(delta/Delta)/da, (1/w) dG/da|_P, (1/w) dG/da|_delta,
+    delta_work/Delta and its slope (work-conjugate approach; its fixed-grip stability follows
+    from the slope's sign, jkrcyl.equilibria, as dG/da|_delta_work cancels at large a).
     m = M vartheta (= M_R* for vartheta = inf), inv_theta = 1/vartheta, gb = (1/G_I)/beta*.
     """
     x0 = a**2
@@ -206,89 +257,97 @@ def equilibrium_star(a, gb, inv_theta, m):
     x20 = inv_theta*x19
     x21 = 4*x20
     x22 = 1/x2
-    x23 = inv_theta*x1
-    x24 = 4*x0
-    x25 = x18 + x24
-    x26 = x10*x25
-    dp_da = x10*(x1*(x15 + x17*x21 + x22*x5) - x14*x23*x26 + x14)
-    x27 = 1/x0
-    x28 = math.log1p(x27)
-    x29 = gb - x28
-    x30 = x1**2
-    x31 = 2*x30
-    x32 = x31*x4
-    x33 = a**6
-    x34 = 2*x3
-    x35 = inv_theta*(6*x0 - x3*x7 + x33 + x34 + 8*x7 + 2) - x29*x32 + x8 - 4
-    x36 = 2*x0
-    x37 = x1*x36
-    x38 = -gb*x37 + x18*x33 + x28*x37 + x9
-    delta_over_Delta = x10*(m*x18*x2*x35 - x38)
-    x39 = a**3
-    x40 = 4*x39
-    x41 = 1/x30
-    x42 = x1*x13
-    x43 = 1/a
-    x44 = 1/(x27 + 1)
-    x45 = 2*inv_theta
-    x46 = x17*x35
-    x47 = 2*x18
-    x48 = a*inv_theta
-    ddelta_da = (x10*(2*a**7*x41 - 6*a**5*x18 + 4*a*gb*x1 + 2*a*inv_theta*x10*x25*x38 - a*x25*x45 +
-        4*gb*x39 - inv_theta*x26*x46*x47 + (1/2)*m*x18*x22*x35 - m*x2*x47*(x19*x29*x31*x48 +
-        x29*x4*x42 + x32*x44/x39 - x40 - x48*(-x0*x34 + 16*x0 - x18*x7 + x47 + 3*x7 + 6)) +
-        4*x1*x43*x44 - x28*x40 - x28*x42 - 2*x41*x46))
-    x49 = m**(-2)
-    x50 = math.log(x1)
-    x51 = inv_theta*x50
-    x52 = -x51
-    x53 = -inv_theta + x23 + x52 + 2
-    x54 = x53**(-2)
-    x55 = 4*x23
-    x56 = -x11*x55
-    x57 = inv_theta*x11
-    x58 = x0 + x11*x45 + x11*x51 - x12 + x31*x57 + x56
-    x59 = inv_theta*x30
-    x60 = x36 + 1
-    x61 = 4*x18
-    x62 = 1/x53
-    x63 = x20*x62
-    dG_da_P = -x49*x54*x58*(x27*x58 + x58*x61 + 4*x58*x63 - x61*(4*x11*x59 + x56 + x57 + x60))
-    x64 = x23*x50
-    x65 = x23 + x36 - x59 + x64
-    x66 = x18*x65
-    x67 = m*x10*x18*x2*x35 - x10*x38 - x62*x66
-    x68 = 3*inv_theta
-    x69 = 4*x30
-    x70 = inv_theta*x31
-    x71 = inv_theta*x1**3
-    x72 = 2*x71
-    x73 = 2*x64
-    x74 = x31*x51
-    x75 = math.log(a/math.sqrt(x1))
-    x76 = x30*x75
-    x77 = 4*x75
-    x78 = (-gb*x69 + gb*x70 - gb*x72 + gb*x74 - 7*x23 - x24 - x30*x51 + x31 + 4*x51*x76 + x51 +
-        x59*x77 + 5*x59 + x68 - x71*x77 + x71 + x73 - 8*x76 - 6)
-    x79 = 1/x78
-    x80 = x45 + x51 - x55 + x70 - 2
-    x81 = x79*x80
-    x82 = x67*x81
-    x83 = x1*x82
-    x84 = x2*x62
-    x85 = a**(5/2)
-    x86 = a*x1
-    x87 = a*x23
-    x88 = 6*gb
-    x89 = a*x59
-    x90 = 12*x75
-    x91 = x43*(x0*x18 - 1)
-    dG_da_delta = (-x49*(x16*x62 + x22*x83)*(4*x1*x22*x67*x80*(a*x30*x68 + 2*a*x51 + 8*a*x64*x75 -
-        a*x73 + gb*x13*x64 - 8*gb*x86 + x15 + x18*x48 + x42 - 5*x48 + x69*x91 - x70*x91 + x72*x91 -
-        x74*x91 - 16*x75*x86 + x87*x88 + x87*x90 + 9*x87 - x88*x89 - x89*x90)/x78**2 -
-        x2*x25*x55*x67*x79 - 4*x2*x82 + x21*x54*x85 - x60*x61*x84 + x61*x62*x85 - 4*x81*x84*(2*x23 -
-        x45 + x52 + x63*x65 + x66 - 2) + x84 + x83/x16))
-    return EquilibriumStar(p, dp_da, delta_over_Delta, ddelta_da, dG_da_P, dG_da_delta)
+    x23 = x15 + x17*x21 + x22*x5
+    x24 = inv_theta*x1
+    x25 = 4*x0
+    x26 = x18 + x25
+    x27 = x10*x26
+    dp_da = x10*(x1*x23 - x14*x24*x27 + x14)
+    x28 = 1/x0
+    x29 = math.log1p(x28)
+    x30 = gb - x29
+    x31 = x1**2
+    x32 = 2*x31
+    x33 = x32*x4
+    x34 = a**6
+    x35 = 2*x3
+    x36 = inv_theta*(6*x0 - x3*x7 + x34 + x35 + 8*x7 + 2) - x30*x33 + x8 - 4
+    x37 = x18*x34
+    x38 = 2*x0
+    x39 = gb*x1
+    x40 = x38*x39
+    x41 = x1*x29*x38
+    x42 = x37 - x40 + x41 + x9
+    delta_over_Delta = x10*(m*x18*x2*x36 - x42)
+    x43 = a**3
+    x44 = 4*x43
+    x45 = 1/x31
+    x46 = x1*x13
+    x47 = 1/a
+    x48 = 1/(x28 + 1)
+    x49 = 2*inv_theta
+    x50 = a*x26
+    x51 = x17*x36
+    x52 = 2*x18
+    x53 = a*inv_theta
+    x54 = m*x2
+    x55 = (-2*a**7*x45 + 6*a**5*x18 - 4*a*gb*x1 - 2*a*inv_theta*x10*x26*x42 - 4*gb*x43 +
+        inv_theta*x27*x51*x52 - 1/2*m*x18*x22*x36 - 4*x1*x47*x48 + x29*x44 + x29*x46 + 2*x45*x51 +
+        x49*x50 + x52*x54*(x19*x30*x32*x53 + x30*x4*x46 + x33*x48/x43 - x44 - x53*(-x0*x35 + 16*x0 -
+        x18*x7 + x52 + 3*x7 + 6)))
+    ddelta_da = -x10*x55
+    x56 = m**(-2)
+    x57 = math.log(x1)
+    x58 = inv_theta*x57
+    x59 = -x58
+    x60 = -inv_theta + x24 + x59 + 2
+    x61 = x60**(-2)
+    x62 = 4*x24
+    x63 = -x11*x62
+    x64 = inv_theta*x11
+    x65 = x0 + x11*x49 + x11*x58 - x12 + x32*x64 + x63
+    x66 = inv_theta*x31
+    x67 = x38 + 1
+    x68 = 4*x18
+    x69 = 1/x60
+    x70 = x20*x69
+    dG_da_P = -x56*x61*x65*(x28*x65 + x65*x68 + 4*x65*x70 - x68*(4*x11*x66 + x63 + x64 + x67))
+    x71 = x24*x57
+    x72 = x24 + x38 - x66 + x71
+    x73 = x18*x72
+    x74 = m*x10*x18*x2*x36 - x10*x42 - x69*x73
+    x75 = 3*inv_theta
+    x76 = inv_theta*x1**3
+    x77 = 4*x31
+    x78 = inv_theta*x32
+    x79 = 2*x71
+    x80 = x32*x58
+    x81 = math.log(a/math.sqrt(x1))
+    x82 = x31*x81
+    x83 = 4*x81
+    x84 = (-2*gb*x76 - gb*x77 + gb*x78 + gb*x80 - 7*x24 - x25 - x31*x58 + x32 + 4*x58*x82 + x58 +
+        x66*x83 + 5*x66 + x75 - x76*x83 + x76 + x79 - 8*x82 - 6)
+    x85 = 1/x84
+    x86 = x49 + x58 - x62 + x78 - 2
+    x87 = x85*x86
+    x88 = x74*x87
+    x89 = x1*x88
+    x90 = x2*x69
+    x91 = a**(5/2)
+    x92 = a*x24
+    x93 = 6*gb
+    x94 = a*x81
+    x95 = 12*x94
+    x96 = x47*(x0*x18 - 1)
+    dG_da_delta = (-x56*(x16*x69 + x22*x89)*(4*x1*x22*x74*x86*(a*x31*x75 - 8*a*x39 + 2*a*x58 -
+        a*x66*x93 - a*x79 + gb*x13*x71 - 16*x1*x94 + x15 + x18*x53 + x24*x95 + x46 - 5*x53 - x66*x95
+        + 8*x71*x94 + 2*x76*x96 + x77*x96 - x78*x96 - x80*x96 + x92*x93 + 9*x92)/x84**2 -
+        x2*x26*x62*x74*x85 - 4*x2*x88 + x21*x61*x91 - x67*x68*x90 + x68*x69*x91 - 4*x87*x90*(2*x24 -
+        x49 + x59 + x70*x72 + x73 - 2) + x90 + x89/x16))
+    delta_work_over_Delta = x10*(x18*x36*x54 - x37 + x39*x6 + x40 - x41 - x9)
+    ddelta_work_da = x10*(2*a*gb*x6 + (1/2)*gb*x1*x23 - gb*x12*x24*x50 - x55)
+    return EquilibriumStar(p, dp_da, delta_over_Delta, ddelta_da, dG_da_P, dG_da_delta,
+                           delta_work_over_Delta, ddelta_work_da)
 
 
 @njit(cache=True)
@@ -302,6 +361,8 @@ def equilibrium_star_into(out, a, gb, inv_theta, m):
     ddelta_da = out.ddelta_da
     dG_da_P = out.dG_da_P
     dG_da_delta = out.dG_da_delta
+    delta_work_over_Delta = out.delta_work_over_Delta
+    ddelta_work_da = out.ddelta_work_da
     for i in range(a.shape[0]):
         r = equilibrium_star(a[i], gb, inv_theta, m)
         p[i] = r.p
@@ -310,3 +371,5 @@ def equilibrium_star_into(out, a, gb, inv_theta, m):
         ddelta_da[i] = r.ddelta_da
         dG_da_P[i] = r.dG_da_P
         dG_da_delta[i] = r.dG_da_delta
+        delta_work_over_Delta[i] = r.delta_work_over_Delta
+        ddelta_work_da[i] = r.ddelta_work_da

@@ -34,3 +34,12 @@ def approach_work(P, delta, inv_G_I):
     """
     delta_work = (1/8)*P*inv_G_I/math.pi + delta
     return delta_work
+
+
+@njit(cache=True)
+def approach_work_into(out, P, delta, inv_G_I):
+    """
+    approach_work at every P, delta[i], into out (a 1-D array of the same length).
+    """
+    for i in range(P.shape[0]):
+        out[i] = approach_work(P[i], delta[i], inv_G_I)

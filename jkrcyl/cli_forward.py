@@ -15,7 +15,7 @@ PHYSICAL = (("E", "Young's modulus of the body with the hole [Pa] (inf: rigid)")
             ("R", "hole radius [m]"), ("Delta", "clearance R - R_D [m], > 0"), ("w", "work of adhesion [J/m^2]"))
 
 UNITS = {"a": "", "a_top": "", "eps": "rad", "eps_top": "rad", "contact_width": "m", "P": "N/m", "delta": "m",
-         "h_pi": "m", "K": "Pa m^1/2", "P_star": "", "delta_over_Delta": "", "energy": "J/m"}
+         "delta_work": "m", "h_pi": "m", "K": "Pa m^1/2", "P_star": "", "delta_over_Delta": "", "energy": "J/m"}
 
 
 def add_physical(p, number):
@@ -61,7 +61,7 @@ def header(keys, units=None):
     return ",".join(f"{k} [{units[k]}]" if units.get(k) else k for k in keys)
 
 
-PHYSICAL_UNITS = {"P": "N/m", "delta": "m"}
+PHYSICAL_UNITS = {"P": "N/m", "delta": "m", "delta_work": "m"}
 
 
 def write_rows(rows, fmt, out=sys.stdout, meta=None):

@@ -106,20 +106,30 @@ class Contact:
                                inv_theta=m.inv_theta, inv_G_I=m.inv_G_I, alpha_star=m.alpha_star)
         return State(contact=self, a=_shaped(flat, arr.shape), **{k: _shaped(v, arr.shape) for k, v in out.items()})
 
+    def approach_work(self, P, delta):
+        """Work-conjugate approach delta_work = delta + P/(8 pi G_I) [m] (derive/green.py) of a state with load P
+        [N/m] and the paper's approach delta [m] (5.8); only the net load enters (the n = 1 Michell mode), so it
+        holds for one patch, two patches and full contact alike.  Scalars or arrays of equal shape."""
+        shape = np.broadcast(np.asarray(P), np.asarray(delta)).shape
+        out = _k.approach_work(P, delta, inv_G_I=self.materials.inv_G_I)
+        return _shaped(out, shape)
+
     # --- sections 6 and 8 (jkrcyl.equilibria) -------------------------------------------------------
     def curve(self, regime="sub-critical", n=2000):
         """Equilibrium branch (M, P*, delta/Delta, ... and P [N/m], delta [m]): jkrcyl.equilibria.curve."""
         from . import equilibria
         M, th, gb = equilibria.from_contact(self)
         cv = equilibria.curve(M, th, regime=regime, n=n, gb=gb, alpha_ratio=self.materials.alpha_ratio)
-        return replace(cv, P=cv.P_star * self.load_scale, delta=cv.delta_over_Delta * self.Delta)
+        return replace(cv, P=cv.P_star * self.load_scale, delta=cv.delta_over_Delta * self.Delta,
+                       delta_work=cv.delta_work_over_Delta * self.Delta)
 
     def adherence(self, control="load"):
         """Adherence points (P* minima for control='load', d delta/da = 0 for 'grip'): jkrcyl.equilibria.adherence."""
         from . import equilibria
         M, th, gb = equilibria.from_contact(self)
         pts = equilibria.adherence(M, th, control=control, gb=gb, alpha_ratio=self.materials.alpha_ratio)
-        return [replace(p, P=p.P_star * self.load_scale, delta=p.delta_over_Delta * self.Delta) for p in pts]
+        return [replace(p, P=p.P_star * self.load_scale, delta=p.delta_over_Delta * self.Delta,
+                        delta_work=p.delta_work_over_Delta * self.Delta) for p in pts]
 
     def two_patch(self, n=None):
         """Two-patch branches (second contact at the top of the hole): jkrcyl.equilibria.two_patch."""
@@ -241,7 +251,8 @@ class State:
     """Equilibria at the contact parameters a (arrays shaped like a).
 
     P [N/m] (4.4), B [N/m] (4.5a), C [N/m] (4.5b), c0 [m], c1 [m] (2.6), r0 [Pa] (2.12),
-    K [Pa m^1/2] (3.4), G_release [J/m^2] (3.5), delta [m] (5.8), h_pi [m] (5.10).
+    K [Pa m^1/2] (3.4), G_release [J/m^2] (3.5), delta [m] (5.8), h_pi [m] (5.10);
+    delta_work [m]: the work-conjugate approach (derive/green.py).
     """
 
     contact: Contact
@@ -276,6 +287,19 @@ class State:
     def delta_over_Delta(self):
         self.contact._require_clearance("delta_over_Delta")
         return self.delta / self.contact.Delta
+
+    @property
+    def delta_work(self):
+        """Work-conjugate approach delta_work = delta + P/(8 pi G_I) [m] (derive/green.py): displacement of the
+        pin's centroid relative to the hole's rim for a load spread over the pin, so that P d(delta_work) is
+        the work done on the contact.  The paper's delta (5.8) is the rims' approach with the load at the
+        pin's centre; it differs by P/(8 pi G_I) and is not the conjugate of P (Fig. 7: negative stiffness)."""
+        return self.contact.approach_work(self.P, self.delta)
+
+    @property
+    def delta_work_over_Delta(self):
+        self.contact._require_clearance("delta_work_over_Delta")
+        return self.delta_work / self.contact.Delta
 
     @property
     def h_pi_over_Delta(self):

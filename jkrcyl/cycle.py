@@ -67,7 +67,11 @@ class Cycle:
     control : str
         'load' or 'grip'.
     P, delta : ndarray
-        The path in the load-approach plane [N/m], [m] (jumps are straight segments between two points).
+        The path in the load-approach plane [N/m], [m] (jumps are straight segments between two points); delta is
+        the paper's approach (5.8), driven under control='grip'.
+    delta_work : ndarray
+        The work-conjugate approach delta + P/(8 pi G_I) [m] (Contact.approach_work, derive/green.py) along the
+        path: the P-delta_work plane is where the loop area is the energy dissipated and the slope a stiffness.
     branch, a, stable : ndarray
         Branch name, contact parameter and stability (under the control) at each path point.
     leg : ndarray of int
@@ -91,6 +95,7 @@ class Cycle:
     jumps: List[Jump]
     dissipated: Optional[float]
     closed_from_leg: Optional[int]
+    delta_work: np.ndarray = None
     note: str = ""
 
     def __repr__(self) -> str:
@@ -100,7 +105,7 @@ class Cycle:
     def table(self) -> dict:
         """Columns for CSV output (physical units)."""
         return {"leg": self.leg, "branch": self.branch, "a": self.a, "P": self.P, "delta": self.delta,
-                "stable": self.stable}
+                "delta_work": self.delta_work, "stable": self.stable}
 
 
 # --- tracks: the branches as dense polylines --------------------------------------------------------------
@@ -400,9 +405,10 @@ def _finish(path, contact, n, closed, note):
     P, d, br, a, st, lg = (np.array(v) for v in zip(*path.pts))
     energy = None if closed is None else loop_energy(path, closed)
     keep = _thin(len(P), n, path, lg)
-    return Cycle(control=path.control, P=P[keep].astype(float), delta=d[keep].astype(float), branch=br[keep],
-                 a=a[keep].astype(float), stable=st[keep].astype(bool), leg=lg[keep].astype(int), jumps=path.jumps,
-                 dissipated=energy, closed_from_leg=closed, note=note)
+    P, d = P[keep].astype(float), d[keep].astype(float)
+    return Cycle(control=path.control, P=P, delta=d, branch=br[keep], a=a[keep].astype(float),
+                 stable=st[keep].astype(bool), leg=lg[keep].astype(int), jumps=path.jumps, dissipated=energy,
+                 closed_from_leg=closed, delta_work=contact.approach_work(P, d), note=note)
 
 
 def _thin(m, n, path, legs):
@@ -480,12 +486,14 @@ def _gauss(path, tr, a0, a1):
 
 # --- output -----------------------------------------------------------------------------------------------
 def plot(cy: Cycle, path, title: str = ""):
-    """The P-delta path of a cycle with its jumps drawn as arrows (PNG/PDF by the file extension)."""
+    """The P-delta_work path of a cycle (the work-conjugate approach, whose loop area is the energy dissipated)
+    with its jumps drawn as arrows (PNG/PDF by the file extension)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
     jump_at = {(j.before.P, j.before.delta) for j in cy.jumps}
+    x = np.asarray(cy.delta_work) * 1e6
     segs, cur = [], [0]
     for i in range(1, len(cy.P)):
         if (cy.P[i - 1], cy.delta[i - 1]) in jump_at and cy.branch[i] != cy.branch[i - 1]:
@@ -494,14 +502,14 @@ def plot(cy: Cycle, path, title: str = ""):
         cur.append(i)
     segs.append(cur)
     for k, idx in enumerate(segs):
-        ax.plot(cy.delta[idx] * 1e6, cy.P[idx], "-", color="C0", lw=1.5, label="quasi-static path" if k == 0 else None)
+        ax.plot(x[idx], cy.P[idx], "-", color="C0", lw=1.5, label="quasi-static path" if k == 0 else None)
     for k, j in enumerate(cy.jumps):
-        ax.annotate("", xy=(j.after.delta * 1e6, j.after.P), xytext=(j.before.delta * 1e6, j.before.P),
+        ax.annotate("", xy=(j.after.delta_work * 1e6, j.after.P), xytext=(j.before.delta_work * 1e6, j.before.P),
                     arrowprops=dict(arrowstyle="->", color="C3", lw=1.2))
-        ax.plot([j.before.delta * 1e6], [j.before.P], "o", color="C3", ms=3,
+        ax.plot([j.before.delta_work * 1e6], [j.before.P], "o", color="C3", ms=3,
                 label="jump (snap-in, pull-off, ...)" if k == 0 else None)
     ax.axhline(0, color="0.8", lw=0.6)
-    ax.set_xlabel(r"approach $\delta$ [$\mu$m]")
+    ax.set_xlabel(r"work-conjugate approach $\delta_{work} = \delta + P/(8\pi G_I)$ [$\mu$m]")
     ax.set_ylabel("load P [N/m]")
     e = "" if cy.dissipated is None else f"; dissipated {cy.dissipated:.4g} J/m per cycle"
     ax.set_title((title + "\n" if title else "") + f"{cy.control} control{e}", fontsize=9)

@@ -114,15 +114,15 @@ def _grid(regime, th, n, ac=None):
 
 
 def _star(a, m, inv_t, gb, ar=0.0):
-    """Normalised equilibrium as a dict p (= vartheta P*), dp, dn, ddn, gP, gd, h, m = M vartheta
-    (tests/test_arcs.py compares the solver with it)."""
+    """Normalised equilibrium as a dict p (= vartheta P*), dp, dn, ddn, gP, gd, h and, for the work-conjugate
+    approach, dw, ddw; m = M vartheta (tests/test_arcs.py compares the solver with it)."""
     a = np.ascontiguousarray(np.atleast_1d(np.asarray(a, dtype=float)))
     if ar != 0.0:
         from .numerics.arcs import star
         return star(a, m, math.inf if inv_t == 0 else 1.0 / inv_t, gb, ar)
     s = _k.star_m(a, inv_theta=inv_t, m=m, gb=gb)
     return dict(p=s.p, dp=s.dp_da, dn=s.delta_over_Delta, ddn=s.ddelta_da, gP=s.dG_da_P, gd=s.dG_da_delta,
-                h=s.h_pi_over_Delta)
+                h=s.h_pi_over_Delta, dw=s.delta_work_over_Delta, ddw=s.ddelta_work_da)
 
 
 def _star_of(a, M, th, gb, ar=0.0):
@@ -132,7 +132,8 @@ def _star_of(a, M, th, gb, ar=0.0):
     n = _k.normalise(M, th)
     s = _star(a, n.m, n.inv_theta, gb, ar)
     return _k.Star(P_star=s["p"] / n.scale, dP_star_da=s["dp"] / n.scale, delta_over_Delta=s["dn"],
-                   ddelta_da=s["ddn"], dG_da_P=s["gP"], dG_da_delta=s["gd"], h_pi_over_Delta=s["h"])
+                   ddelta_da=s["ddn"], dG_da_P=s["gP"], dG_da_delta=s["gd"], h_pi_over_Delta=s["h"],
+                   delta_work_over_Delta=s["dw"], ddelta_work_da=s["ddw"])
 
 
 _star_root = _roots.brent_solver(_k.star_residual_nb)
@@ -184,6 +185,13 @@ class Curve:
     P_star (P_R* when vartheta = inf); delta_over_Delta; h_pi_over_Delta = h(pi)/Delta;
     feasible = gap inequality (h(pi) >= 0); stable_load = dG/da|_P > 0; stable_grip = dG/da|_delta > 0;
     dP_star_da, ddelta_da: slopes; dG_da_P, dG_da_delta: (1/w) dG/da.
+    Work-conjugate approach delta_work = delta + P/(8 pi G_I) (derive/green.py: the pin's centroid, load
+    spread over the pin; the paper's delta is the rims' approach, not the work conjugate of P):
+    delta_work_over_Delta, its slope ddelta_work_da and stable_grip_work (stable at fixed delta_work).
+    dG/da|_delta_work = -(dG/dP)|_a (d delta_work/da)/(d delta_work/dP)|_a on the equilibrium, and
+    (d delta_work/dP)|_a > 0 (the compliance of the fixed arc in the conjugate approach, positive like its elastic
+    energy), so stable_grip_work is d delta_work/da > 0 below a_crit and < 0 above it -- the load rule with
+    delta_work for P (tests/test_work_conjugate.py checks it against the kernel of dG/da|_delta_work).
     """
 
     M: float
@@ -203,16 +211,20 @@ class Curve:
     ddelta_da: np.ndarray
     dG_da_P: np.ndarray
     dG_da_delta: np.ndarray
+    delta_work_over_Delta: np.ndarray
+    ddelta_work_da: np.ndarray
+    stable_grip_work: np.ndarray
     P: np.ndarray = None          # [N/m], set when the curve comes from a Contact (Contact.curve)
     delta: np.ndarray = None      # [m], likewise
+    delta_work: np.ndarray = None  # [m], likewise
 
-    COLUMNS = ("a", "eps", "eps_star", "P_star", "delta_over_Delta", "h_pi_over_Delta", "feasible",
-               "stable_load", "stable_grip")
+    COLUMNS = ("a", "eps", "eps_star", "P_star", "delta_over_Delta", "delta_work_over_Delta", "h_pi_over_Delta",
+               "feasible", "stable_load", "stable_grip", "stable_grip_work")
 
     def table(self):
-        """Columns of :attr:`COLUMNS` (plus P [N/m], delta [m] when dimensional) as a dict of arrays
+        """Columns of :attr:`COLUMNS` (plus P [N/m], delta, delta_work [m] when dimensional) as a dict of arrays
         (booleans as 0/1)."""
-        cols = self.COLUMNS + (("P", "delta") if self.P is not None else ())
+        cols = self.COLUMNS + (("P", "delta", "delta_work") if self.P is not None else ())
         return {k: np.asarray(getattr(self, k), dtype=float) for k in cols}
 
     def __repr__(self):
@@ -260,7 +272,9 @@ def curve(M: float, theta: float, regime: str = "sub-critical", n: int = 2000, g
     return Curve(M=M, theta=th, gb=gb, regime=regime, a=a, eps=2 * np.arctan(a), eps_star=_eps_star(a, th, ac),
                  P_star=st.P_star, delta_over_Delta=st.delta_over_Delta, h_pi_over_Delta=st.h_pi_over_Delta,
                  feasible=st.h_pi_over_Delta >= 0, stable_load=st.dG_da_P > 0, stable_grip=st.dG_da_delta > 0,
-                 dP_star_da=st.dP_star_da, ddelta_da=st.ddelta_da, dG_da_P=st.dG_da_P, dG_da_delta=st.dG_da_delta)
+                 dP_star_da=st.dP_star_da, ddelta_da=st.ddelta_da, dG_da_P=st.dG_da_P, dG_da_delta=st.dG_da_delta,
+                 delta_work_over_Delta=st.delta_work_over_Delta, ddelta_work_da=st.ddelta_work_da,
+                 stable_grip_work=(1 if regime == "sub-critical" else -1) * st.ddelta_work_da > 0)
 
 
 @dataclass(frozen=True)
@@ -282,8 +296,10 @@ class Point:
     delta_over_Delta: float
     h_pi_over_Delta: float
     feasible: bool
+    delta_work_over_Delta: float = None   # work-conjugate approach delta_work/Delta (Curve)
     P: float = None               # [N/m], set when the point comes from a Contact (Contact.adherence)
     delta: float = None           # [m], likewise
+    delta_work: float = None      # [m], likewise
 
 
 ROOT_GRID = 4000
@@ -324,7 +340,8 @@ def stationary_points(M: float, theta: float, control: str = "load", regime: str
         out.append(Point(control=control, regime=regime, kind="min" if sgn > 0 else "max", M=M, theta=th,
                          a=r, eps=2 * math.atan(r), eps_star=float(_eps_star(r, th, ac)),
                          P_star=float(st.P_star[0]), delta_over_Delta=float(st.delta_over_Delta[0]),
-                         h_pi_over_Delta=float(st.h_pi_over_Delta[0]), feasible=bool(st.h_pi_over_Delta[0] >= 0)))
+                         h_pi_over_Delta=float(st.h_pi_over_Delta[0]), feasible=bool(st.h_pi_over_Delta[0] >= 0),
+                         delta_work_over_Delta=float(st.delta_work_over_Delta[0])))
     return out
 
 

@@ -149,10 +149,16 @@ def _equilibrium_panels(theta, regime, n, title, Ms=M_VALUES, alpha_ratio=0.0):
     for ax in axs.flat:
         ax.grid(alpha=0.3)
     _legend(axs[0, 0], [(f"${mlab} = {M:g}$", st) for M, st in zip(Ms, styles)], ncol=2, loc="best")
-    if is_inf:
+    if is_inf:      # the conjugate approach at M_R* = 0 (derive/green.py), drawn next to the paper's
+        cv0 = eq.curve(Ms[0], theta, regime, n=n, gb=gb, alpha_ratio=alpha_ratio)
+        axs[1, 0].plot(cv0.delta_work_over_Delta, np.clip(cv0.P_star, -50, 50), color="0.55", lw=2.2, ls=":",
+                       label=f"$\\delta_{{work}}$, ${mlab} = {Ms[0]:g}$")
+        rows.add("c_work", f"M = {Ms[0]:g}", "delta_work_over_Delta", cv0.delta_work_over_Delta, "P_star",
+                 cv0.P_star, cv0.feasible)
         axs[1, 0].text(0.98, 0.02, "$P_R^*$ falls with $\\delta$ even at $M_R^* = 0$: the paper's $\\delta$ (5.8)\n"
-                       "is not the work conjugate of $P$ (issue 10 item 4)", transform=axs[1, 0].transAxes,
-                       ha="right", va="bottom", fontsize=7, color="darkred")
+                       "is not the work conjugate of $P$; grey dotted: the conjugate\n"
+                       "$\\delta_{work} = \\delta + P/(8\\pi G_I)$ (pin centroid), stiffness > 0",
+                       transform=axs[1, 0].transAxes, ha="right", va="bottom", fontsize=7, color="darkred")
     fig.suptitle(f"{title}\n{_params_text(theta, gb, alpha_ratio)}")
     fig.tight_layout()
     return fig, rows

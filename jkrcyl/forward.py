@@ -82,7 +82,11 @@ class Equilibrium:
     P : float
         Load per unit length [N/m], positive downward.
     delta : float
-        Approach [m] (5.1), positive downward.
+        Approach [m] (5.1), (5.8), positive downward: the paper's, the rims' approach with the load at the pin's
+        centre.
+    delta_work : float
+        Work-conjugate approach [m] (pin centroid, load spread over the pin; derive/green.py):
+        delta + P/(8 pi G_I), so that P d(delta_work) is the work done (Contact.approach_work).
     h_pi : float
         Gap at phi = pi [m] (5.10); 0 when the top is in contact.
     K : float
@@ -104,6 +108,7 @@ class Equilibrium:
     contact_width: float
     P: float
     delta: float
+    delta_work: float
     h_pi: float
     K: float
     P_star: float
@@ -136,8 +141,8 @@ class Equilibrium:
 
     def as_dict(self) -> dict:
         """Plain values (floats, bools, str) for CSV/JSON output."""
-        keys = ("branch", "side", "a", "a_top", "eps", "eps_top", "contact_width", "P", "delta", "h_pi", "K",
-                "P_star", "delta_over_Delta", "feasible", "stable_load", "stable_grip", "stable")
+        keys = ("branch", "side", "a", "a_top", "eps", "eps_top", "contact_width", "P", "delta", "delta_work",
+                "h_pi", "K", "P_star", "delta_over_Delta", "feasible", "stable_load", "stable_grip", "stable")
         return {k: getattr(self, k) for k in keys}
 
     def __repr__(self) -> str:
@@ -229,7 +234,8 @@ def single_patch_states(pb: Problem, regime: str, a, control: str, side: str = "
         eps = float(2 * math.atan(a[i]))
         out.append(Equilibrium(
             branch=regime if side == "bottom" else regime + "-top", control=control, a=float(a[i]), eps=eps,
-            contact_width=2 * ct.R * eps, P=P, delta=delta, h_pi=h_pi, K=float(np.ravel(st.K)[i]),
+            contact_width=2 * ct.R * eps, P=P, delta=delta, delta_work=float(ct.approach_work(P, delta)),
+            h_pi=h_pi, K=float(np.ravel(st.K)[i]),
             P_star=P / ct.load_scale, delta_over_Delta=delta / ct.Delta, feasible=bool(h_pi >= 0),
             stable_load=bool(stab_load[i]), stable_grip=bool(stab_grip[i]), side=side))
     return out
@@ -291,7 +297,9 @@ def _from_two_patch(pb, s, load, grip, control):
     ct = pb.contact
     return Equilibrium(
         branch="two-patch", control=control, a=s.a, eps=s.eps, contact_width=2 * ct.R * (s.eps + s.eps_top),
-        P=s.P_star * ct.load_scale, delta=s.delta_over_Delta * ct.Delta, h_pi=0.0, K=math.sqrt(8 * ct.w / ct.beta),
+        P=s.P_star * ct.load_scale, delta=s.delta_over_Delta * ct.Delta,
+        delta_work=float(ct.approach_work(s.P_star * ct.load_scale, s.delta_over_Delta * ct.Delta)), h_pi=0.0,
+        K=math.sqrt(8 * ct.w / ct.beta),
         P_star=s.P_star, delta_over_Delta=s.delta_over_Delta, feasible=bool(s.feasible),
         stable_load=bool(load), stable_grip=bool(grip), side="both", a_top=s.a_top, eps_top=s.eps_top,
         extra={"gap_min_over_Delta": s.gap_min, "G_bot": s.G_bot, "G_top": s.G_top})
@@ -346,7 +354,9 @@ def full_contact_state(pb: Problem, key: str, target: float, control: str) -> Op
     ct = pb.contact
     return Equilibrium(
         branch="full-contact", control=control, a=math.inf, eps=math.pi, contact_width=2 * math.pi * ct.R,
-        P=fc.P_star * ct.load_scale, delta=fc.delta_over_Delta * ct.Delta, h_pi=0.0, K=0.0, P_star=fc.P_star,
+        P=fc.P_star * ct.load_scale, delta=fc.delta_over_Delta * ct.Delta,
+        delta_work=float(ct.approach_work(fc.P_star * ct.load_scale, fc.delta_over_Delta * ct.Delta)), h_pi=0.0,
+        K=0.0, P_star=fc.P_star,
         delta_over_Delta=fc.delta_over_Delta, feasible=True, stable_load=True, stable_grip=True, side="both",
         a_top=math.inf, eps_top=0.0, extra={"tension_everywhere": fc.tension_everywhere})
 
@@ -363,7 +373,8 @@ def separated_state(pb: Problem, delta_over_Delta: float, control: str) -> Equil
     ct = pb.contact
     return Equilibrium(
         branch="separated", control=control, a=0.0, eps=0.0, contact_width=0.0, P=0.0,
-        delta=delta_over_Delta * ct.Delta, h_pi=(2 + delta_over_Delta) * ct.Delta, K=0.0, P_star=0.0,
+        delta=delta_over_Delta * ct.Delta, delta_work=delta_over_Delta * ct.Delta,   # P = 0: delta_work = delta
+        h_pi=(2 + delta_over_Delta) * ct.Delta, K=0.0, P_star=0.0,
         delta_over_Delta=delta_over_Delta, feasible=True, stable_load=False, stable_grip=True, side="none")
 
 

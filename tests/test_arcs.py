@@ -70,7 +70,8 @@ def test_normalised_equilibria_match_closed_form(theta, gb, M):
     inv = 0.0 if math.isinf(theta) else 1 / theta
     m = M if math.isinf(theta) else M * theta
     ref, num = eq._star(a, m, inv, gb), arcs.star(a, m, theta, gb, 0.0)
-    for k, tol in dict(p=1e-10, dn=1e-10, h=1e-10, dp=1e-7, ddn=1e-7, gP=1e-7, gd=1e-7).items():
+    for k, tol in dict(p=1e-10, dn=1e-10, h=1e-10, dw=1e-10, dp=1e-7, ddn=1e-7, ddw=1e-7, gP=1e-7,
+                       gd=1e-7).items():
         assert np.max(np.abs(num[k] - ref[k]) / np.abs(ref[k])) < tol, k
 
 
@@ -101,11 +102,15 @@ def test_spectral_convergence_in_the_nodes(ar, eps):
 # stiffness, so  P - P_H = S (delta - delta_H),  S = (dP_H/da)/(d delta_H/da).  The punch's elastic energy
 # (P - P_H)^2/(2S) released as the arc l = 2 R eps shrinks gives w = -1/2 (P - P_H)^2 d(1/S)/dl.  Normalised
 # (p = P beta*/(4 pi Delta), dn = delta/Delta, m = M vartheta): m^2 = -1/4 (p - p_H)^2 d(1/S)/d eps.
-def _identities(star, a, m):
+def _identities(star, a, m, approach="dn"):
+    """approach: 'dn' (the paper's delta) or 'dw' (the work-conjugate delta_work = delta + c P, derive/green.py;
+    the identities hold for both since they differ by a term linear in P, but S of the conjugate approach is a
+    positive stiffness, while d delta_H/da of the paper's delta can vanish, which makes S = dp/d delta ill-conditioned)."""
+    slope = "d" + approach
     H = lambda x: star(np.atleast_1d(x), 0.0)
-    S = lambda x: (lambda s: s["dp"][0] / s["ddn"][0])(H(x))
+    S = lambda x: (lambda s: s["dp"][0] / s[slope][0])(H(x))
     st, hz = star(np.array([a]), m), H(a)
-    dp, dd = st["p"][0] - hz["p"][0], st["dn"][0] - hz["dn"][0]
+    dp, dd = st["p"][0] - hz["p"][0], st[approach][0] - hz[approach][0]
     h = 1e-2 * a                                  # 4-point derivative of 1/S in eps = 2 atan(a)
     inv = [1 / S(a + k * h) for k in (-2, -1, 1, 2)]
     d_inv_da = (inv[0] - 8 * inv[1] + 8 * inv[2] - inv[3]) / (12 * h)
@@ -113,9 +118,10 @@ def _identities(star, a, m):
     return (dp - S(a) * dd) / abs(dp), (-0.25 * dp * dp * d_inv_deps) / (m * m) - 1
 
 
+@pytest.mark.parametrize("approach", ["dn", "dw"])
 @pytest.mark.parametrize("a", [0.05, 0.3, 0.7])
-def test_superposition_identities_hold_for_the_closed_forms(a):
-    i1, i2 = _identities(lambda x, m: eq._star(x, m, 1.0, 0.5), a, 0.3)
+def test_superposition_identities_hold_for_the_closed_forms(a, approach):
+    i1, i2 = _identities(lambda x, m: eq._star(x, m, 1.0, 0.5), a, 0.3, approach)
     assert abs(i1) < 1e-12 and abs(i2) < 1e-6
 
 
@@ -123,15 +129,17 @@ def test_superposition_identities_hold_for_the_closed_forms(a):
 @pytest.mark.parametrize("theta, a", [(1.0, 0.05), (0.67, 0.3), (2.0, 0.7)])
 def test_superposition_identities_hold_for_alpha_nonzero(ar, theta, a):
     """The solver's Griffith step (edge coefficient) against the compliance route (no edge coefficient)."""
-    i1, i2 = _identities(lambda x, m: arcs.star(x, m, theta, 0.3, ar), a, 0.3)
+    i1, i2 = _identities(lambda x, m: arcs.star(x, m, theta, 0.3, ar), a, 0.3, "dw")
     assert abs(i1) < 1e-9 and abs(i2) < 1e-6
 
 
 # --- first-order perturbation in alpha* (reciprocal theorem) ----------------------------------------------
 def test_dP_dalpha_at_zero_by_the_reciprocal_theorem():
     """d(P of the clearance case)/d(alpha*/beta*) at fixed arc and delta = 0 equals
-    int int nu_delta(psi) nu_Delta(phi) K1(psi - phi), K1 = pi sin|t| - t sin t - cos(t)/2 (the alpha* part
-    of the kernel), with the alpha* = 0 unit solutions (validated against the closed forms above)."""
+    int int nu_delta(psi) nu_Delta(phi) K1(psi - phi), K1 = pi sin|t| - t sin t (the alpha* part of the kernel
+    derived from the Michell modes, DERIVATION.md 'The kernel: sum of the modes'; the paper's delta, rims'
+    reference, has no alpha* in its cos t term), with the alpha* = 0 unit solutions (validated against the
+    closed forms above)."""
     eps, th, gb = 1.2, 1.0, 0.4
     lin = arcs.two_patch_linear(eps, 0.0, th, gb, 48, 0.0)
     N = 1200
@@ -140,7 +148,7 @@ def test_dP_dalpha_at_zero_by_the_reciprocal_theorem():
     u_D = lin.pressure(phi, 0.0) * eps * np.sqrt(1 - s * s) * th       # nu dphi = u ds/sqrt(1 - s^2)
     u_d = (lin.pressure(phi, 1.0) - lin.pressure(phi, 0.0)) * eps * np.sqrt(1 - s * s) * th
     t = phi[:, None] - phi[None, :]
-    K1 = math.pi * np.sin(np.abs(t)) - t * np.sin(t) - np.cos(t) / 2
+    K1 = math.pi * np.sin(np.abs(t)) - t * np.sin(t)
     ref = (math.pi / N) ** 2 * u_d @ K1 @ u_D / th                     # per vartheta: P* normalisation
     h = 1e-4
     fd = (arcs.two_patch_linear(eps, 0.0, th, gb, 48, h).q0[0]

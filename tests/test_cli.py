@@ -44,8 +44,8 @@ def test_curve_csv_and_json(tmp_path):
     lines = r.stdout.strip().splitlines()
     assert lines[0].startswith("#")
     header = lines[1].split(",")
-    assert header == ["a", "eps", "eps_star", "P_star", "delta_over_Delta", "h_pi_over_Delta", "feasible",
-                      "stable_load", "stable_grip"]
+    assert header == ["a", "eps", "eps_star", "P_star", "delta_over_Delta", "delta_work_over_Delta",
+                      "h_pi_over_Delta", "feasible", "stable_load", "stable_grip", "stable_grip_work"]
     assert len(lines) == 7 and all(len(ln.split(",")) == len(header) for ln in lines[2:])
     out = tmp_path / "c.json"
     r = run("curve", "--M", "0.5", "--regime", "super-critical", "--n", "4", "--format", "json", "-o", str(out))

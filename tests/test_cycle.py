@@ -129,6 +129,12 @@ def test_load_cycle_jumps_and_energy():
     area = np.sum(0.5 * (P[1:] + P[:-1]) * np.diff(d))
     assert cy.dissipated > 0
     assert cy.dissipated == pytest.approx(area, rel=1e-6)
+    # the same loop in the work-conjugate approach delta + P/(8 pi G_I) (DERIVATION.md, 'The work-conjugate
+    # approach'): a closed loop encloses the same area, and the cycle's own delta_work path is that shift
+    dw = d + P * c.materials.inv_G_I / (8 * np.pi)
+    assert np.sum(0.5 * (P[1:] + P[:-1]) * np.diff(dw)) == pytest.approx(area, rel=1e-9)
+    np.testing.assert_allclose(cy.delta_work, cy.delta + cy.P * c.materials.inv_G_I / (8 * np.pi),
+                               rtol=1e-14, atol=1e-14 * c.Delta)
 
 
 def test_load_cycle_without_pull_off_dissipates_nothing():
@@ -183,5 +189,5 @@ def test_cli_cycle_plot_and_csv(tmp_path):
     assert "pull-off" in r.stdout and "J/m" in r.stdout
     assert png.stat().st_size > 1000
     rows = list(csv.reader(open(out)))
-    assert rows[1] == ["leg", "branch", "a", "P [N/m]", "delta [m]", "stable"]
-    assert {row[5] for row in rows[2:]} <= {"true", "false"}
+    assert rows[1] == ["leg", "branch", "a", "P [N/m]", "delta [m]", "delta_work [m]", "stable"]
+    assert {row[6] for row in rows[2:]} <= {"true", "false"}

@@ -27,9 +27,16 @@ PAIRS = [(mp.mpf(3), mp.mpf(1), mp.mpf(1)),
 A_VALUES = ("0.05", "0.4", "0.8", "1.3", "3")
 
 
-def _zeta_for(a, beta, th, P=None, delta=None, GI=None):
+def _delta_work(a, beta, th, GI, z):
+    """Work-conjugate approach delta + P/(8 pi G_I) (DERIVATION.md, 'The work-conjugate approach') of the print."""
+    return pp.delta_58(a, DELTA, R, beta, th, GI, z, mp) + pp.P_44(a, DELTA, beta, th, z, mp) / (8 * mp.pi * GI)
+
+
+def _zeta_for(a, beta, th, P=None, delta=None, GI=None, delta_work=None):
     if P is not None:
         f = lambda z: pp.P_44(a, DELTA, beta, th, z, mp) - P
+    elif delta_work is not None:
+        f = lambda z: _delta_work(a, beta, th, GI, z) - delta_work
     else:
         f = lambda z: pp.delta_58(a, DELTA, R, beta, th, GI, z, mp) - delta
     f0, f1 = f(0), f(1)
@@ -60,13 +67,16 @@ def test_slope_kernels_vs_mpmath_differences(pair, a_txt):
     dP, dd = der.load_slopes(**args)
     _close(dP, mp.diff(lambda s: pp.P_44(s, DELTA, beta, th, zeta, mp), a))
     _close(dd, mp.diff(lambda s: pp.delta_58(s, DELTA, R, beta, th, GI, zeta, mp), a))
-    gP, gd, gdP = der.release_rate_slopes(R=float(R), **args)
+    r = der.release_rate_slopes(R=float(R), **args)
     P_eq = pp.P_44(a, DELTA, beta, th, zeta, mp)
     d_eq = pp.delta_58(a, DELTA, R, beta, th, GI, zeta, mp)
+    dw_eq = _delta_work(a, beta, th, GI, zeta)
     ref_P = mp.diff(lambda s: _G(s, beta, th, _zeta_for(s, beta, th, P=P_eq)), a) / w
     ref_d = mp.diff(lambda s: _G(s, beta, th, _zeta_for(s, beta, th, delta=d_eq, GI=GI)), a) / w
-    _close(gP, ref_P, 1e-8)
-    _close(gd, ref_d, 1e-8)
+    ref_w = mp.diff(lambda s: _G(s, beta, th, _zeta_for(s, beta, th, GI=GI, delta_work=dw_eq)), a) / w
+    _close(r.dG_da_P, ref_P, 1e-8)
+    _close(r.dG_da_delta, ref_d, 1e-8)
+    _close(r.dG_da_delta_work, ref_w, 1e-8)
     # on the equilibrium G = w
     _close(_G(a, beta, th, zeta) / w, 1, 1e-13)
 
@@ -78,16 +88,18 @@ def test_dimensionless_kernel_vs_mpmath(a_txt):
     M = mp.mpf("0.35")
     zeta = 4 * mp.pi * DELTA * th * M / beta
     w = zeta**2 * beta / (4 * mp.pi * R)
-    p, dp, dn, ddn, gP, gd = der.equilibrium_star(a=float(a), gb=float(1 / GI / beta), inv_theta=float(1 / th),
-                                                  m=float(M * th))
+    r = der.equilibrium_star(a=float(a), gb=float(1 / GI / beta), inv_theta=float(1 / th), m=float(M * th))
     Pstar = lambda s: pp.P_44(s, DELTA, beta, th, zeta, mp) * beta / (4 * mp.pi * DELTA * th)
     dnf = lambda s: pp.delta_58(s, DELTA, R, beta, th, GI, zeta, mp) / DELTA
-    _close(p, Pstar(a) * th)
-    _close(dp, mp.diff(Pstar, a) * th)
-    _close(dn, dnf(a))
-    _close(ddn, mp.diff(dnf, a))
+    dwf = lambda s: _delta_work(s, beta, th, GI, zeta) / DELTA
+    _close(r.p, Pstar(a) * th)
+    _close(r.dp_da, mp.diff(Pstar, a) * th)
+    _close(r.delta_over_Delta, dnf(a))
+    _close(r.ddelta_da, mp.diff(dnf, a))
+    _close(r.delta_work_over_Delta, dwf(a))
+    _close(r.ddelta_work_da, mp.diff(dwf, a))
     P_eq = pp.P_44(a, DELTA, beta, th, zeta, mp)
-    _close(gP, mp.diff(lambda s: _G(s, beta, th, _zeta_for(s, beta, th, P=P_eq)), a) / w, 1e-8)
+    _close(r.dG_da_P, mp.diff(lambda s: _G(s, beta, th, _zeta_for(s, beta, th, P=P_eq)), a) / w, 1e-8)
 
 
 @pytest.mark.parametrize("a_txt", ("0.3", "0.8", "1.5", "3"))

@@ -268,3 +268,15 @@ def test_pressure_legends_tell_components_apart(built, name):
         labels = [t.get_text() for t in leg.get_texts()]
         assert labels == ["bounded", "unbounded", "total"]
         assert len({h.get_linestyle() for h in handles}) == 3
+
+
+def test_fig07_draws_the_conjugate_approach(built):
+    """Fig. 7 (c) also draws delta_work at M_R* = 0: it rises with the load everywhere (positive stiffness),
+    and sits at delta + P/(8 pi G_I) = delta/Delta + (gb/2) P_R* from the paper's curve (DERIVATION.md)."""
+    fig, rows = built["fig07"]
+    work = np.array([(float(r[3]), float(r[5])) for r in rows if r[0] == "c_work"])
+    paper = np.array([(float(r[3]), float(r[5])) for r in rows if r[0] == "c" and r[1] == "M = 0"])
+    assert len(work) == len(paper) > 10
+    assert np.all(np.diff(work[:, 0]) * np.diff(work[:, 1]) > 0)
+    gb = figures.FIGURE_GB[math.inf]
+    np.testing.assert_allclose(work[:, 0], paper[:, 0] + gb / 2 * paper[:, 1], rtol=1e-9, atol=1e-12)

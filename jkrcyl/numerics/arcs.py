@@ -5,7 +5,7 @@ Normalised unknown nu = N R beta*/(4 pi Delta) (so n = nu/vartheta is the n of s
 jkrcyl.twopatch; nu stays finite for a rigid cradle).  On every arc, with t = phi - psi,
 
     (delta/Delta) cos(phi) - (1 - cos(phi)) = - int nu(psi) K(phi - psi) dpsi,                  (5.2)
-    K(t) = cos t log(2 - 2 cos t) + (gb - ar/2) cos t + 1 - 1/(2 vartheta) + ar (pi sign(t) sin t - t sin t),
+    K(t) = cos t log(2 - 2 cos t) + gb cos t + 1 - 1/(2 vartheta) + ar (pi sign(t) sin t - t sin t),
 
 gb = (1/G_I)/beta*, ar = alpha*/beta* (alpha* = (kappa - 1)/(2G) - (kappa_I - 1)/(2G_I)); the alpha* part
 pi sin|t| - t sin t is written pi sign(t) sin t - t sin t, valid without wrapping for |t| < 2 pi.  At ar = 0
@@ -25,6 +25,7 @@ import math
 import numpy as np
 from scipy.linalg.lapack import dgesv as _dgesv
 
+from ..generated import green as _green
 from . import arcs_enrich as _en
 
 LOG2 = math.log(2.0)
@@ -93,12 +94,17 @@ def _ell3(t):
 
 
 class Kernel:
-    """Constants of K(t): vartheta (inf allowed), gb = (1/G_I)/beta*, ar = alpha*/beta*."""
+    """Constants of K(t): vartheta (inf allowed), gb = (1/G_I)/beta*, ar = alpha*/beta*.
+
+    k0, k1 are the derived sums of the Michell modes (derive/green.py, generated/green.py); k1 is the one
+    of the paper's delta (mean displacements of the two rims, load at the pin's centre).
+    """
 
     def __init__(self, theta, gb, ar=0.0):
         self.theta, self.gb, self.ar = float(theta), float(gb), float(ar)
-        self.k0 = 1.0 - (0.0 if math.isinf(self.theta) else 0.5 / self.theta)
-        self.k1 = self.gb - 0.5 * self.ar
+        inv_theta = 0.0 if math.isinf(self.theta) else 1.0 / self.theta
+        c = _green.kernel_constants(ar=self.ar, gb=self.gb, inv_theta=inv_theta)
+        self.k0, self.k1 = c.k0, c.k1
 
 
 class Arcs:
@@ -343,17 +349,19 @@ def _unit_q(a, theta, gb, ar, n):
     return lin.scale * lin.q0[:3], lin.scale * lin.q1[:3], lin
 
 
-def star(a, m, theta, gb, ar, n=None, rel_step=1e-5):
+def star(a, m, theta, gb, ar, n=None, rel_step=3e-6):
     """Equilibria in the normalisation of jkrcyl.equilibria at contact parameters a (any alpha*).
 
     m = M vartheta (M_R* for vartheta = inf).  Returns arrays p = P beta*/(4 pi Delta) (P* vartheta),
     dp = dp/da, dn = delta/Delta, ddn = d(delta/Delta)/da, gP = (1/w) dG/da|_P, gd = (1/w) dG/da|_delta
-    (nan when m = 0) and h = h(pi)/Delta.  Griffith: edge coefficient k = m/pi (nu ~ -k/sqrt(eps - |phi|)).
+    (nan when m = 0), h = h(pi)/Delta, and for the work-conjugate approach delta_work = delta + P/(8 pi G_I)
+    (derive/green.py; delta_work/Delta = dn + (gb/2) p): dw, ddw = its slope.
+    Griffith: edge coefficient k = m/pi (nu ~ -k/sqrt(eps - |phi|)).
     Slopes by central differences in a of the fixed-arc unit cases (smooth in a at fixed nodes).
     """
     a = np.atleast_1d(np.asarray(a, dtype=float))
-    kw = m / math.pi
-    keys = ("p", "dp", "dn", "ddn", "gP", "gd", "h")
+    kw, c = m / math.pi, gb / 2            # delta_work/Delta = delta/Delta + c p
+    keys = ("p", "dp", "dn", "ddn", "gP", "gd", "h", "dw", "ddw")
     out = {k: np.empty(a.size) for k in keys}
     # long increasing grids (curves): one solve per point, slopes by differences along the grid (2nd order,
     # ~1e-7 relative at 2000 points); otherwise central differences with two extra solves per point
@@ -381,6 +389,7 @@ def star(a, m, theta, gb, ar, n=None, rel_step=1e-5):
         out["dn"][i], out["ddn"][i] = d, dd
         out["p"][i] = Q0[0] + d * Q1[0]
         out["dp"][i] = D0[0] + d * D1[0] + Q1[0] * dd
+        out["dw"][i], out["ddw"][i] = d + c * out["p"][i], dd + c * out["dp"][i]
         if m > 0:
             out["gd"][i] = 2 * (D0[2] + d * D1[2]) / kw
             out["gP"][i] = 2 * (D0[2] + d * D1[2] - Q1[2] * (D0[0] + d * D1[0]) / Q1[0]) / kw

@@ -14,6 +14,7 @@ from numba import njit
 
 from ..generated import derivatives as _der
 from ..generated import gap as _gap
+from ..generated import green as _green
 from ..generated import load as _load
 from ..generated import special as _special
 from ..generated import state as _state
@@ -27,7 +28,8 @@ Normalised = namedtuple("Normalised", ["inv_theta", "m", "scale"])
 Pressure = namedtuple("Pressure", ["bounded", "unbounded"])
 StarM = namedtuple("StarM", _der.EquilibriumStar._fields + ("h_pi_over_Delta",))
 Star = namedtuple("Star", ["P_star", "dP_star_da", "delta_over_Delta", "ddelta_da", "dG_da_P",
-                           "dG_da_delta", "h_pi_over_Delta"])
+                           "dG_da_delta", "h_pi_over_Delta", "delta_work_over_Delta", "ddelta_work_da"])
+RELEASE_SLOPES = ("dG_da_P", "dG_da_delta")   # (1/w) dG/da: undefined when w = 0
 
 
 # --- parameters -----------------------------------------------------------------------------------
@@ -60,6 +62,15 @@ def full_state(a, *, R, Delta, beta, inv_theta, inv_G_I, zeta):
     fill = _state.full_state_into_parallel if a.size >= PARALLEL_MIN else _state.full_state_into
     fill(out, Delta=Delta, R=R, a=a, beta=beta, inv_G_I=inv_G_I, inv_theta=inv_theta, zeta=zeta)
     return out
+
+
+def approach_work(P, delta, *, inv_G_I):
+    """Work-conjugate approach delta_work = delta + P/(8 pi G_I) [m] (derive/green.py); P [N/m], delta [m]
+    of equal shape."""
+    P, delta = np.broadcast_arrays(np.asarray(P, dtype=float), np.asarray(delta, dtype=float))
+    out = np.empty(P.size)
+    _green.approach_work_into(out, P=_array(P.ravel()), delta=_array(delta.ravel()), inv_G_I=inv_G_I)
+    return out.reshape(P.shape)
 
 
 def pressure(a, phi, *, R, Delta, beta, inv_theta, zeta):
@@ -96,9 +107,11 @@ def star_m(a, *, inv_theta, m, gb):
     a = _array(a)
     out = _empty(_der.EquilibriumStar, a.size)
     _der.equilibrium_star_into(out, a=a, gb=gb, inv_theta=inv_theta, m=m if m > 0 else 1e-150)
-    nan = np.full(a.size, np.nan)
-    return StarM(*out[:4], out.dG_da_P if m > 0 else nan, out.dG_da_delta if m > 0 else nan,
-                 gap_pi(a, Delta=1.0, beta=1.0, inv_theta=inv_theta, zeta=4 * math.pi * m))
+    fields = {f: getattr(out, f) for f in _der.EquilibriumStar._fields}
+    if m <= 0:
+        fields.update({f: np.full(a.size, np.nan) for f in RELEASE_SLOPES})
+    return StarM(**fields, h_pi_over_Delta=gap_pi(a, Delta=1.0, beta=1.0, inv_theta=inv_theta,
+                                                    zeta=4 * math.pi * m))
 
 
 def star(a, M, theta, gb):
@@ -107,10 +120,12 @@ def star(a, M, theta, gb):
     s = star_m(a, inv_theta=n.inv_theta, m=n.m, gb=gb)
     return Star(P_star=s.p / n.scale, dP_star_da=s.dp_da / n.scale, delta_over_Delta=s.delta_over_Delta,
                 ddelta_da=s.ddelta_da, dG_da_P=s.dG_da_P, dG_da_delta=s.dG_da_delta,
-                h_pi_over_Delta=s.h_pi_over_Delta)
+                h_pi_over_Delta=s.h_pi_over_Delta, delta_work_over_Delta=s.delta_work_over_Delta,
+                ddelta_work_da=s.ddelta_work_da)
 
 
-STAR_FIELDS = {"P_star": 0, "dP_star_da": 1, "delta_over_Delta": 2, "ddelta_da": 3}
+STAR_FIELDS = {"P_star": 0, "dP_star_da": 1, "delta_over_Delta": 2, "ddelta_da": 3, "delta_work_over_Delta": 4,
+               "ddelta_work_da": 5}
 
 
 @njit(cache=True)
@@ -119,7 +134,7 @@ def star_residual_nb(a, args):
     k as :data:`STAR_FIELDS` (P* fields divide the kernel's p by scale, as :func:`star`)."""
     inv_theta, m, gb, k, scale, target = args
     r = _der.equilibrium_star(a=a, gb=gb, inv_theta=inv_theta, m=m)
-    value = (r.p, r.dp_da, r.delta_over_Delta, r.ddelta_da)[k]
+    value = (r.p, r.dp_da, r.delta_over_Delta, r.ddelta_da, r.delta_work_over_Delta, r.ddelta_work_da)[k]
     return (value / scale if k < 2 else value) - target
 
 
