@@ -5,6 +5,7 @@
     jkrcyl curve --E 1e6 --nu 0.45 --E-I inf --nu-I 0.3 --R 0.01 --Delta 1e-4 --w 0.05
     jkrcyl adherence --M 0.3 --theta 1      # fixed-load and fixed-grip adherence, zero-load contact
     jkrcyl two-patch --M 0.4 --theta 1      # two-patch branches (top contact formed) as CSV or JSON
+    jkrcyl two-patch --figure docs/confined.png   # load-approach paths through the confined regime
     jkrcyl atlas --out atlas                # regime map over (M, vartheta): atlas.npz, atlas.csv, PNG, PDF
 
 Errors are one line on stderr naming the bad parameter; exit status 2.
@@ -109,17 +110,30 @@ def _cmd_curve(args):
 
 def _cmd_two_patch(args):
     from . import twopatch
+    if args.figure:
+        if args.M is not None or getattr(args, "E", None) is not None:
+            raise ValueError("figure: draws the M values of --figure-M (drop --M and the physical inputs)")
+        try:
+            Ms = [float(x) for x in args.figure_M.split(",") if x.strip()]
+        except ValueError:
+            raise ValueError(f"figure-M: not a comma-separated list of numbers: {args.figure_M!r}") from None
+        if not Ms:
+            raise ValueError("figure-M: give at least one M")
+        _, th, gb = eq._params(Ms[0], args.theta, args.gb)
+        print(f"wrote {twopatch.draw_confined(args.figure, Ms=Ms, theta=th, gb=gb)}")
+        return 0
     M, th, gb = _resolve(args)
     if args.n is not None and args.n < 4:
         raise ValueError(f"n must be >= 4, got {args.n}")
-    bs = twopatch.branches(M, th, gb=gb, n=args.n)
+    ar = getattr(args, "alpha_ratio", 0.0)           # physical inputs: alpha*/beta* of the pair (any alpha*)
+    bs = twopatch.branches(M, th, gb=gb, n=args.n, alpha_ratio=ar)
     clean = lambda v: [None if not math.isfinite(x) else x for x in v.tolist()]
     if args.format == "json":
-        json.dump({"M": M, "theta": th, "gb": gb, "branches": [
+        json.dump({"M": M, "theta": th, "gb": gb, "alpha_ratio": ar, "branches": [
             {"ends": list(b.ends), **{k: clean(v) for k, v in b.table().items()}} for b in bs]}, sys.stdout)
         sys.stdout.write("\n")
         return 0
-    print(f"# M={M!r} theta={th!r} gb={gb!r} branches={len(bs)}")
+    print(f"# M={M!r} theta={th!r} gb={gb!r} alpha_ratio={ar!r} branches={len(bs)}")
     for i, b in enumerate(bs):
         t = b.table()
         print(f"# branch {i}: ends {b.ends[0]} -> {b.ends[1]}")
@@ -147,7 +161,7 @@ def _cmd_adherence(args):
     ar = getattr(args, "alpha_ratio", 0.0)
     load = eq.adherence(M, th, "load", gb=gb, alpha_ratio=ar)
     grip = eq.adherence(M, th, "grip", gb=gb, alpha_ratio=ar)
-    if ar:   # (8.1) and the two-patch tracer are alpha* = 0 results: zero load from the solver, no confined part
+    if ar:   # (8.1) is an alpha* = 0 result: the zero-load contact from the solver
         a0 = eq.solve_load(M, th, 0.0, gb=gb, alpha_ratio=ar)
         Mmax = math.inf
     else:
@@ -155,9 +169,9 @@ def _cmd_adherence(args):
         a0 = zero_load_contact(M, th)
         Mmax = zero_load_max_M(th)[0]
     confined = None
-    if not math.isinf(th) and M > 0 and not ar:
-        from . import twopatch
-        confined = _confined_dict(twopatch.confined_events(M, th, gb=gb))
+    if not math.isinf(th) and M > 0 and not args.no_confined:
+        from . import twopatch           # any alpha* (the arc engine); ~2 s at alpha* = 0, ~30-60 s otherwise
+        confined = _confined_dict(twopatch.confined_events(M, th, gb=gb, alpha_ratio=ar))
     if args.format == "json":
         json.dump({"M": M, "theta": th, "gb": gb, "confined": confined, "load": [_point_dict(p) for p in load],
                    "grip": [_point_dict(p) for p in grip], "zero_load_a0": a0,
@@ -178,7 +192,8 @@ def _cmd_adherence(args):
               f"delta/Delta = {p.delta_over_Delta:.10g}  feasible = {p.feasible}")
     if not grip:
         print("  none")
-    print("zero-load contact (8.1): " + (", ".join(f"a0 = {x:.10g}" for x in a0) if a0 else "none"))
+    print(f"zero-load contact ({'solver, P* = 0' if ar else '8.1'}): "
+          + (", ".join(f"a0 = {x:.10g}" for x in a0) if a0 else "none"))
     if not math.isinf(Mmax):
         print(f"  (8.1) has roots for M <= {Mmax:.10g}")
     if confined:
@@ -276,10 +291,16 @@ def build_parser():
     c.add_argument("--output", "-o", default=None, help="file to write (default: stdout)")
     c.set_defaults(func=_cmd_curve)
     a = sub.add_parser("adherence", help="adherence forces and the zero-load contact",
-                       description="Fixed-load adherence (P* minima), fixed-grip points (d delta/da = 0) "
-                                   "and the zero-load contact parameters of (8.1).")
+                       description="Fixed-load adherence (P* minima), fixed-grip points (d delta/da = 0), "
+                                   "the zero-load contact parameters of (8.1) (the solver's P* = 0 roots when "
+                                   "alpha* != 0) and what slow pulling does in the hole (the confined regime: "
+                                   "detachment and transfer to the top, zipping into full contact, or the top "
+                                   "contact forming first; jkrcyl.twopatch.REGIMES), for any material pair.")
     _add_problem(a)
     a.add_argument("--format", choices=("text", "json"), default="text", help="output format (default text)")
+    a.add_argument("--no-confined", action="store_true",
+                   help="skip the confined-regime analysis (jkrcyl.twopatch.confined_events: ~2 s at alpha* = 0, "
+                        "30-60 s for a pair with alpha* != 0)")
     a.set_defaults(func=_cmd_adherence)
     tw = sub.add_parser("two-patch", help="two-patch equilibria (second contact at the top of the hole)",
                         description="Every branch of two-patch equilibria (bottom arc a, top arc a_top) at (M, "
@@ -290,6 +311,11 @@ def build_parser():
     _add_problem(tw)
     tw.add_argument("--n", type=int, default=None, help="points per branch (default: continuation steps)")
     tw.add_argument("--format", choices=("csv", "json"), default="csv", help="output format (default csv)")
+    tw.add_argument("--figure", default=None, metavar="FILE",
+                    help="instead: draw the load-approach paths through the confined regime (docs/confined.png) "
+                         "for the M values of --figure-M at --theta, --gb (alpha* = 0)")
+    tw.add_argument("--figure-M", default=",".join(f"{m:g}" for m in (0.3, 0.4, 0.5, 0.8)),
+                    help="comma-separated M values of --figure (default 0.3,0.4,0.5,0.8)")
     tw.set_defaults(func=_cmd_two_patch)
     from . import cli_forward
     cli_forward.register(sub, _float)

@@ -252,17 +252,18 @@ def solve(M, theta, eps_top=None, eps=None, gb=None, guess=None, n=N_NODES, tol=
 
 
 # --- stability ------------------------------------------------------------------------------------
-def hessian(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, h=1e-6, alpha_ratio=0.0):
+def hessian(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, h=1e-6, alpha_ratio=0.0, lin=None):
     """3x3 Hessian of Pi* in (eps, eps_top, delta/Delta) at fixed load (the last row/column drops at fixed grip).
 
     d Pi*/d eps_i = 2 vartheta (pi^2 k_i^2 - M^2), d Pi*/d delta = P* - P*_applied, so the entries are
     4 vartheta pi^2 k_i dk_i/d eps_j (central differences at fixed delta), 4 vartheta pi^2 k_i k1_i and
     dP*/d delta = q1[P].  The eps block is symmetrised (Maxwell; the asymmetry is a check in the tests).
+    lin: the fixed-arc pieces at (eps, eps_top) if already computed (e.g. the state's own).
     """
     d = delta_over_Delta
     ar = alpha_ratio
     k = lambda e, et: (lambda L: L.q0[2:4] + d * L.q1[2:4])(_linear(e, et, theta, gb, n, ar))
-    lin = _linear(eps, eps_top, theta, gb, n, ar)
+    lin = _linear(eps, eps_top, theta, gb, n, ar) if lin is None else lin
     kk = lin.q0[2:4] + d * lin.q1[2:4]
     dk = np.empty((2, 2))
     h0, h1 = min(h, 0.1 * eps), min(h, 0.1 * eps_top)        # relative steps near an axis
@@ -281,9 +282,9 @@ def hessian(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, h=1e-6, alp
     return H, He
 
 
-def stability(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, alpha_ratio=0.0):
+def stability(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, alpha_ratio=0.0, lin=None):
     """(stable_load, stable_grip): positive definiteness of the 3x3 and the 2x2 Hessians."""
-    H, _ = hessian(eps, eps_top, delta_over_Delta, M, theta, gb, n, alpha_ratio=alpha_ratio)
+    H, _ = hessian(eps, eps_top, delta_over_Delta, M, theta, gb, n, alpha_ratio=alpha_ratio, lin=lin)
     grip = bool(np.all(np.linalg.eigvalsh(H[:2, :2]) > 0))
     load = bool(np.all(np.linalg.eigvalsh(H) > 0))
     return load, grip
@@ -292,6 +293,7 @@ def stability(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, alpha_rat
 # --- branches -----------------------------------------------------------------------------------------
 SCAN_TOP = (0.05, 0.3, 0.7, 1.2, 1.8, 2.5)    # eps_top rows scanned for branches not reached otherwise
 SCAN_POINTS = 32
+H_MAX = 10              # longest continuation step, in units of h0 (log half-angles)
 SCAN_GAP = 0.1          # rows stop this far from full contact: with resolved gaps no branch hugs that line
                         # (F keeps one sign there, tending to 0 linearly in the gap; see the tests)
 
@@ -389,21 +391,41 @@ def _near(x, polylines, tol):
     return False
 
 
-def onset_angles(M, theta, gb=None, alpha_ratio=0.0):
-    """Half-angles eps where a single-patch equilibrium has h(pi) = 0 (sub- and super-critical branches)."""
+def _crosses_row(polylines, row, lo, hi):
+    """Does a traced polyline (log half-angles) cross the row u[1] = row with lo <= u[0] <= hi?"""
+    for p in polylines:
+        y0, y1 = p[:-1, 1] - row, p[1:, 1] - row
+        for j in np.nonzero((y0 * y1 <= 0) & (y0 != y1))[0]:
+            x = p[j, 0] + (p[j + 1, 0] - p[j, 0]) * y0[j] / (y0[j] - y1[j])
+            if lo <= x <= hi:
+                return True
+    return False
+
+
+def onset_angles(M, theta, gb=None, alpha_ratio=0.0, segments=None):
+    """Half-angles eps where a single-patch equilibrium has h(pi) = 0 (sub- and super-critical branches).
+
+    segments: the single-patch curves (jkrcyl.equilibria.Curve, one per regime) to scan, if already computed."""
+    from . import equilibria as eq
+    ar = alpha_ratio
+    gb = eq.default_gb(theta) if gb is None else gb
+    if segments is None:
+        # alpha* != 0: each grid point is a collocation solve (numerics.arcs), so a coarser grid
+        n = ONSET_GRID if ar == 0.0 else ONSET_GRID_ALPHA
+        segments = [eq.curve(M, theta, regime, n=n, gb=gb, alpha_ratio=ar) for regime in eq.REGIMES]
+    return [2 * math.atan(a) for a in _segment_roots(segments, "h_pi_over_Delta", M, theta, gb, ar)]
+
+
+def _segment_roots(segments, field, M, theta, gb, ar):
+    """Roots in a of a Curve field (sign changes on each curve's grid, refined by Brent on single points)."""
     from . import equilibria as eq
     from scipy.optimize import brentq
     out = []
-    ar = alpha_ratio
-    gb = eq.default_gb(theta) if gb is None else gb
-    # alpha* != 0: each grid point is a collocation solve (numerics.arcs), so a coarser grid
-    n = ONSET_GRID if ar == 0.0 else ONSET_GRID_ALPHA
-    for regime in eq.REGIMES:
-        a = eq._grid(regime, theta, n, eq._ac(theta, gb, ar))
-        h = eq.curve(M, theta, regime, a=a, gb=gb, alpha_ratio=ar).h_pi_over_Delta
-        hp = lambda x: float(eq.curve(M, theta, regime, a=np.array([x]), gb=gb, alpha_ratio=ar).h_pi_over_Delta[0])
-        for i in np.nonzero(np.sign(h[:-1]) * np.sign(h[1:]) < 0)[0]:
-            out.append(2 * math.atan(brentq(hp, a[i], a[i + 1], xtol=1e-16, rtol=1e-15)))
+    for c in segments:
+        v = getattr(c, field)
+        f = lambda x: float(getattr(eq.curve(M, theta, c.regime, a=np.array([x]), gb=gb, alpha_ratio=ar), field)[0])
+        for i in np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0]:
+            out.append(brentq(f, c.a[i], c.a[i + 1], xtol=1e-16, rtol=1e-15))
     return sorted(out)
 
 
@@ -413,19 +435,20 @@ ONSET_GRID_ALPHA = 200
 
 def _trace_both(f, clip, x0, t0, h0):
     """Trace from x0 in direction t0 and, unless that closes a loop, in the opposite direction; join."""
-    fw = _cont.trace(f, x0, t0, _domain, clip, h0=h0, h_max=10 * h0)
+    fw = _cont.trace(f, x0, t0, _domain, clip, h0=h0, h_max=H_MAX * h0)
     if fw.end == "loop":
         return fw.points, ("loop", "loop")
-    bw = _cont.trace(f, x0, -np.asarray(t0, float), _domain, clip, h0=h0, h_max=10 * h0)
+    bw = _cont.trace(f, x0, -np.asarray(t0, float), _domain, clip, h0=h0, h_max=H_MAX * h0)
     pts = np.vstack([bw.points[::-1], fw.points[1:]])
     return pts, (bw.boundary or bw.end, fw.boundary or fw.end)
 
 
-def branches(M, theta, gb=None, n=None, nodes=N_NODES, h0=0.05, alpha_ratio=0.0):
+def branches(M, theta, gb=None, n=None, nodes=N_NODES, h0=0.05, alpha_ratio=0.0, onsets=None):
     """Every branch of two-patch equilibria at (M, vartheta): a list of :class:`TwoPatchCurve`.
 
     n: points per branch, equally spaced in arclength in the half-angle plane (default: the continuation
-    steps); nodes: collocation nodes per arc (alpha* != 0: at least N_NODES_ALPHA); alpha_ratio = alpha*/beta*.
+    steps); nodes: collocation nodes per arc (alpha* != 0: at least N_NODES_ALPHA); alpha_ratio = alpha*/beta*;
+    onsets: the half-angles of :func:`onset_angles` if already known.
 
     Starts: each single-patch onset h(pi) = 0 (a_top -> 0), its mirror (a -> 0), then the roots of F along
     the rows eps_top in SCAN_TOP (curves touching neither axis: loops, branches ending in full contact).
@@ -440,7 +463,7 @@ def branches(M, theta, gb=None, n=None, nodes=N_NODES, h0=0.05, alpha_ratio=0.0)
     f = lambda u: fx(np.exp(np.minimum(u, 1.2)))      # exp(1.2) > pi: stray iterates give nan, not overflow
     clip = _clipper(f)
     found = []          # (points in u, ends)
-    for e in onset_angles(M, th, gb, ar):
+    for e in (onset_angles(M, th, gb, ar) if onsets is None else onsets):
         for k, label in ((0, "single"), (1, "mirror")):     # a_top -> 0 at the onset, a -> 0 at its mirror
             u0 = np.full(2, LOG_AXIS)
             u0[k] = math.log(e)
@@ -448,7 +471,7 @@ def branches(M, theta, gb=None, n=None, nodes=N_NODES, h0=0.05, alpha_ratio=0.0)
             u, ok = _cont.project(f, u0, direction=along)
             if not ok or not _domain(u) or _near(u, [p for p, _ in found], 2 * h0):
                 continue
-            path = _cont.trace(f, u, np.eye(2)[1 - k], _domain, clip, h0=h0, h_max=10 * h0)
+            path = _cont.trace(f, u, np.eye(2)[1 - k], _domain, clip, h0=h0, h_max=H_MAX * h0)
             found.append((np.vstack([u, path.points[1:]]), (label, path.boundary or path.end)))
     for et in SCAN_TOP:
         top = math.pi - et - SCAN_GAP
@@ -457,6 +480,8 @@ def branches(M, theta, gb=None, n=None, nodes=N_NODES, h0=0.05, alpha_ratio=0.0)
         es = np.linspace(1e-3, top, SCAN_POINTS)
         v = np.array([fx(np.array([e, et])) for e in es])
         for i in np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0]:
+            if _crosses_row([p for p, _ in found], math.log(et), math.log(es[i]), math.log(es[i + 1])):
+                continue                                # a traced branch already passes through this bracket
             u, ok = _cont.project(f, np.log([0.5 * (es[i] + es[i + 1]), et]), direction=np.array([1.0, 0.0]))
             if not ok or not _domain(u) or _near(u, [p for p, _ in found], 2 * h0):
                 continue
@@ -486,7 +511,7 @@ def _resample(f, points, n):
 def _curve(points, ends, M, th, gb, n, ar=0.0):
     from .equilibria import _ac
     states = [equilibrium_state(e, et, M, th, gb, n, ar) for e, et in points]
-    stab = np.array([stability(s.eps, s.eps_top, s.delta_over_Delta, M, th, gb, n, ar) for s in states])
+    stab = np.array([stability(s.eps, s.eps_top, s.delta_over_Delta, M, th, gb, n, ar, lin=s._lin) for s in states])
     ac = _ac(th, gb, ar)
     arr = lambda k: np.array([getattr(s, k) for s in states])
     a, at = np.tan(points[:, 0] / 2), np.tan(points[:, 1] / 2)
@@ -533,14 +558,19 @@ class FullContact:
 def _full_contact_law(theta, gb, ar=0.0):
     """(N0, c) with n = N0 + N1 cos(phi) and delta/Delta = -1 + c P* in full contact.
 
-    The kernel K of (5.2) (numerics.arcs, any alpha*) is a convolution on the circle, so the modes 1 and
-    cos(phi) of the right-hand side (delta/Delta) cos(phi) - (1 - cos(phi)) are answered mode by mode:
-    int K dt = -pi/vartheta + 2 pi ar and int K cos(t) dt = pi (gb - 1/2) (the alpha* parts
-    -pi ar/2 + pi ar/2 of the cos mode cancel), so N0 = -1/(pi (1 - 2 vartheta ar)) and
-    delta/Delta + 1 = -vartheta (gb - 1/2) P* (c = 0: the identical-material degeneracy gb = 1/2).
+    The kernel K(t) = cos t log(2 - 2 cos t) + k1 cos t + k0 + ar (pi sin|t| - t sin t) of (5.2)
+    (numerics.arcs.Kernel, any alpha*) is a convolution on the circle, so the modes 1 and cos(phi) of the
+    right-hand side (delta/Delta) cos(phi) - (1 - cos(phi)) are answered mode by mode (nu = vartheta n):
+    int K dt = 2 pi (k0 - 1 + ar) (= -pi/vartheta + 2 pi ar) and int K cos(t) dt = pi (k1 - 1/2 + ar/2),
+    so N0 = 1/(vartheta int K dt) = -1/(pi (1 - 2 vartheta ar)) and delta/Delta + 1 = -vartheta (k1 - 1/2 + ar/2) P*
+    (the constants k0, k1 are the engine's, so the law follows its definition of delta; at alpha* = 0,
+    k1 = gb: c = 0 is the identical-material degeneracy gb = 1/2).
     tests/test_twopatch.py checks both integrals by quadrature and the law as the limit of closing gaps.
     """
-    return -1.0 / (math.pi * (1.0 - 2.0 * theta * ar)), -theta * (gb - 0.5)
+    kn = _arcs.Kernel(theta, gb, ar)
+    mode0 = 2 * math.pi * (kn.k0 - 1.0 + kn.ar)
+    mode1 = math.pi * (kn.k1 - 0.5 + 0.5 * kn.ar)
+    return 1.0 / (theta * mode0), -theta * mode1 / math.pi
 
 
 def full_contact(theta, P_star=None, delta_over_Delta=None, gb=None, alpha_ratio=0.0):
@@ -629,15 +659,21 @@ class ConfinedEvents:
         return f"top contact forms at P* = {self.P_top_contact:.6g}: {REGIMES[self.regime]}"
 
 
-def _load_path(M, th, gb, ar=0.0):
-    """Stable, feasible single-patch states and the first event when P* decreases from the start."""
+def _segments(M, th, gb, ar=0.0):
+    """The single-patch branches on the load-path grid (jkrcyl.equilibria.curve, one per regime)."""
     from . import equilibria as eq
     n = LOAD_PATH_GRID if ar == 0.0 else LOAD_PATH_GRID_ALPHA
-    segs = [eq.curve(M, th, regime, n=n, gb=gb, alpha_ratio=ar) for regime in eq.REGIMES]
+    return [eq.curve(M, th, regime, n=n, gb=gb, alpha_ratio=ar) for regime in eq.REGIMES]
+
+
+def _load_path(M, th, gb, ar=0.0, segs=None):
+    """Stable, feasible single-patch states and the first event when P* decreases from the start."""
+    from . import equilibria as eq
+    segs = _segments(M, th, gb, ar) if segs is None else segs
     if ar == 0.0:
         a0s = eq.zero_load_contact(M, th)
-    else:               # (8.1) is the alpha* = 0 zero-load law: the solver's roots of P* = 0 instead
-        a0s = sorted(x for r in eq.REGIMES for x in eq.solve_load(M, th, 0.0, r, gb=gb, alpha_ratio=ar))
+    else:               # (8.1) is the alpha* = 0 zero-load law: the solver's roots of P* = 0 on the same grid
+        a0s = _segment_roots(segs, "P_star", M, th, gb, ar)
     start = None
     for c in segs:
         ok = c.stable_load & c.feasible
@@ -685,16 +721,19 @@ def confined_events(M, theta, gb=None, n=N_NODES, alpha_ratio=0.0):
 
     alpha_ratio = alpha*/beta* != 0: every single-patch quantity from the solver (jkrcyl.numerics.arcs)."""
     M, th, gb, ar = _params(M, theta, gb, alpha_ratio)
-    bs = tuple(branches(M, th, gb, nodes=n, alpha_ratio=ar))
+    segs = _segments(M, th, gb, ar)
+    # alpha* = 0: the onsets on their own grid (closed form, cheap); otherwise on the load path's curves
+    on = onset_angles(M, th, gb, ar, segments=None if ar == 0.0 else segs)
+    bs = tuple(branches(M, th, gb, nodes=n, alpha_ratio=ar, onsets=on))
     onsets = []
     from . import equilibria as eq
     ac = eq._ac(th, gb, ar)
-    for e in onset_angles(M, th, gb, ar):
+    for e in on:
         a = math.tan(e / 2)
         regime = "sub-critical" if a < ac else "super-critical"
         c = eq.curve(M, th, regime, a=np.array([a]), gb=gb, alpha_ratio=ar)
         onsets.append((e, float(c.P_star[0]), float(c.delta_over_Delta[0]), bool(c.stable_load[0])))
-    path = _load_path(M, th, gb, ar)
+    path = _load_path(M, th, gb, ar, segs)
     grip_pts = [p for p in eq.adherence(M, th, "grip", gb=gb, alpha_ratio=ar) if p.kind == "min" and p.feasible]
     any_load = any(b.stable_load.any() for b in bs)
     any_grip = any(b.stable_grip.any() for b in bs)
@@ -727,61 +766,93 @@ def confined_events(M, theta, gb=None, n=N_NODES, alpha_ratio=0.0):
 
 
 # --- figure: load-approach paths through the confined regime ------------------------------------------
-def draw_confined(path, Ms=(0.3, 0.4, 0.5, 0.8), theta=1.0, gb=None):
-    """docs/confined.png: P* against delta/Delta for each M -- single patch at the bottom and (mirrored) at
-    the top, two-patch branches, full contact -- solid where stable under load, dashed where stable only
-    under grip, dotted where unstable, grey where the gap inequality fails; the load path's jump marked."""
+FIGURE_MS = (0.3, 0.4, 0.5, 0.8)
+# series: (label, colour, marker) -- viridis at strictly ordered luminance (dark, mid, light) plus a marker,
+# so the families stay apart in greyscale; the line style carries stability (below)
+_SERIES = (("single patch, bottom", 0.0, "o"), ("single patch, top (mirror)", 0.42, "s"),
+           ("two patches", 0.78, "^"))
+_STABILITY = (("-", 1.6, "stable under load (and grip)"), ("--", 1.2, "stable under grip only"),
+              (":", 1.4, "unstable"))
+_INFEASIBLE = "0.82"      # light grey, thin: the gap inequality h >= 0 fails
+
+
+def draw_confined(path, Ms=FIGURE_MS, theta=1.0, gb=None):
+    """docs/confined.png (``jkrcyl two-patch --figure docs/confined.png``): P* against delta/Delta for each
+    M -- single patch at the bottom and (mirrored) at the top, two-patch branches, full contact -- solid where
+    stable under load, dashed where stable only under grip, dotted where unstable, light grey where the gap
+    inequality fails; the load path's start (o), its event (x: fold; diamond: gap closes at pi) and the
+    jump at fixed load (arrow).  alpha* = 0 (closed-form single patch).  Returns the path."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
     from . import equilibria as eq
     th = _check_theta(theta)
-    gb = eq.default_gb(th) if gb is None else gb
-    fig, axs = plt.subplots(1, len(Ms), figsize=(4.2 * len(Ms), 4.4), sharey=True)
-    for ax, M in zip(np.atleast_1d(axs), Ms):
+    gb = eq.default_gb(th) if gb is None else finite_scalar("gb", gb, low=0.0)
+    cmap = plt.get_cmap("viridis")
+    colour = {lab: cmap(x) for lab, x, _ in _SERIES}
+    marker = {lab: m for lab, _, m in _SERIES}
+    Ms = [finite_scalar("M", M, low=0.0, low_open=True) for M in Ms]
+    fig, axs = plt.subplots(1, len(Ms), figsize=(3.9 * len(Ms), 4.6), sharey=True, squeeze=False)
+    axs = axs[0]
+    for ax, M in zip(axs, Ms):
         ev = confined_events(M, th, gb)
         for regime in eq.REGIMES:
             c = eq.curve(M, th, regime, n=1500, gb=gb)
-            for sign, color, label in ((1, "C0", "single patch, bottom"), (-1, "C1", "single patch, top (mirror)")):
+            for sign, lab in ((1, _SERIES[0][0]), (-1, _SERIES[1][0])):
                 d = c.delta_over_Delta if sign == 1 else -2 - c.delta_over_Delta
-                _styled(ax, d, sign * c.P_star, c.stable_load, c.stable_grip, c.feasible, color,
-                        label if regime == "sub-critical" else None)
-        for k, b in enumerate(ev.branches):
-            _styled(ax, b.delta_over_Delta, b.P_star, b.stable_load, b.stable_grip, b.feasible, "C2",
-                    "two patches" if k == 0 else None)
+                _styled(ax, d, sign * c.P_star, c.stable_load, c.stable_grip, c.feasible, colour[lab], marker[lab])
+        for b in ev.branches:
+            lab = _SERIES[2][0]
+            _styled(ax, b.delta_over_Delta, b.P_star, b.stable_load, b.stable_grip, b.feasible, colour[lab],
+                    marker[lab])
         fc = [full_contact(th, P_star=p, gb=gb) for p in (-3.0, 3.0)]
-        ax.plot([f.delta_over_Delta for f in fc], [f.P_star for f in fc], "k-.", lw=1, label="full contact")
+        ax.plot([f.delta_over_Delta for f in fc], [f.P_star for f in fc], color="k", ls="-.", lw=1)
         for e, P, d, _ in ev.onsets:
-            ax.plot([d, -2 - d], [P, -P], "kD", ms=4, label="gap closes at pi" if e == ev.onsets[0][0] else None)
+            ax.plot([d, -2 - d], [P, -P], "kD", ms=4.5, mfc="w")
         _mark_jump(ax, ev, M, th, gb)
         ax.set_xlim(-2.8, 0.8)
         ax.set_ylim(-2.0, 2.0)
-        ax.axhline(0, color="0.8", lw=0.5)
-        ax.set_title(f"M = {M:g}, vartheta = {th:g}: {ev.regime}", fontsize=9)
-        ax.set_xlabel("delta / Delta")
-    np.atleast_1d(axs)[0].set_ylabel("P*")
-    np.atleast_1d(axs)[0].text(0.02, 0.98, "solid: stable under load; dashed: under grip only; dotted: unstable;\n"
-                               "grey: gap h < 0; o start (zero load), x adherence point, arrow: jump at fixed load",
-                               transform=np.atleast_1d(axs)[0].transAxes, fontsize=6, va="top")
-    np.atleast_1d(axs)[0].legend(fontsize=6, loc="lower left")
-    fig.tight_layout()
+        ax.axhline(0, color="0.9", lw=0.5, zorder=0)
+        ax.set_title(f"$M = {M:g}$: {ev.regime}", fontsize=10)
+        ax.set_xlabel("$\\delta/\\Delta$")
+    axs[0].set_ylabel("$P^*$")
+    handles = [Line2D([], [], color=colour[lab], marker=m, mfc="none", ls="none", label=lab) for lab, _, m in _SERIES]
+    handles += [Line2D([], [], color="k", ls="-.", lw=1, label="full contact")]
+    handles += [Line2D([], [], color="k", ls=ls, lw=lw, label=txt) for ls, lw, txt in _STABILITY]
+    handles += [Line2D([], [], color=_INFEASIBLE, lw=2, label="gap $h < 0$ somewhere (infeasible)")]
+    handles += [Line2D([], [], color="k", marker="o", ls="none", ms=5, label="start: zero-load contact"),
+                Line2D([], [], color="k", marker="x", ls="none", ms=7, label="fold at fixed load (adherence)"),
+                Line2D([], [], color="k", marker="D", mfc="w", ls="none", ms=5, label="gap closes at $\\phi = \\pi$"),
+                Line2D([], [], color="k", marker=r"$\rightarrow$", ls="none", ms=12, label="jump at fixed load")]
+    fig.legend(handles=handles, loc="lower center", ncol=6, fontsize=7.5, frameon=False)
+    fig.suptitle(f"Load-approach paths through the confined regime: $\\vartheta = {th:g}$, "
+                 f"$(1/G_I)/\\beta^* = {gb:.4g}$, $\\alpha^*/\\beta^* = 0$", fontsize=11)
+    fig.tight_layout(rect=(0, 0.1, 1, 1))
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
 
 
-def _styled(ax, x, y, load, grip, feasible, color, label):
-    for mask, style, lw in ((feasible & load, "-", 1.6), (feasible & grip & ~load, "--", 1.2),
-                            (feasible & ~grip & ~load, ":", 1.2)):
-        ax.plot(np.where(mask, x, np.nan), np.where(mask, y, np.nan), style, color=color, lw=lw,
-                label=label if style == "-" else None)
-    ax.plot(np.where(~feasible, x, np.nan), np.where(~feasible, y, np.nan), "-", color="0.85", lw=0.8)
+def _styled(ax, x, y, load, grip, feasible, color, marker=None):
+    """One series: the stability styles where feasible (+ sparse markers), light grey where infeasible."""
+    x, y = np.asarray(x, float), np.asarray(y, float)
+    for (style, lw, _), mask in zip(_STABILITY, (feasible & load, feasible & grip & ~load, feasible & ~grip & ~load)):
+        ax.plot(np.where(mask, x, np.nan), np.where(mask, y, np.nan), ls=style, color=color, lw=lw)
+    ax.plot(np.where(~feasible, x, np.nan), np.where(~feasible, y, np.nan), "-", color=_INFEASIBLE, lw=0.8, zorder=0)
+    if marker is not None:           # markers on the feasible part, about every 0.6 in delta/Delta-P* distance
+        ok = feasible & (np.abs(y) <= 2.0) & (x >= -2.8) & (x <= 0.8)
+        if ok.any():
+            xs, ys = x[ok], y[ok]
+            s = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(xs), np.diff(ys)))])
+            k = np.unique(np.searchsorted(s, np.arange(0.3, s[-1], 0.6)).clip(0, xs.size - 1))
+            ax.plot(xs[k], ys[k], ls="none", marker=marker, mfc="none", color=color, ms=4.5)
 
 
 def _mark_jump(ax, ev, M, th, gb):
     """The load path: start (o), the event (x) and the jump at fixed load (arrow)."""
     from . import equilibria as eq
-    ax.plot(*_state_of(ev.start[0], M, th, gb), "ko", ms=4)
+    ax.plot(*_state_of(ev.start[0], M, th, gb), "ko", ms=4.5)
     if ev.regime in ("detachment", "zip-full"):
         pts = [p for r in eq.REGIMES for p in eq.stationary_points(M, th, "load", r, gb=gb)
                if abs(p.P_star - ev.P_fold) < 1e-9]
@@ -795,7 +866,8 @@ def _mark_jump(ax, ev, M, th, gb):
             ok = [x for x in a if eq.curve(M, th, a=np.array([x]), gb=gb).stable_load[0]]
             x1 = -2 - float(eq.curve(M, th, a=np.array([ok[-1]]), gb=gb).delta_over_Delta[0]) if ok else x0
         ax.plot([x0], [P], "kx", ms=7)
-        ax.annotate("", xy=(x1, P), xytext=(x0, P), arrowprops=dict(arrowstyle="->", color="k", lw=1), annotation_clip=False)
+        ax.annotate("", xy=(x1, P), xytext=(x0, P), arrowprops=dict(arrowstyle="->", color="k", lw=1),
+                    annotation_clip=False)
 
 
 def _state_of(a, M, th, gb):
