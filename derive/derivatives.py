@@ -145,36 +145,74 @@ def derive(report):
                   NEW, "as at fixed grip, with P eliminated through delta + P/(8 pi G_I) = delta_work "
                   "(derive.green); dG/da|_delta_work by sympy differentiation")
     _check(report, K_P, K_d, K_w, dG_P, dG_d, dG_w, dG_dP, dP, dd)
-    _stability_sign(report, K_P)
+    dK_dP = _stability_sign(report, K_P)
+    dG_dP_proved = 2 * dK_dP / sp.sqrt(4 * w_ / (sp.pi * A_))     # (1/w) dG/dP = 2 (dK/dP)/K, K = K_Griffith
+    _check_release_form(report, dG_dP, dG_dP_proved)
 
     ks = [Kernel("load_slopes", (("dP_da", dP), ("ddelta_da", dd)),
                  "dP/da [N/m] and d delta/da [m] along the equilibrium curve (sympy derivatives of (4.4)\n"
-                 "and of the approach (5.8)).  Same arguments as load_state and approach."),
-          Kernel("release_rate_slopes", (("dG_da_P", dG_P), ("dG_da_delta", dG_d), ("dG_da_delta_work", dG_w),
-                                         ("dG_dP", dG_dP)),
-                 "(1/w) dG/da at fixed load P, at fixed approach delta (5.8) and at fixed work-conjugate\n"
-                 "approach delta_work = delta + P/(8 pi G_I), and (1/w) dG/dP at fixed a [1/(N/m)], on the\n"
-                 "equilibrium at contact parameter a.  Equilibrium at fixed load (delta, delta_work) is\n"
-                 "stable when dG_da_P (dG_da_delta, dG_da_delta_work) > 0.")]
+                 "and of the approach (5.8)).  Same arguments as load_state and approach.")]
     p = P_eq * beta / (4 * sp.pi * Delta)
     dn = d_eq / Delta
     dwn = dw_eq / Delta
     star = {"p": p, "dp_da": sp.diff(p, a), "delta_over_Delta": dn, "ddelta_da": sp.diff(dn, a),
-            "dG_da_P": dG_P, "dG_da_delta": dG_d, "delta_work_over_Delta": dwn,
-            "ddelta_work_da": sp.diff(dwn, a)}
+            "delta_work_over_Delta": dwn, "ddelta_work_da": sp.diff(dwn, a),
+            "dG_dp": dG_dP_proved * 4 * sp.pi * Delta / beta}
     star = {k: _dimensionless(v) for k, v in star.items()}
+    # at fixed a the state is affine in m (derive.confined): the fixed-arc compliance of the paper's delta
+    star["ddelta_dp"] = sp.diff(star["delta_over_Delta"], m) / sp.diff(star["p"], m)
+    rates = {"dG_da_P": dG_P, "dG_da_delta": dG_d, "dG_da_delta_work": dG_w}
     star = _drop_scales(report, star)
+    _chain_rule(report, star, {k: _dimensionless(v).subs({R: 1, Delta: 1, beta: 1}) for k, v in rates.items()})
     ks.append(Kernel("equilibrium_star",
                      tuple((k, star[k]) for k in ("p", "dp_da", "delta_over_Delta", "ddelta_da",
-                                                  "dG_da_P", "dG_da_delta", "delta_work_over_Delta",
-                                                  "ddelta_work_da")),
+                                                  "delta_work_over_Delta", "ddelta_work_da", "dG_dp",
+                                                  "ddelta_dp")),
                      "Dimensionless equilibrium at contact parameter a: p = P beta*/(4 pi Delta) (= vartheta P*,\n"
-                     "= P_R* of (7.6)), dp/da, delta/Delta, d(delta/Delta)/da, (1/w) dG/da|_P, (1/w) dG/da|_delta,\n"
-                     "delta_work/Delta and its slope (work-conjugate approach; its fixed-grip stability follows\n"
-                     "from the slope's sign, jkrcyl.equilibria, as dG/da|_delta_work cancels at large a).\n"
+                     "= P_R* of (7.6)), dp/da, delta/Delta, d(delta/Delta)/da, delta_work/Delta and its slope\n"
+                     "(work-conjugate approach), and at fixed a: (1/w) dG/dp and d(delta/Delta)/dp.  The release\n"
+                     "rates along a follow by the chain rule (jkrcyl.numerics.kernels: dG/da|_X = -(dG/dp)\n"
+                     "(dX/da)/(dX/dp)), which the derivation checks against the direct derivatives.\n"
                      "m = M vartheta (= M_R* for vartheta = inf), inv_theta = 1/vartheta, gb = (1/G_I)/beta*.",
                      forms=("into",)))
     return ks
+
+
+def _check_release_form(report, dG_dP, proved):
+    """The proved closed form of (1/w) dG/dP at fixed a equals sympy's derivative on the equilibrium."""
+    f = checks.mp_function([dG_dP, proved], (a, R, Delta, beta, inv_theta, zeta, inv_G_I))
+    pairs = []
+    with mp.workdps(checks.DPS):
+        for tv in (mp.mpf(1), mp.mpf("0.3"), mp.mpf(0)):
+            for av in (mp.mpf("0.01"), mp.mpf("0.4"), mp.mpf("1.3"), mp.mpf(6)):
+                pairs.append(tuple(f(av, mp.mpf("1.5"), mp.mpf("0.01"), mp.mpf("1.4"), tv, mp.mpf("0.02"),
+                                     mp.mpf("0.5"))))
+    report.result("Release rate per unit load at fixed contact", sp.Eq(sp.Symbol(r"(1/w)\,\partial G/\partial P|_a"),
+                  proved), NEW, "2 (dK*/dP)/K* on the equilibrium with the proved dK*/dP (no cancellation)")
+    report.check("against sympy's derivative of G(a; P) on the equilibrium", checks.assert_close("dG/dP", pairs),
+                 len(pairs))
+
+
+def _chain_rule(report, star, rates):
+    """On the equilibrium dG/da|_X = -(dG/dp)|_a (dX/da)/(dX/dp)|_a for X = p, delta, delta_work (50 digits)."""
+    forms = {"dG_da_P": -star["dG_dp"] * star["dp_da"],
+             "dG_da_delta": -star["dG_dp"] * star["ddelta_da"] / star["ddelta_dp"],
+             "dG_da_delta_work": -star["dG_dp"] * star["ddelta_work_da"] / (star["ddelta_dp"] + gb / 2)}
+    names = list(forms)
+    f = checks.mp_function([forms[k] for k in names] + [rates[k] for k in names], (a, m, inv_theta, gb))
+    pairs = []
+    with mp.workdps(checks.DPS):
+        for av in (mp.mpf("0.02"), mp.mpf("0.5"), mp.mpf("1.2"), mp.mpf(4)):
+            for tv, gv in ((mp.mpf(0), mp.mpf(1)), (mp.mpf("0.7"), mp.mpf("0.4")), (mp.mpf(2), mp.mpf("0.2"))):
+                v = f(av, mp.mpf("0.35"), tv, gv)
+                pairs += list(zip(v[:3], v[3:]))
+    report.result("Release rates along a by the chain rule", sp.Symbol(r"dG/da|_X = -(\partial G/\partial p)"
+                  r"(dX/da)/(\partial X/\partial p)"), NEW,
+                  "X = p, delta/Delta, delta_work/Delta = delta/Delta + (gb/2) p; G = w on the equilibrium, so "
+                  "0 = dG/da|_X + (dG/dX)|_a X'(a); (dX/dp)|_a = d(delta/Delta)/dp (+ gb/2): the fixed-arc "
+                  "compliance, affine in m")
+    report.check("chain-rule forms against the direct sympy derivatives dG/da|_P, |_delta, |_delta_work",
+                 checks.assert_close("chain rule", pairs), len(pairs))
 
 
 def _stability_sign(report, K_P):
@@ -207,6 +245,7 @@ def _stability_sign(report, K_P):
                    "(M > 0.4459 at vartheta = 1, M > 0.6113 at vartheta = 0.5) the Barquins force is the larger one",
                    "tests/test_equilibria.py, test_half_plane_adherence_vs_cylinder_fig10 (minima of P* found "
                    "with the emitted slope kernels, to full double precision)")
+    return expected * D_t
 
 
 def _check(report, K_P, K_d, K_w, dG_P, dG_d, dG_w, dG_dP, dP, dd):

@@ -287,9 +287,12 @@ def _stable_kernels(report, sol):
 
 
 def stress_intensity_forms(C_, c0_, c1_):
-    """K* of (3.4) with r0 of (2.12) from the constants (C, c0, c1), and G* = (pi/4) A K*^2 (3.5)."""
+    """K* of (3.4) with r0 of (2.12) from the constants (C, c0, c1), and G* = (pi/4) A K*^2 (3.5).
+
+    G* is written in the output K (a symbol named like it) so that it never squares an intermediate that
+    overflows where K itself is finite (huge a)."""
     K = -sp.sqrt(4 * sp.pi * R) / E / sp.sqrt(2 * a) * (4 / (R * beta) * Em1 * (c0_ - c1_ / E) + C_ / sp.pi)
-    return K, sp.pi / 4 * beta / (2 * sp.pi) * K**2
+    return K, sp.pi / 4 * beta / (2 * sp.pi) * sp.Symbol("K", real=True)**2
 
 
 def _kernels(forms, P_star):

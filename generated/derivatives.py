@@ -10,12 +10,9 @@ from numba import njit
 
 LoadSlopes = namedtuple("LoadSlopes", ["dP_da", "ddelta_da"])
 
-ReleaseRateSlopes = namedtuple("ReleaseRateSlopes", ["dG_da_P", "dG_da_delta", "dG_da_delta_work",
-                                                     "dG_dP"])
-
 EquilibriumStar = namedtuple("EquilibriumStar", ["p", "dp_da", "delta_over_Delta", "ddelta_da",
-                                                 "dG_da_P", "dG_da_delta", "delta_work_over_Delta",
-                                                 "ddelta_work_da"])
+                                                 "delta_work_over_Delta", "ddelta_work_da", "dG_dp",
+                                                 "ddelta_dp"])
 
 
 @njit(cache=True)
@@ -74,280 +71,77 @@ def load_slopes(Delta, a, beta, inv_G_I, inv_theta, zeta):
 
 
 @njit(cache=True)
-def release_rate_slopes(Delta, R, a, beta, inv_G_I, inv_theta, zeta):
-    """
-    (1/w) dG/da at fixed load P, at fixed approach delta (5.8) and at fixed work-conjugate
-    approach delta_work = delta + P/(8 pi G_I), and (1/w) dG/dP at fixed a [1/(N/m)], on the
-    equilibrium at contact parameter a.  Equilibrium at fixed load (delta, delta_work) is
-    stable when dG_da_P (dG_da_delta, dG_da_delta_work) > 0.
-    """
-    x0 = a**2
-    x1 = x0 + 1
-    x2 = math.log1p(x0)
-    x3 = inv_theta*(x0 - x2) + 2
-    x4 = math.sqrt(a)
-    x5 = x4*zeta
-    x6 = 1/beta
-    x7 = 4*x0
-    x8 = math.pi*Delta
-    x9 = -x3*x5 + x6*x7*x8
-    x10 = a**4
-    x11 = 2*x10
-    x12 = inv_theta*(x11 + x2)
-    x13 = 1/(x12 - 2)
-    x14 = x13*x9
-    x15 = x1**2
-    x16 = inv_theta*x15
-    x17 = -4*beta*inv_theta*x1*x13*x9 + 4*x8
-    x18 = 2*beta
-    x19 = x14*x18
-    x20 = math.log(x1)
-    x21 = inv_theta*x20
-    x22 = beta*x21
-    x23 = -4*math.pi*Delta*x1 - 2*beta*x13*x9 + inv_theta*x19 + x14*x22 + x16*x19 + x17
-    x24 = -x23
-    x25 = zeta**(-2)
-    x26 = 1/x1
-    x27 = beta*inv_theta
-    x28 = 4*beta
-    x29 = 1/x0
-    x30 = inv_theta*x1
-    x31 = -x21
-    x32 = -inv_theta + x30 + x31 + 2
-    x33 = 1/x32
-    x34 = inv_theta*(1 - x26)
-    x35 = x33*x34
-    x36 = x32**(-2)
-    x37 = 4*x36
-    dG_da_P = (-x24*x25*x37*(x24*x26 + (1/4)*x24*x29 + x24*x35 - x26*(8*math.pi*Delta*x1 -
-        x14*x16*x28 - x14*x27 - x17))/beta**2)
-    x38 = math.log(a/math.sqrt(x1))
-    x39 = beta*x38
-    x40 = a*x39
-    x41 = 16*x1*x40
-    x42 = 12*x40
-    x43 = x30*x42
-    x44 = x16*x42
-    x45 = 1/a
-    x46 = x0*x26 - 1
-    x47 = x45*x46
-    x48 = x15*x28
-    x49 = x20*x30
-    x50 = 8*x39
-    x51 = a*x49*x50
-    x52 = x18*x47
-    x53 = x15*x18
-    x54 = x21*x53
-    x55 = 16*math.pi**2*x25
-    x56 = a**(3/2)
-    x57 = Delta*x6
-    x58 = x56*x57
-    x59 = 1/x4
-    x60 = x1*x59
-    x61 = x1**3
-    x62 = inv_theta*x61
-    x63 = x1*x28
-    x64 = beta*x30
-    x65 = inv_G_I*x15
-    x66 = beta*x16
-    x67 = 2*x16
-    x68 = 2*inv_theta
-    x69 = x18*x49
-    x70 = x28*x38
-    x71 = (-inv_G_I*x61*x68 + inv_G_I*x67 + x15*x21*x70 - x15*x22 - x15*x50 + x16*x70 - x18 +
-        2*x21*x65 + x22 + x27*x61 + 3*x27 + x53 - x62*x70 - x63 - 7*x64 - 4*x65 + 5*x66 + x69)
-    x72 = 1/x71
-    x73 = 2*x0
-    x74 = -x16 + x30 + x49 + x73
-    x75 = x26*x74
-    x76 = 4*Delta
-    x77 = x33*x76
-    x78 = a**6
-    x79 = math.log1p(x29)
-    x80 = x1*x73
-    x81 = 1/math.pi
-    x82 = (-x13*x26*x5*x81*(beta*(inv_theta*(6*x0 - x10*x2 + 8*x10 + 2*x2 + x78 + 2) + x11 - 4) +
-        2*x15*x3*(beta*x79 - inv_G_I)) + x13*x76*(-inv_G_I*x6*x80 + x12 + x26*x78 + x79*x80) +
-        x75*x77)
-    x83 = -x82
-    x84 = x72*x83
-    x85 = x21 - 4*x30 + x67 + x68 - 2
-    x86 = (1/4)*x85
-    x87 = x84*x86
-    x88 = x4*x57
-    x89 = x33*x88
-    x90 = a**(5/2)*x57
-    x91 = 4*x26
-    x92 = x90*x91
-    x93 = x91*(x73 + 1)
-    x94 = x4*x85
-    x95 = x77*(2*x30 + x31 + x35*x74 - x68 + x75 - 2)
-    x96 = x4*(x26 + x7)
-    x97 = 1/x56
-    x98 = a*x28
-    x99 = a*x27
-    x100 = 5*x99
-    x101 = a*x63
-    x102 = a*inv_G_I
-    x103 = 8*x1*x102
-    x104 = 9*a*x64
-    x105 = 6*x102
-    x106 = x105*x30
-    x107 = x26*x99
-    x108 = a*x18*x21
-    x109 = 3*a*x66
-    x110 = x105*x16
-    x111 = a*x69
-    x112 = 4*x102*x49
-    dG_da_delta = (-x55*(x33*x58 + x60*x87)*(x1*x87*x97 - x30*x84*x96 + x33*x92 + x34*x37*x90 +
-        x60*x83*x85*(-x100 + x101 - x103 + x104 + x106 + x107 + x108 + x109 - x110 - x111 + x112 -
-        x16*x52 - x41 + x43 - x44 + x47*x48 - x47*x54 + x51 + x52*x62 - x98)/x71**2 - x72*x94*x95 -
-        x84*x94 - x89*x93 + x89))
-    x113 = x33*x71
-    x114 = 1/x15
-    x115 = inv_G_I + x113*x114
-    x116 = 1/x115
-    x117 = inv_G_I*x1*x14*x81 + x82
-    x118 = x26*x86
-    x119 = x114*x94
-    x120 = -x117
-    x121 = x116*x120
-    x122 = x121*x26
-    x123 = -x45*x46
-    x124 = x123*x18
-    dG_da_delta_work = (-x36*x55*(-x116*x117*x118*x59 + x58)*(-inv_theta*x122*x96 - x116*x119*x95 +
-        x118*x121*x97 + x119*x121 + x122*x35*x94 + 4*x35*x90 - x88*x93 + x88 + x92 -
-        x120*x33*x59*x85*(a*x113*x34 + 2*a*x26*x71 + x100 - x101 + x103 - x104 - x106 - x107 - x108
-        - x109 + x110 + x111 - x112 + x123*x48 - x123*x54 - x124*x16 + x124*x62 + x41 - x43 + x44 -
-        x51 + x98)/(x115**2*x61)))
-    dG_dP = -x23*x25*x26*x36*x45*x6*x85
-    return ReleaseRateSlopes(dG_da_P, dG_da_delta, dG_da_delta_work, dG_dP)
-
-
-@njit(cache=True)
 def equilibrium_star(a, gb, inv_theta, m):
     """
     Dimensionless equilibrium at contact parameter a: p = P beta*/(4 pi Delta) (= vartheta P*,
-    = P_R* of (7.6)), dp/da, delta/Delta, d(delta/Delta)/da, (1/w) dG/da|_P, (1/w) dG/da|_delta,
-    delta_work/Delta and its slope (work-conjugate approach; its fixed-grip stability follows
-    from the slope's sign, jkrcyl.equilibria, as dG/da|_delta_work cancels at large a).
+    = P_R* of (7.6)), dp/da, delta/Delta, d(delta/Delta)/da, delta_work/Delta and its slope
+    (work-conjugate approach), and at fixed a: (1/w) dG/dp and d(delta/Delta)/dp.  The release
+    rates along a follow by the chain rule (jkrcyl.numerics.kernels: dG/da|_X = -(dG/dp)
+    (dX/da)/(dX/dp)), which the derivation checks against the direct derivatives.
     m = M vartheta (= M_R* for vartheta = inf), inv_theta = 1/vartheta, gb = (1/G_I)/beta*.
     """
     x0 = a**2
-    x1 = x0 + 1
-    x2 = math.sqrt(a)
-    x3 = math.log1p(x0)
-    x4 = inv_theta*(x0 - x3) + 2
-    x5 = m*x4
-    x6 = -x0 + x2*x5
-    x7 = a**4
-    x8 = 2*x7
-    x9 = inv_theta*(x3 + x8)
-    x10 = 1/(x9 - 2)
-    x11 = x10*x6
-    x12 = 2*x11
-    p = x1*x12
+    x1 = math.log1p(x0)
+    x2 = a**4
+    x3 = 2*x2
+    x4 = inv_theta*(x1 + x3)
+    x5 = 1/(x4 - 2)
+    x6 = 2*x5
+    x7 = x0 + 1
+    x8 = math.sqrt(a)
+    x9 = inv_theta*(x0 - x1) + 2
+    x10 = m*x9
+    x11 = -x0 + x10*x8
+    x12 = x11*x7
+    p = x12*x6
     x13 = 4*a
-    x14 = x13*x6
-    x15 = -x13
-    x16 = a**(3/2)
-    x17 = m*x16
-    x18 = 1/x1
-    x19 = 1 - x18
-    x20 = inv_theta*x19
-    x21 = 4*x20
-    x22 = 1/x2
-    x23 = x15 + x17*x21 + x22*x5
-    x24 = inv_theta*x1
-    x25 = 4*x0
-    x26 = x18 + x25
-    x27 = x10*x26
-    dp_da = x10*(x1*x23 - x14*x24*x27 + x14)
-    x28 = 1/x0
-    x29 = math.log1p(x28)
-    x30 = gb - x29
-    x31 = x1**2
-    x32 = 2*x31
-    x33 = x32*x4
-    x34 = a**6
-    x35 = 2*x3
-    x36 = inv_theta*(6*x0 - x3*x7 + x34 + x35 + 8*x7 + 2) - x30*x33 + x8 - 4
-    x37 = x18*x34
-    x38 = 2*x0
-    x39 = gb*x1
-    x40 = x38*x39
-    x41 = x1*x29*x38
-    x42 = x37 - x40 + x41 + x9
-    delta_over_Delta = x10*(m*x18*x2*x36 - x42)
-    x43 = a**3
-    x44 = 4*x43
-    x45 = 1/x31
-    x46 = x1*x13
-    x47 = 1/a
-    x48 = 1/(x28 + 1)
-    x49 = 2*inv_theta
-    x50 = a*x26
-    x51 = x17*x36
-    x52 = 2*x18
-    x53 = a*inv_theta
-    x54 = m*x2
-    x55 = (-2*a**7*x45 + 6*a**5*x18 - 4*a*gb*x1 - 2*a*inv_theta*x10*x26*x42 - 4*gb*x43 +
-        inv_theta*x27*x51*x52 - 1/2*m*x18*x22*x36 - 4*x1*x47*x48 + x29*x44 + x29*x46 + 2*x45*x51 +
-        x49*x50 + x52*x54*(x19*x30*x32*x53 + x30*x4*x46 + x33*x48/x43 - x44 - x53*(-x0*x35 + 16*x0 -
-        x18*x7 + x52 + 3*x7 + 6)))
-    ddelta_da = -x10*x55
-    x56 = m**(-2)
-    x57 = math.log(x1)
-    x58 = inv_theta*x57
-    x59 = -x58
-    x60 = -inv_theta + x24 + x59 + 2
-    x61 = x60**(-2)
-    x62 = 4*x24
-    x63 = -x11*x62
-    x64 = inv_theta*x11
-    x65 = x0 + x11*x49 + x11*x58 - x12 + x32*x64 + x63
-    x66 = inv_theta*x31
-    x67 = x38 + 1
-    x68 = 4*x18
-    x69 = 1/x60
-    x70 = x20*x69
-    dG_da_P = -x56*x61*x65*(x28*x65 + x65*x68 + 4*x65*x70 - x68*(4*x11*x66 + x63 + x64 + x67))
-    x71 = x24*x57
-    x72 = x24 + x38 - x66 + x71
-    x73 = x18*x72
-    x74 = m*x10*x18*x2*x36 - x10*x42 - x69*x73
-    x75 = 3*inv_theta
-    x76 = inv_theta*x1**3
-    x77 = 4*x31
-    x78 = inv_theta*x32
-    x79 = 2*x71
-    x80 = x32*x58
-    x81 = math.log(a/math.sqrt(x1))
-    x82 = x31*x81
-    x83 = 4*x81
-    x84 = (-2*gb*x76 - gb*x77 + gb*x78 + gb*x80 - 7*x24 - x25 - x31*x58 + x32 + 4*x58*x82 + x58 +
-        x66*x83 + 5*x66 + x75 - x76*x83 + x76 + x79 - 8*x82 - 6)
-    x85 = 1/x84
-    x86 = x49 + x58 - x62 + x78 - 2
-    x87 = x85*x86
-    x88 = x74*x87
-    x89 = x1*x88
-    x90 = x2*x69
-    x91 = a**(5/2)
-    x92 = a*x24
-    x93 = 6*gb
-    x94 = a*x81
-    x95 = 12*x94
-    x96 = x47*(x0*x18 - 1)
-    dG_da_delta = (-x56*(x16*x69 + x22*x89)*(4*x1*x22*x74*x86*(a*x31*x75 - 8*a*x39 + 2*a*x58 -
-        a*x66*x93 - a*x79 + gb*x13*x71 - 16*x1*x94 + x15 + x18*x53 + x24*x95 + x46 - 5*x53 - x66*x95
-        + 8*x71*x94 + 2*x76*x96 + x77*x96 - x78*x96 - x80*x96 + x92*x93 + 9*x92)/x84**2 -
-        x2*x26*x62*x74*x85 - 4*x2*x88 + x21*x61*x91 - x67*x68*x90 + x68*x69*x91 - 4*x87*x90*(2*x24 -
-        x49 + x59 + x70*x72 + x73 - 2) + x90 + x89/x16))
-    delta_work_over_Delta = x10*(x18*x36*x54 - x37 + x39*x6 + x40 - x41 - x9)
-    ddelta_work_da = x10*(2*a*gb*x6 + (1/2)*gb*x1*x23 - gb*x12*x24*x50 - x55)
-    return EquilibriumStar(p, dp_da, delta_over_Delta, ddelta_da, dG_da_P, dG_da_delta,
-                           delta_work_over_Delta, ddelta_work_da)
+    x14 = x11*x13
+    x15 = 1/x7
+    x16 = 1 - x15
+    x17 = a**(3/2)*m
+    x18 = inv_theta*x17
+    x19 = 1/x8
+    x20 = x10*x19 - x13 + 4*x16*x18
+    x21 = 4*x0 + x15
+    x22 = x21*x5
+    dp_da = x5*(-inv_theta*x14*x22*x7 + x14 + x20*x7)
+    x23 = 1/x0
+    x24 = math.log1p(x23)
+    x25 = gb - x24
+    x26 = x25*x9
+    x27 = x7**2
+    x28 = 2*x27
+    x29 = a**6
+    x30 = 2*x1
+    x31 = inv_theta*(6*x0 - x1*x2 + 8*x2 + x29 + x30 + 2) - x26*x28 + x3 - 4
+    x32 = x15*x29
+    x33 = 2*x0
+    x34 = gb*x33*x7
+    x35 = x24*x7
+    x36 = x33*x35
+    x37 = x32 - x34 + x36 + x4
+    delta_over_Delta = x5*(m*x15*x31*x8 - x37)
+    x38 = a**3
+    x39 = 4*x38
+    x40 = 1/x27
+    x41 = 1/(x23 + 1)
+    x42 = a*inv_theta
+    x43 = x21*x42
+    x44 = 2*x15
+    x45 = m*x8
+    x46 = (-2*a**7*x40 + 6*a**5*x15 - 4*a*gb*x7 - 2*a*inv_theta*x21*x37*x5 - 4*gb*x38 -
+        1/2*m*x15*x19*x31 + x13*x35 + 2*x17*x31*x40 + x18*x22*x31*x44 + x24*x39 + 2*x43 + x44*x45*(
+        x13*x26*x7 + x16*x25*x28*x42 + x28*x41*x9/x38 - x39 - x42*(-x0*x30 + 16*x0 - x15*x2 + 3*x2 +
+        x44 + 6)) - 4*x41*x7/a)
+    ddelta_da = -x46*x5
+    x47 = gb*x12
+    delta_work_over_Delta = x5*(x15*x31*x45 - x32 + x34 - x36 - x4 + x47)
+    ddelta_work_da = x5*(2*a*gb*x11 + (1/2)*gb*x20*x7 - x43*x47*x6 - x46)
+    x48 = math.log(x7)
+    dG_dp = x15*x19*(inv_theta*(x3 + x48) - 2)/(m*(inv_theta*(x0 - x48) + 2))
+    ddelta_dp = (1/2)*x31*x40/x9
+    return EquilibriumStar(p, dp_da, delta_over_Delta, ddelta_da, delta_work_over_Delta,
+                           ddelta_work_da, dG_dp, ddelta_dp)
 
 
 @njit(cache=True)
@@ -359,17 +153,17 @@ def equilibrium_star_into(out, a, gb, inv_theta, m):
     dp_da = out.dp_da
     delta_over_Delta = out.delta_over_Delta
     ddelta_da = out.ddelta_da
-    dG_da_P = out.dG_da_P
-    dG_da_delta = out.dG_da_delta
     delta_work_over_Delta = out.delta_work_over_Delta
     ddelta_work_da = out.ddelta_work_da
+    dG_dp = out.dG_dp
+    ddelta_dp = out.ddelta_dp
     for i in range(a.shape[0]):
         r = equilibrium_star(a[i], gb, inv_theta, m)
         p[i] = r.p
         dp_da[i] = r.dp_da
         delta_over_Delta[i] = r.delta_over_Delta
         ddelta_da[i] = r.ddelta_da
-        dG_da_P[i] = r.dG_da_P
-        dG_da_delta[i] = r.dG_da_delta
         delta_work_over_Delta[i] = r.delta_work_over_Delta
         ddelta_work_da[i] = r.ddelta_work_da
+        dG_dp[i] = r.dG_dp
+        ddelta_dp[i] = r.ddelta_dp

@@ -130,10 +130,9 @@ def stress_intensity(C, R, a, beta, c0, c1):
     [J/m^2] from the constants c0, c1 [m] and C [N/m] of a pressure solution.
     """
     x0 = a**2
-    x1 = x0 + 1
-    x2 = math.sqrt(x1)
-    x3 = 1/x2
-    x4 = C/math.pi + 4*x0*(c0 - c1*x3)/(R*beta*(x2 + 1))
-    K = -math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(R)*x3*x4/math.sqrt(a)
-    G_release = (1/4)*math.pi*R*beta*x4**2/(a*x1)
+    x1 = math.sqrt(x0 + 1)
+    x2 = 1/x1
+    K = (-math.sqrt(2)*math.sqrt(math.pi)*math.sqrt(R)*x2*(C/math.pi + 4*x0*(c0 - c1*x2)/(R*beta*(x1
+        + 1)))/math.sqrt(a))
+    G_release = (1/8)*K**2*beta
     return StressIntensity(K, G_release)

@@ -26,61 +26,59 @@ def full_state(Delta, R, a, beta, inv_G_I, inv_theta, zeta):
     x3 = math.log1p(x2)
     x4 = x1 + x3
     x5 = inv_theta*x4
-    x6 = x5 - 2
-    x7 = 1/x6
-    x8 = x2 + 1
-    x9 = x7*x8
-    x10 = 4*Delta
-    x11 = 1/beta
-    x12 = math.pi*x11*x2
-    x13 = inv_theta*(x2 - x3) + 2
-    x14 = math.sqrt(a)
-    x15 = x14*zeta
-    x16 = x10*x12 - x13*x15
-    x17 = 2*x16
-    P = -x17*x9
-    x18 = 2*Delta
-    x19 = 2*x2
-    x20 = beta*x15*(x19 + 1)
-    x21 = 1/R
-    x22 = x21*x7
-    B = -4*x11*x22*(math.pi*x18*x4 - x20)
-    x23 = math.sqrt(x8)
-    x24 = 1/(x23 + 1)
-    x25 = 2*x3
-    x26 = (8*Delta*x12*(x19 - x24*(x19 - 1)) - x14*zeta*(-2*inv_theta*(x25 + 1) + 4*x13*x2 + x23*(
+    x6 = 1/(x5 - 2)
+    x7 = x2 + 1
+    x8 = x6*x7
+    x9 = 4*Delta
+    x10 = 1/beta
+    x11 = math.pi*x10*x2
+    x12 = inv_theta*(x2 - x3) + 2
+    x13 = math.sqrt(a)
+    x14 = x13*zeta
+    x15 = x11*x9 - x12*x14
+    x16 = 2*x15
+    P = -x16*x8
+    x17 = 2*Delta
+    x18 = 2*x2
+    x19 = beta*x14*(x18 + 1)
+    x20 = 1/R
+    x21 = x20*x6
+    B = -4*x10*x21*(math.pi*x17*x4 - x19)
+    x22 = math.sqrt(x7)
+    x23 = 1/(x22 + 1)
+    x24 = 2*x3
+    x25 = (8*Delta*x11*(x18 - x23*(x18 - 1)) - x13*zeta*(-2*inv_theta*(x24 + 1) + 4*x12*x2 + x22*(
         inv_theta*(-x1 + 3*x3 + 2) - 6) + 8))
-    C = -x22*x26
-    x27 = 1/math.pi
-    x28 = inv_theta*x20*x27
-    c0 = x7*(x18 - 1/2*x28)
-    x29 = beta*x27
-    x30 = x16*x29
-    c1 = -x30*x9
-    r0 = -x15*x21*x23*x27
-    x31 = 1/x23
-    x32 = x10 - x28
-    x33 = x11*x19*x24*(x17*x23*x29 + x32) - x26*x27
-    K = -math.sqrt(2)*math.sqrt(math.pi)*x31*x33*x7/(math.sqrt(R)*x14)
-    x34 = 1/a
-    x35 = 1/x8
-    G_release = (1/4)*math.pi*beta*x21*x33**2*x34*x35/x6**2
-    x36 = a**6
-    x37 = 1/x2
-    x38 = math.log1p(x37)
-    x39 = x19*x8
-    delta = (x7*(-Delta*(-inv_G_I*x11*x39 + x35*x36 + x38*x39 + x5) + (1/4)*x14*x27*x35*zeta*(beta*(
-        inv_theta*(-x0*x3 + 8*x0 + 6*x2 + x25 + x36 + 2) + x1 - 4) + 2*x13*x8**2*(beta*x38 -
+    C = -x21*x25
+    x26 = 1/math.pi
+    x27 = inv_theta*x19*x26
+    c0 = x6*(x17 - 1/2*x27)
+    x28 = beta*x26
+    x29 = x15*x28
+    c1 = -x29*x8
+    r0 = -x14*x20*x22*x26
+    x30 = 1/x22
+    x31 = -x27 + x9
+    K = (-math.sqrt(2)*math.sqrt(math.pi)*x30*x6*(x10*x18*x23*(x16*x22*x28 + x31) - x25*x26)/(
+        math.sqrt(R)*x13))
+    G_release = (1/8)*K**2*beta
+    x32 = a**6
+    x33 = 1/x7
+    x34 = 1/x2
+    x35 = math.log1p(x34)
+    x36 = x18*x7
+    delta = (x6*(-Delta*(-inv_G_I*x10*x36 + x32*x33 + x35*x36 + x5) + (1/4)*x13*x26*x33*zeta*(beta*(
+        inv_theta*(-x0*x3 + 8*x0 + 6*x2 + x24 + x32 + 2) + x1 - 4) + 2*x12*x7**2*(beta*x35 -
         inv_G_I))))
     if (a > 4):
-        b0 = ((1/1221113708701286400)*(-x37*(-x37*(-x37*(-x37*(11*x37*(13*x37*(x37*(289*x37*(
-            361*x37*(49*x37*(529*x37*(625*x37*(754 - 729*x37) - 488592) + 268725600) - 13734864000)
+        b0 = ((1/1221113708701286400)*(-x34*(-x34*(-x34*(-x34*(11*x34*(13*x34*(x34*(289*x34*(
+            361*x34*(49*x34*(529*x34*(625*x34*(754 - 729*x34) - 488592) + 268725600) - 13734864000)
             + 5191778592000) - 1578300691968000) + 1669491398615040) - 23116034750054400.0) +
             273189501591552000.0) + 296798470864896000.0) + 327084029116416000.0) +
             366334112610385920.0) + 407037902900428800.0)/a**3)
     else:
-        b0 = -x31 + math.asinh(x34)
-    h_pi = -x7*(b0*x30*x8 + x23*x32)
+        b0 = -x30 + math.asinh(1/a)
+    h_pi = -x6*(b0*x29*x7 + x22*x31)
     return FullState(P, B, C, c0, c1, r0, K, G_release, delta, h_pi)
 
 

@@ -62,19 +62,33 @@ def count(name, value, low, high=N_MAX):
     return int(v)
 
 
+def real_array(name, value):
+    """A non-empty float array of real numbers (no bools, strings, complex, None)."""
+    if value is None or isinstance(value, (str, bytes, bool, np.bool_)):
+        raise ValueError(f"{name} must be a real number or an array of them, got {value!r}")
+    try:
+        arr = np.asarray(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a real number or an array of them, got {value!r}") from None
+    if arr.dtype.kind not in "iuf":
+        raise ValueError(f"{name} must be a real number or an array of them, got {value!r}")
+    if arr.size == 0:
+        raise ValueError(f"{name} must not be empty")
+    return arr.astype(float)
+
+
+def angle(phi):
+    """phi [rad]: finite real numbers of magnitude <= HUGE (wrapped by the caller)."""
+    arr = real_array("phi", phi)
+    bad = ~np.isfinite(arr) | (np.abs(arr) > HUGE)
+    if bad.any():
+        raise ValueError(f"phi must be finite, of magnitude <= {HUGE:g} [rad], got {arr[bad].flat[0]:g}")
+    return arr
+
+
 def contact_parameter(a):
     """a = tan(eps/2): float array, every entry in [A_MIN, A_MAX]."""
-    if a is None or isinstance(a, (str, bytes, bool, np.bool_)):
-        raise ValueError(f"a must be a real number or an array of them, got {a!r}")
-    try:
-        arr = np.asarray(a)
-    except (TypeError, ValueError):
-        raise ValueError(f"a must be a real number or an array of them, got {a!r}") from None
-    if arr.dtype.kind not in "iuf":
-        raise ValueError(f"a must be a real number or an array of them, got {a!r}")
-    arr = arr.astype(float)
-    if arr.size == 0:
-        raise ValueError("a must not be empty")
+    arr = real_array("a", a)
     bad = ~np.isfinite(arr) | (arr <= 0)
     if bad.any():
         raise ValueError(f"a must be in (0, inf) (a = tan(eps/2), 0 < eps < pi), got {arr[bad].flat[0]:g}")

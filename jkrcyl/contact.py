@@ -7,7 +7,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ._validate import PRESSURE_A_MAX, contact_parameter, finite_scalar
+from ._validate import PRESSURE_A_MAX, angle, contact_parameter, finite_scalar
 from .critical import a_crit
 from .numerics import kernels as _k
 from .materials import Materials
@@ -176,12 +176,10 @@ class Contact:
         -------
         ndarray or float, or a tuple of two when parts=True
         """
-        a_arr, phi_arr = np.broadcast_arrays(contact_parameter(a), np.asarray(phi, dtype=float))
+        a_arr, phi_arr = _broadcast(contact_parameter(a), angle(phi))
         if np.max(a_arr) > PRESSURE_A_MAX:
             raise ValueError(f"a must be <= {PRESSURE_A_MAX:g} in pressure() (the bounded part of (5.4) loses its "
                              f"digits beyond: atanh near 1), got {np.max(a_arr):g}")
-        if not np.isfinite(phi_arr).all():
-            raise ValueError("phi must be finite")
         wrapped = np.mod(phi_arr + math.pi, 2 * math.pi) - math.pi
         wrapped = np.where(wrapped == -math.pi, math.pi, wrapped).ravel()
         flat_a = a_arr.ravel()
@@ -204,9 +202,7 @@ class Contact:
 
     def gap(self, a, phi):
         """Gap h(phi) of (5.9) [m]: numpy-broadcast over a and phi; 0 inside the contact."""
-        a_arr, phi_arr = np.broadcast_arrays(contact_parameter(a), np.asarray(phi, dtype=float))
-        if not np.isfinite(phi_arr).all():
-            raise ValueError("phi must be finite")
+        a_arr, phi_arr = _broadcast(contact_parameter(a), angle(phi))
         if not self.materials.closed_form:
             return _shaped(self._numeric_gap(a_arr.ravel(), phi_arr.ravel()), a_arr.shape)
         h = _k.gap(a_arr.ravel(), phi_arr.ravel(), **self._args())
@@ -241,6 +237,11 @@ class Contact:
         return out
 
 
+def _broadcast(*arrays):
+    """np.broadcast_arrays as owned, writeable copies (numba warns on broadcast views)."""
+    return [np.array(x) for x in np.broadcast_arrays(*arrays)]
+
+
 def _shaped(values, shape):
     out = np.asarray(values).reshape(shape)
     return out[()] if out.ndim == 0 else out
@@ -267,6 +268,14 @@ class State:
     G_release: np.ndarray
     delta: np.ndarray
     h_pi: np.ndarray
+
+    def __repr__(self):
+        a, P = np.ravel(self.a), np.ravel(self.P)
+        if a.size == 1:
+            return (f"State(a={a[0]:.6g}, P={P[0]:.6g} N/m, delta={float(np.ravel(self.delta)[0]):.4g} m, "
+                    f"feasible={bool(np.ravel(self.feasible)[0])})")
+        return (f"State({a.size} points, a in [{a.min():.4g}, {a.max():.4g}], P in [{P.min():.4g}, {P.max():.4g}] "
+                f"N/m, {int(np.sum(np.ravel(self.feasible)))} feasible)")
 
     @property
     def eps(self):

@@ -115,14 +115,14 @@ def _grid(regime, th, n, ac=None):
 
 def _star(a, m, inv_t, gb, ar=0.0):
     """Normalised equilibrium as a dict p (= vartheta P*), dp, dn, ddn, gP, gd, h and, for the work-conjugate
-    approach, dw, ddw; m = M vartheta (tests/test_arcs.py compares the solver with it)."""
+    approach, dw, ddw, gw; m = M vartheta (tests/test_arcs.py compares the solver with it)."""
     a = np.ascontiguousarray(np.atleast_1d(np.asarray(a, dtype=float)))
     if ar != 0.0:
         from .numerics.arcs import star
         return star(a, m, math.inf if inv_t == 0 else 1.0 / inv_t, gb, ar)
     s = _k.star_m(a, inv_theta=inv_t, m=m, gb=gb)
     return dict(p=s.p, dp=s.dp_da, dn=s.delta_over_Delta, ddn=s.ddelta_da, gP=s.dG_da_P, gd=s.dG_da_delta,
-                h=s.h_pi_over_Delta, dw=s.delta_work_over_Delta, ddw=s.ddelta_work_da)
+                h=s.h_pi_over_Delta, dw=s.delta_work_over_Delta, ddw=s.ddelta_work_da, gw=s.dG_da_delta_work)
 
 
 def _star_of(a, M, th, gb, ar=0.0):
@@ -133,7 +133,7 @@ def _star_of(a, M, th, gb, ar=0.0):
     s = _star(a, n.m, n.inv_theta, gb, ar)
     return _k.Star(P_star=s["p"] / n.scale, dP_star_da=s["dp"] / n.scale, delta_over_Delta=s["dn"],
                    ddelta_da=s["ddn"], dG_da_P=s["gP"], dG_da_delta=s["gd"], h_pi_over_Delta=s["h"],
-                   delta_work_over_Delta=s["dw"], ddelta_work_da=s["ddw"])
+                   delta_work_over_Delta=s["dw"], ddelta_work_da=s["ddw"], dG_da_delta_work=s["gw"])
 
 
 _star_root = _roots.brent_solver(_k.star_residual_nb)
@@ -187,11 +187,12 @@ class Curve:
     dP_star_da, ddelta_da: slopes; dG_da_P, dG_da_delta: (1/w) dG/da.
     Work-conjugate approach delta_work = delta + P/(8 pi G_I) (derive/green.py: the pin's centroid, load
     spread over the pin; the paper's delta is the rims' approach, not the work conjugate of P):
-    delta_work_over_Delta, its slope ddelta_work_da and stable_grip_work (stable at fixed delta_work).
-    dG/da|_delta_work = -(dG/dP)|_a (d delta_work/da)/(d delta_work/dP)|_a on the equilibrium, and
-    (d delta_work/dP)|_a > 0 (the compliance of the fixed arc in the conjugate approach, positive like its elastic
-    energy), so stable_grip_work is d delta_work/da > 0 below a_crit and < 0 above it -- the load rule with
-    delta_work for P (tests/test_work_conjugate.py checks it against the kernel of dG/da|_delta_work).
+    delta_work_over_Delta, its slope ddelta_work_da, dG_da_delta_work and stable_grip_work = dG/da|_delta_work > 0
+    (stable at fixed delta_work).  The release rates come from the chain rule dG/da|_X = -(dG/dp)|_a
+    (dX/da)/(dX/dp)|_a (jkrcyl.numerics.kernels.release_rates).  As (d delta_work/dp)|_a > 0 (the fixed arc's
+    compliance in the conjugate approach, positive like its elastic energy), stable_grip_work is
+    d delta_work/da > 0 below a_crit and < 0 above it -- the load rule with delta_work for P
+    (tests/test_work_conjugate.py).  Without adhesion (M = 0) the (1/w) dG/da fields are NaN (w = 0).
     """
 
     M: float
@@ -213,6 +214,7 @@ class Curve:
     dG_da_delta: np.ndarray
     delta_work_over_Delta: np.ndarray
     ddelta_work_da: np.ndarray
+    dG_da_delta_work: np.ndarray
     stable_grip_work: np.ndarray
     P: np.ndarray = None          # [N/m], set when the curve comes from a Contact (Contact.curve)
     delta: np.ndarray = None      # [m], likewise
@@ -274,7 +276,7 @@ def curve(M: float, theta: float, regime: str = "sub-critical", n: int = 2000, g
                  feasible=st.h_pi_over_Delta >= 0, stable_load=st.dG_da_P > 0, stable_grip=st.dG_da_delta > 0,
                  dP_star_da=st.dP_star_da, ddelta_da=st.ddelta_da, dG_da_P=st.dG_da_P, dG_da_delta=st.dG_da_delta,
                  delta_work_over_Delta=st.delta_work_over_Delta, ddelta_work_da=st.ddelta_work_da,
-                 stable_grip_work=(1 if regime == "sub-critical" else -1) * st.ddelta_work_da > 0)
+                 dG_da_delta_work=st.dG_da_delta_work, stable_grip_work=st.dG_da_delta_work > 0)
 
 
 @dataclass(frozen=True)

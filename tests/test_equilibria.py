@@ -17,6 +17,7 @@ from jkrcyl import equilibria as eq
 from reference import paper as pp
 from jkrcyl import special
 from jkrcyl.generated import derivatives as der
+from jkrcyl.numerics import kernels as _k
 
 mp.mp.dps = 30
 R, DELTA = mp.mpf("1.5"), mp.mpf("0.01")
@@ -67,16 +68,17 @@ def test_slope_kernels_vs_mpmath_differences(pair, a_txt):
     dP, dd = der.load_slopes(**args)
     _close(dP, mp.diff(lambda s: pp.P_44(s, DELTA, beta, th, zeta, mp), a))
     _close(dd, mp.diff(lambda s: pp.delta_58(s, DELTA, R, beta, th, GI, zeta, mp), a))
-    r = der.release_rate_slopes(R=float(R), **args)
+    m = float(zeta * beta / (4 * mp.pi * DELTA))                      # M vartheta = zeta* beta*/(4 pi Delta)
+    r = _k.star_m(np.array([float(a)]), inv_theta=float(1 / th), m=m, gb=float(1 / GI / beta))
     P_eq = pp.P_44(a, DELTA, beta, th, zeta, mp)
     d_eq = pp.delta_58(a, DELTA, R, beta, th, GI, zeta, mp)
     dw_eq = _delta_work(a, beta, th, GI, zeta)
     ref_P = mp.diff(lambda s: _G(s, beta, th, _zeta_for(s, beta, th, P=P_eq)), a) / w
     ref_d = mp.diff(lambda s: _G(s, beta, th, _zeta_for(s, beta, th, delta=d_eq, GI=GI)), a) / w
     ref_w = mp.diff(lambda s: _G(s, beta, th, _zeta_for(s, beta, th, GI=GI, delta_work=dw_eq)), a) / w
-    _close(r.dG_da_P, ref_P, 1e-8)
-    _close(r.dG_da_delta, ref_d, 1e-8)
-    _close(r.dG_da_delta_work, ref_w, 1e-8)
+    _close(r.dG_da_P[0], ref_P, 1e-8)
+    _close(r.dG_da_delta[0], ref_d, 1e-8)
+    _close(r.dG_da_delta_work[0], ref_w, 1e-8)
     # on the equilibrium G = w
     _close(_G(a, beta, th, zeta) / w, 1, 1e-13)
 
@@ -88,7 +90,8 @@ def test_dimensionless_kernel_vs_mpmath(a_txt):
     M = mp.mpf("0.35")
     zeta = 4 * mp.pi * DELTA * th * M / beta
     w = zeta**2 * beta / (4 * mp.pi * R)
-    r = der.equilibrium_star(a=float(a), gb=float(1 / GI / beta), inv_theta=float(1 / th), m=float(M * th))
+    r = _k.star_m(np.array([float(a)]), gb=float(1 / GI / beta), inv_theta=float(1 / th), m=float(M * th))
+    r = type(r)(*(float(v[0]) for v in r))
     Pstar = lambda s: pp.P_44(s, DELTA, beta, th, zeta, mp) * beta / (4 * mp.pi * DELTA * th)
     dnf = lambda s: pp.delta_58(s, DELTA, R, beta, th, GI, zeta, mp) / DELTA
     dwf = lambda s: _delta_work(s, beta, th, GI, zeta) / DELTA

@@ -355,13 +355,13 @@ def star(a, m, theta, gb, ar, n=None, rel_step=3e-6):
     m = M vartheta (M_R* for vartheta = inf).  Returns arrays p = P beta*/(4 pi Delta) (P* vartheta),
     dp = dp/da, dn = delta/Delta, ddn = d(delta/Delta)/da, gP = (1/w) dG/da|_P, gd = (1/w) dG/da|_delta
     (nan when m = 0), h = h(pi)/Delta, and for the work-conjugate approach delta_work = delta + P/(8 pi G_I)
-    (derive/green.py; delta_work/Delta = dn + (gb/2) p): dw, ddw = its slope.
+    (derive/green.py; delta_work/Delta = dn + (gb/2) p): dw, ddw = its slope, gw = (1/w) dG/da|_delta_work.
     Griffith: edge coefficient k = m/pi (nu ~ -k/sqrt(eps - |phi|)).
     Slopes by central differences in a of the fixed-arc unit cases (smooth in a at fixed nodes).
     """
     a = np.atleast_1d(np.asarray(a, dtype=float))
     kw, c = m / math.pi, gb / 2            # delta_work/Delta = delta/Delta + c p
-    keys = ("p", "dp", "dn", "ddn", "gP", "gd", "h", "dw", "ddw")
+    keys = ("p", "dp", "dn", "ddn", "gP", "gd", "h", "dw", "ddw", "gw")
     out = {k: np.empty(a.size) for k in keys}
     # long increasing grids (curves): one solve per point, slopes by differences along the grid (2nd order,
     # ~1e-7 relative at 2000 points); otherwise central differences with two extra solves per point
@@ -391,10 +391,13 @@ def star(a, m, theta, gb, ar, n=None, rel_step=3e-6):
         out["dp"][i] = D0[0] + d * D1[0] + Q1[0] * dd
         out["dw"][i], out["ddw"][i] = d + c * out["p"][i], dd + c * out["dp"][i]
         if m > 0:
-            out["gd"][i] = 2 * (D0[2] + d * D1[2]) / kw
-            out["gP"][i] = 2 * (D0[2] + d * D1[2] - Q1[2] * (D0[0] + d * D1[0]) / Q1[0]) / kw
+            # dk/da at fixed d, plus dk/dd = Q1[2] times dd/da at fixed P (or at fixed d + c p)
+            dk, dp_fixed = D0[2] + d * D1[2], D0[0] + d * D1[0]
+            out["gd"][i] = 2 * dk / kw
+            out["gP"][i] = 2 * (dk - Q1[2] * dp_fixed / Q1[0]) / kw
+            out["gw"][i] = 2 * (dk - Q1[2] * c * dp_fixed / (1 + c * Q1[0])) / kw
         else:
-            out["gd"][i] = out["gP"][i] = math.nan
+            out["gd"][i] = out["gP"][i] = out["gw"][i] = math.nan
         out["h"][i] = lin.gap(math.pi, d)[0]
     return out
 

@@ -26,10 +26,11 @@ PARALLEL_MIN = 20000   # full_state uses the prange kernel from this many contac
 FullState = _state.FullState      # P, B, C, c0, c1, r0, K, G_release, delta, h_pi
 Normalised = namedtuple("Normalised", ["inv_theta", "m", "scale"])
 Pressure = namedtuple("Pressure", ["bounded", "unbounded"])
-StarM = namedtuple("StarM", _der.EquilibriumStar._fields + ("h_pi_over_Delta",))
+RELEASE_SLOPES = ("dG_da_P", "dG_da_delta", "dG_da_delta_work")   # (1/w) dG/da: undefined when w = 0
+StarM = namedtuple("StarM", _der.EquilibriumStar._fields + RELEASE_SLOPES + ("h_pi_over_Delta",))
 Star = namedtuple("Star", ["P_star", "dP_star_da", "delta_over_Delta", "ddelta_da", "dG_da_P",
-                           "dG_da_delta", "h_pi_over_Delta", "delta_work_over_Delta", "ddelta_work_da"])
-RELEASE_SLOPES = ("dG_da_P", "dG_da_delta")   # (1/w) dG/da: undefined when w = 0
+                           "dG_da_delta", "h_pi_over_Delta", "delta_work_over_Delta", "ddelta_work_da",
+                           "dG_da_delta_work"])
 
 
 # --- parameters -----------------------------------------------------------------------------------
@@ -108,10 +109,19 @@ def star_m(a, *, inv_theta, m, gb):
     out = _empty(_der.EquilibriumStar, a.size)
     _der.equilibrium_star_into(out, a=a, gb=gb, inv_theta=inv_theta, m=m if m > 0 else 1e-150)
     fields = {f: getattr(out, f) for f in _der.EquilibriumStar._fields}
-    if m <= 0:
-        fields.update({f: np.full(a.size, np.nan) for f in RELEASE_SLOPES})
+    fields.update(release_rates(out, gb) if m > 0 else {f: np.full(a.size, np.nan) for f in RELEASE_SLOPES})
     return StarM(**fields, h_pi_over_Delta=gap_pi(a, Delta=1.0, beta=1.0, inv_theta=inv_theta,
                                                     zeta=4 * math.pi * m))
+
+
+def release_rates(s, gb):
+    """(1/w) dG/da at fixed p, delta and delta_work on the equilibrium, by the chain rule the derivation checks
+    (derive/derivatives.py): dG/da|_X = -(dG/dp)|_a (dX/da)/(dX/dp)|_a with (dX/dp)|_a the fixed-arc compliance,
+    d(delta/Delta)/dp (+ gb/2 for delta_work).  Well conditioned where the direct derivatives cancel."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return {"dG_da_P": -s.dG_dp * s.dp_da,
+                "dG_da_delta": -s.dG_dp * s.ddelta_da / s.ddelta_dp,
+                "dG_da_delta_work": -s.dG_dp * s.ddelta_work_da / (s.ddelta_dp + 0.5 * gb)}
 
 
 def star(a, M, theta, gb):
@@ -121,7 +131,7 @@ def star(a, M, theta, gb):
     return Star(P_star=s.p / n.scale, dP_star_da=s.dp_da / n.scale, delta_over_Delta=s.delta_over_Delta,
                 ddelta_da=s.ddelta_da, dG_da_P=s.dG_da_P, dG_da_delta=s.dG_da_delta,
                 h_pi_over_Delta=s.h_pi_over_Delta, delta_work_over_Delta=s.delta_work_over_Delta,
-                ddelta_work_da=s.ddelta_work_da)
+                ddelta_work_da=s.ddelta_work_da, dG_da_delta_work=s.dG_da_delta_work)
 
 
 STAR_FIELDS = {"P_star": 0, "dP_star_da": 1, "delta_over_Delta": 2, "ddelta_da": 3, "delta_work_over_Delta": 4,

@@ -34,7 +34,7 @@ def _make_brent(f):
             xm = 0.5 * (c - b)
             if abs(xm) <= tol or fb == 0.0:
                 break
-            if abs(e) >= tol and abs(fa) > abs(fb):
+            if abs(e) >= tol and abs(fa) > abs(fb) and fc != 0.0:   # fc = 0 (an underflowed value): bisect
                 s = fb / fa
                 if a == c:
                     p = 2.0 * xm * s
@@ -47,7 +47,7 @@ def _make_brent(f):
                 if p > 0.0:
                     q = -q
                 p = abs(p)
-                if 2.0 * p < min(3.0 * xm * q - abs(tol * q), abs(e * q)):
+                if q != 0.0 and 2.0 * p < min(3.0 * xm * q - abs(tol * q), abs(e * q)):
                     e = d
                     d = p / q
                 else:
