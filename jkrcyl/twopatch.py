@@ -554,6 +554,19 @@ class FullContact:
     def pressure(self, phi):
         return self.N0 + self.N1 * np.cos(np.asarray(phi, dtype=float))
 
+    def in_tension(self, phi):
+        """Where the interface is in tension (n < 0) at the angles phi: for P* > 0 where cos(phi) < -N0/N1
+        (the top and the sides), for P* < 0 where cos(phi) > N0/|N1| (the bottom and the sides)."""
+        return self.pressure(phi) < 0
+
+    @property
+    def tension_half_angle(self):
+        """The tensile zone as a half-angle about phi = pi (P* > 0) or phi = 0 (P* < 0): pi if the whole
+        circle is in tension, 0 if none of it is (n >= 0 everywhere needs N0 >= |N1|, impossible for N0 < 0)."""
+        if self.tension_everywhere:
+            return math.pi
+        return math.pi - math.acos(min(1.0, -self.N0 / abs(self.N1)))
+
 
 def _full_contact_law(theta, gb, ar=0.0):
     """(N0, c) with n = N0 + N1 cos(phi) and delta/Delta = -1 + c P* in full contact.

@@ -169,6 +169,35 @@ def test_full_contact_is_the_limit_of_closing_gaps_and_energy_consistent():
     assert not tp.full_contact(th, P_star=1.01, gb=gb).tension_everywhere
 
 
+def test_full_contact_tension_zone():
+    """n = N0 + N1 cos(phi) with N0 = -1/pi (alpha* = 0), N1 = P*/pi: at P* = 2 the interface is in tension
+    where cos(phi) < 1/2, i.e. |phi| > pi/3 (the top and the sides), compressed round the bottom."""
+    fc = tp.full_contact(THETA, P_star=2.0, gb=GB)
+    assert fc.tension_half_angle == pytest.approx(2 * math.pi / 3, rel=1e-12)   # about phi = pi
+    phi = np.array([0.0, math.pi / 3 - 1e-6, math.pi / 3 + 1e-6, math.pi, -math.pi / 3 - 1e-6])
+    assert fc.in_tension(phi).tolist() == [False, False, True, True, True]
+    down = tp.full_contact(THETA, P_star=-2.0, gb=GB)          # pushed down: compressed at the top
+    assert down.in_tension(np.array([0.0, math.pi])).tolist() == [True, False]
+    assert down.tension_half_angle == pytest.approx(2 * math.pi / 3, rel=1e-12)  # about phi = 0
+    assert tp.full_contact(THETA, P_star=0.5, gb=GB).tension_half_angle == math.pi
+
+
+def test_a_path_running_into_full_contact_is_labelled_full():
+    """The branch tracer's boundaries on a zero set known in closed form, eps - eps_top = 0.3 (a stand-in for F):
+    one way it meets eps + eps_top = pi - GAP_FULL ('full'), the other way eps_top -> 0 ('single')."""
+    from jkrcyl.numerics import continuation as cont
+    f = lambda u: math.exp(u[0]) - math.exp(u[1]) - 0.3
+    for t0, label in ((np.array([1.0, 1.0]), "full"), (np.array([-1.0, -1.0]), "single")):
+        path = cont.trace(f, np.log([0.8, 0.5]), t0, tp._domain, tp._clipper(f), h0=0.05, h_max=0.5)
+        assert path.boundary == label
+        e, et = np.exp(path.points[-1])
+        assert e - et == pytest.approx(0.3, abs=1e-9)
+        if label == "full":
+            assert e + et == pytest.approx(math.pi - tp.GAP_FULL, abs=1e-9)
+        else:
+            assert et == pytest.approx(tp.EPS_AXIS, rel=1e-6)
+
+
 # --- pressure, gap, convergence ---------------------------------------------------------------------
 @pytest.fixture(scope="module")
 def state():
