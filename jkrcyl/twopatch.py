@@ -29,7 +29,8 @@ work of the pressure on the rigid overlap (5.1).  Then dU*/d(delta/Delta) = P* (
 and dU*/d eps = 2 vartheta pi^2 k_bot^2 = 2 vartheta M^2 G/w (energy release at fixed grip), which the tests
 check by finite differences.  Stability: the total potential Pi* = U* - 2 vartheta M^2 (eps + eps_top)
 (minus P* delta/Delta under load control) must be a minimum: under grip the 2x2 Hessian in (eps, eps_top),
-under load the 3x3 Hessian in (eps, eps_top, delta/Delta) must be positive definite.
+under load the 3x3 Hessian in (eps, eps_top, delta/Delta) must be positive definite, with the pin's own n = 1
+energy (c/2) P*^2 that the paper's delta leaves out (see :func:`stability`; also grip on delta_work).
 
 Mirror: turning the picture upside down (phi -> phi + pi) swaps the arcs and maps
 P* -> -P*, delta/Delta -> -2 - delta/Delta (the operator only depends on phi - psi).
@@ -253,23 +254,28 @@ def solve(M, theta, eps_top=None, eps=None, gb=None, guess=None, n=N_NODES, tol=
 
 # --- stability ------------------------------------------------------------------------------------
 def hessian(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, h=1e-6, alpha_ratio=0.0, lin=None):
-    """3x3 Hessian of Pi* in (eps, eps_top, delta/Delta) at fixed load (the last row/column drops at fixed grip).
+    """3x3 Hessian of Pi* in (eps, eps_top, delta/Delta) at fixed load (the last row/column drops at fixed grip),
+    and the gradient of P* in the same variables.
 
     d Pi*/d eps_i = 2 vartheta (pi^2 k_i^2 - M^2), d Pi*/d delta = P* - P*_applied, so the entries are
     4 vartheta pi^2 k_i dk_i/d eps_j (central differences at fixed delta), 4 vartheta pi^2 k_i k1_i and
     dP*/d delta = q1[P].  The eps block is symmetrised (Maxwell; the asymmetry is a check in the tests).
     lin: the fixed-arc pieces at (eps, eps_top) if already computed (e.g. the state's own).
+    Returns (H, He, gP): He the unsymmetrised eps block, gP = (dP*/d eps, dP*/d eps_top, dP*/d(delta/Delta)).
     """
     d = delta_over_Delta
     ar = alpha_ratio
-    k = lambda e, et: (lambda L: L.q0[2:4] + d * L.q1[2:4])(_linear(e, et, theta, gb, n, ar))
+    pick = [2, 3, 0]                                          # k_bot, k_top, P* of the fixed-arc pieces
+    kP = lambda e, et: (lambda L: L.q0[pick] + d * L.q1[pick])(_linear(e, et, theta, gb, n, ar))
     lin = _linear(eps, eps_top, theta, gb, n, ar) if lin is None else lin
     kk = lin.q0[2:4] + d * lin.q1[2:4]
-    dk = np.empty((2, 2))
+    dkP = np.zeros((3, 2))
     h0, h1 = min(h, 0.1 * eps), min(h, 0.1 * eps_top)        # relative steps near an axis
-    dk[:, 0] = (k(eps + h0, eps_top) - k(eps - h0, eps_top)) / (2 * h0)
+    dkP[:, 0] = (kP(eps + h0, eps_top) - kP(eps - h0, eps_top)) / (2 * h0)
     # eps_top = 0: the single arc; the top row/column is decoupled (set to the identity)
-    dk[:, 1] = (k(eps, eps_top + h1) - k(eps, eps_top - h1)) / (2 * h1) if eps_top > 0 else 0.0
+    if eps_top > 0:
+        dkP[:, 1] = (kP(eps, eps_top + h1) - kP(eps, eps_top - h1)) / (2 * h1)
+    dk = dkP[:2]
     c = 4 * theta * math.pi ** 2
     H = np.empty((3, 3))
     He = c * kk[:, None] * dk
@@ -279,15 +285,31 @@ def hessian(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, h=1e-6, alp
     if eps_top == 0:
         H[1, :] = H[:, 1] = 0.0
         H[1, 1] = 1.0
-    return H, He
+    return H, He, np.array([dkP[2, 0], dkP[2, 1], lin.q1[0]])
+
+
+def _positive_definite(H):
+    return bool(np.all(np.linalg.eigvalsh(H) > 0))
 
 
 def stability(eps, eps_top, delta_over_Delta, M, theta, gb, n=N_NODES, alpha_ratio=0.0, lin=None):
-    """(stable_load, stable_grip): positive definiteness of the 3x3 and the 2x2 Hessians."""
-    H, _ = hessian(eps, eps_top, delta_over_Delta, M, theta, gb, n, alpha_ratio=alpha_ratio, lin=lin)
-    grip = bool(np.all(np.linalg.eigvalsh(H[:2, :2]) > 0))
-    load = bool(np.all(np.linalg.eigvalsh(H) > 0))
-    return load, grip
+    """(stable_load, stable_grip, stable_grip_work): second variations of the total potential.
+
+    Pi* uses the elastic energy U* = [(1 + delta/Delta) P* - B*]/2 of the paper's approach delta; the true elastic
+    energy adds the pin's own n = 1 field, (c/2) P*^2 with c = (gb/2) vartheta, the step from delta/Delta to the
+    work-conjugate delta_work/Delta = delta/Delta + c P* (derive/green.py).  So, in (eps, eps_top, delta/Delta):
+
+    * load: H + c gP gP^T positive definite (3x3; H alone misjudges where the paper's delta has a negative
+      fixed-arc stiffness q1[P] < 0);
+    * grip (the paper's delta held, as section 8): the eps block of H positive definite (2x2);
+    * grip-work (delta_work held): H + c gP gP^T restricted to the directions that keep delta_work fixed
+      (d delta = -c dP*), positive definite (2x2).
+    """
+    H, _, g = hessian(eps, eps_top, delta_over_Delta, M, theta, gb, n, alpha_ratio=alpha_ratio, lin=lin)
+    cw = 0.5 * gb * (1.0 if math.isinf(theta) else theta)
+    Ht = H + cw * np.outer(g, g)
+    T = np.vstack([np.eye(2), -cw * g[:2] / (1.0 + cw * g[2])])       # (d eps, d eps_top) at fixed delta_work
+    return _positive_definite(Ht), _positive_definite(H[:2, :2]), _positive_definite(T.T @ Ht @ T)
 
 
 # --- branches -----------------------------------------------------------------------------------------
@@ -303,7 +325,8 @@ class TwoPatchCurve:
     """One branch of two-patch equilibria, ordered along the curve (numpy arrays).
 
     Fields as :class:`jkrcyl.equilibria.Curve` (a, eps, eps_star, P_star, delta_over_Delta, feasible,
-    stable_load, stable_grip) plus a_top, eps_top, eps_top_star, gap_min (min h/Delta outside both arcs),
+    stable_load, stable_grip; stable_grip_work: at fixed work-conjugate approach) plus a_top, eps_top,
+    eps_top_star, gap_min (min h/Delta outside both arcs),
     G_bot, G_top (G/w, = 1 on the branch) and ``ends``: how each end finishes -- 'single' (a_top -> 0,
     the single-patch state with h(pi) = 0), 'mirror' (a -> 0, the upside-down single patch),
     'full' (eps + eps_top -> pi: runs into full contact) or 'loop' (closed curve).
@@ -324,6 +347,7 @@ class TwoPatchCurve:
     feasible: np.ndarray
     stable_load: np.ndarray
     stable_grip: np.ndarray
+    stable_grip_work: np.ndarray
     G_bot: np.ndarray
     G_top: np.ndarray
     ends: tuple
@@ -519,6 +543,7 @@ def _curve(points, ends, M, th, gb, n, ar=0.0):
                          eps_star=2 * np.arctan(a / ac) / math.pi, eps_top_star=2 * np.arctan(at / ac) / math.pi,
                          P_star=arr("P_star"), delta_over_Delta=arr("delta_over_Delta"), gap_min=arr("gap_min"),
                          feasible=arr("gap_min") >= -1e-9, stable_load=stab[:, 0], stable_grip=stab[:, 1],
+                         stable_grip_work=stab[:, 2],
                          G_bot=arr("G_bot"), G_top=arr("G_top"), ends=tuple(ends), alpha_ratio=ar)
 
 
@@ -720,6 +745,19 @@ LOAD_PATH_GRID = 3000        # points per single-patch branch on which the load 
 LOAD_PATH_GRID_ALPHA = 800   # alpha* != 0: one collocation solve per point
 
 
+def _local_min_P(a_lo, a_hi, M, th, gb, n, ar):
+    """min of P* over single arcs with a_lo <= a <= a_hi (bounded Brent in eps; Griffith k = M/pi)."""
+    from scipy.optimize import minimize_scalar
+
+    def P(eps):
+        lin = _linear(eps, 0.0, th, gb, n, ar)
+        return float(lin.q0[0] + (M / math.pi - lin.q0[2]) / lin.q1[2] * lin.q1[0])
+    lo, hi = 2 * math.atan(a_lo), 2 * math.atan(a_hi)
+    if not hi > lo:
+        return P(lo)
+    return float(minimize_scalar(P, bounds=(lo, hi), method="bounded", options={"xatol": 1e-12 * hi}).fun)
+
+
 def _grows_under_pull(eps, th, gb, n, ar=0.0):
     """At fixed single arc eps: does a lower P* lower G (dG/dP* > 0), so that the contact grows?
 
@@ -759,9 +797,12 @@ def confined_events(M, theta, gb=None, n=N_NODES, alpha_ratio=0.0):
     start = (float(c.a[i]), float(c.P_star[i]))
     if event in ("fold", "none"):
         P_fold = float(c.P_star[j])
-        pts = eq.stationary_points(M, th, "load", c.regime, gb=gb, alpha_ratio=ar)
-        if pts:                                     # the exact P* minimum next to the grid point
-            P_fold = min(pts, key=lambda p: abs(p.a - c.a[j])).P_star
+        if ar == 0.0:
+            pts = eq.stationary_points(M, th, "load", c.regime, gb=gb, alpha_ratio=ar)
+            if pts:                                 # the exact P* minimum next to the grid point
+                P_fold = min(pts, key=lambda p: abs(p.a - c.a[j])).P_star
+        else:       # the solver's stationary points cost a root grid over the whole branch: refine locally
+            P_fold = min(P_fold, _local_min_P(c.a[max(j - 1, 0)], c.a[min(j + 1, c.a.size - 1)], M, th, gb, n, ar))
         regime = "zip-full" if _grows_under_pull(float(c.eps[j]), th, gb, n, ar) else "detachment"
         return ConfinedEvents(M, th, regime, start, P_fold, nan, tuple(onsets), bool(grip_pts), any_load,
                               any_grip, full, bs)

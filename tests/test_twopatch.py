@@ -255,7 +255,7 @@ def test_hessian_stability_of_a_single_arc_matches_closed_form(M, regime, a):
     dG/da|_delta and dG/da|_P of the closed form (jkrcyl.equilibria)."""
     ref = eq.curve(M, THETA, regime, a=np.array([a]))
     e = 2 * math.atan(a)
-    H, _ = tp.hessian(e, 0.0, float(ref.delta_over_Delta[0]), M, THETA, GB)
+    H, _, _ = tp.hessian(e, 0.0, float(ref.delta_over_Delta[0]), M, THETA, GB)
     sub = H[np.ix_([0, 2], [0, 2])]
     assert (H[0, 0] > 0) == bool(ref.stable_grip[0])
     assert bool(np.all(np.linalg.eigvalsh(sub) > 0)) == bool(ref.stable_load[0])
@@ -263,7 +263,7 @@ def test_hessian_stability_of_a_single_arc_matches_closed_form(M, regime, a):
 
 def test_hessian_is_symmetric(state):
     """Maxwell: d(G_bot)/d eps_top = d(G_top)/d eps at fixed delta (the solver symmetrises; check first)."""
-    _, He = tp.hessian(state.eps, state.eps_top, state.delta_over_Delta, 0.4, THETA, GB)
+    _, He, _ = tp.hessian(state.eps, state.eps_top, state.delta_over_Delta, 0.4, THETA, GB)
     assert He[0, 1] == pytest.approx(He[1, 0], rel=1e-6)
 
 
@@ -501,7 +501,7 @@ def test_alpha_hessian_stability_of_a_single_arc_matches_the_solver_curve(ar, re
     dG/da|_P that jkrcyl.equilibria gets from the single-arc solver (unit-case slopes in a)."""
     M = 0.4
     ref = eq.curve(M, THETA, regime, a=np.array([a]), gb=GB, alpha_ratio=ar)
-    H, _ = tp.hessian(2 * math.atan(a), 0.0, float(ref.delta_over_Delta[0]), M, THETA, GB, alpha_ratio=ar)
+    H, _, _ = tp.hessian(2 * math.atan(a), 0.0, float(ref.delta_over_Delta[0]), M, THETA, GB, alpha_ratio=ar)
     assert (H[0, 0] > 0) == bool(ref.stable_grip[0])
     assert bool(np.all(np.linalg.eigvalsh(H[np.ix_([0, 2], [0, 2])]) > 0)) == bool(ref.stable_load[0])
 
@@ -524,9 +524,9 @@ def test_cli_two_patch_and_confined_report_for_a_pair_with_alpha(capsys):
     """jkrcyl two-patch and adherence with physical inputs whose alpha* != 0 (Contact.two_patch/confined_events
     take alpha* too).  References: every CSV/JSON row is a two-arc Griffith state of the alpha* kernel (G = w
     at both ends from the fixed-arc engine, and NOT one of the alpha* = 0 kernel: alpha* was used); the fold
-    P_fold is the minimum of P* over single arcs found by golden-section search (scipy minimize_scalar on
-    fixed-arc Griffith states, another node count), not the solver's root finding of dP*/da; it differs from
-    the closed-form alpha* = 0 fold."""
+    P_fold is the minimum of P* over the whole super-critical range (bounded Brent at 64 nodes, where
+    confined_events refines locally at its own node count) and the root of dP*/da of jkrcyl.equilibria (the
+    report's own fixed-load adherence point, another algorithm); it differs from the closed-form alpha* = 0 fold."""
     mat = Materials.from_young(2.5, 0.25, 2.8, 0.4)
     c = Contact(R=1.0, Delta=0.01, w=1e-4, materials=mat)
     M, th, gb = eq.from_contact(c)
@@ -544,7 +544,8 @@ def test_cli_two_patch_and_confined_report_for_a_pair_with_alpha(capsys):
                 off.append(abs(tp.fixed_arcs(e, et, d, M, th, gb).G_bot - 1))
     assert off and max(off) > 1e-3
     assert cli.main(["adherence", *PHYS_ALPHA, "--format", "json"]) == 0
-    conf = json.loads(capsys.readouterr().out)["confined"]
+    rep = json.loads(capsys.readouterr().out)
+    conf = rep["confined"]
     assert conf is not None and conf["regime"] in tp.REGIMES
     assert conf["regime"] in ("zip-full", "detachment") and conf["P_fold"] is not None
     from scipy.optimize import minimize_scalar
@@ -557,6 +558,7 @@ def test_cli_two_patch_and_confined_report_for_a_pair_with_alpha(capsys):
     r = minimize_scalar(P, bounds=(e_c + 0.2, 2.6), method="bounded", options={"xatol": 1e-9})
     assert e_c + 0.21 < r.x < 2.59                # an interior minimum (the super-critical fold)
     assert conf["P_fold"] == pytest.approx(r.fun, rel=1e-8)
+    assert conf["P_fold"] == pytest.approx(min(p["P_star"] for p in rep["load"]), rel=1e-8)
     closed = min(p.P_star for p in eq.adherence(M, th, "load", gb=gb))
     assert abs(conf["P_fold"] - closed) > 1e-3
     for e, P_on, d_on, _ in conf["onsets"]:     # h(pi) = 0 there, from the single-arc engine
