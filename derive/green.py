@@ -409,7 +409,18 @@ def derive(report):
              "Arguments: ar = alpha*/beta*, gb = (1/G_I)/beta*, inv_theta = 1/vartheta.")
     doc_w = ("Work-conjugate approach delta_work = delta + P/(8 pi G_I) [m] (derive/green.py).\n"
              "delta [m] as (5.8), P [N/m] (2.2), inv_G_I = 1/G_I [1/Pa].")
+    dn, p_star = sp.symbols("delta_over_Delta p", real=True)
+    Dl, bt = sp.symbols("Delta beta", positive=True)
+    work_star = dn + gb * p_star / 2
+    dimensional = (dn * Dl + work_shift(4 * sp.pi * Dl * p_star / bt, gb * bt)) / Dl   # P = 4 pi Delta p/beta*
+    _require("normalised work-conjugate approach", sp.simplify(dimensional - work_star))
+    report.proof("normalised: delta_work/Delta = delta/Delta + (gb/2) p with p = P beta*/(4 pi Delta) (= vartheta P*) "
+                 "and gb = (1/G_I)/beta* (sympy: equal to the dimensional form)")
+    doc_s = ("Normalised work-conjugate approach delta_work/Delta = delta/Delta + (gb/2) p (derive/green.py):\n"
+             "p = P beta*/(4 pi Delta) (= vartheta P*, P_R* for vartheta = inf), gb = (1/G_I)/beta*.")
     return [Kernel("kernel_constants", (("k0", k0n), ("k1", k1n), ("k1_work", k1wn), ("ka", ar)), doc_k,
                    array_args=("ar",), extra_args=(ar, gb, inv_theta)),
             Kernel("approach_work", (("delta_work", delta + work_shift(P, inv_G_I)),), doc_w,
-                   array_args=("P", "delta"), forms=("into",))]
+                   array_args=("P", "delta"), forms=("into",)),
+            Kernel("approach_work_star", (("delta_work_over_Delta", work_star),), doc_s,
+                   array_args=("delta_over_Delta", "p"), forms=("into",))]

@@ -43,3 +43,22 @@ def approach_work_into(out, P, delta, inv_G_I):
     """
     for i in range(P.shape[0]):
         out[i] = approach_work(P[i], delta[i], inv_G_I)
+
+
+@njit(cache=True)
+def approach_work_star(delta_over_Delta, gb, p):
+    """
+    Normalised work-conjugate approach delta_work/Delta = delta/Delta + (gb/2) p (derive/green.py):
+    p = P beta*/(4 pi Delta) (= vartheta P*, P_R* for vartheta = inf), gb = (1/G_I)/beta*.
+    """
+    delta_work_over_Delta = delta_over_Delta + (1/2)*gb*p
+    return delta_work_over_Delta
+
+
+@njit(cache=True)
+def approach_work_star_into(out, delta_over_Delta, gb, p):
+    """
+    approach_work_star at every delta_over_Delta, p[i], into out (a 1-D array of the same length).
+    """
+    for i in range(delta_over_Delta.shape[0]):
+        out[i] = approach_work_star(delta_over_Delta[i], gb, p[i])

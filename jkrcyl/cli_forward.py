@@ -83,15 +83,17 @@ def write_rows(rows, fmt, out=sys.stdout, meta=None):
 
 # --- solve ---------------------------------------------------------------------------------------------
 def cmd_solve(args):
-    from .forward import BRANCH_SOLVERS
+    from .forward import BRANCH_SOLVERS, CONTROLS
     c = contact_from(args)
-    if (args.P is None) == (args.delta is None):
-        raise ValueError("P: give exactly one of --P [N/m] and --delta [m]")
+    given = {k: getattr(args, k) for k in ("P", "delta", "delta_work") if getattr(args, k) is not None}
+    if len(given) != 1:
+        raise ValueError("P: give exactly one of --P [N/m], --delta [m] and --delta-work [m]")
     branches = None
     if args.no_two_patch:
         branches = [b for b in BRANCH_SOLVERS if b != "two-patch"]
-    states = c.solve(P=args.P, delta=args.delta, branches=branches)
-    meta = {"M": c.M, "theta": c.theta, "control": "load" if args.P is not None else "grip"}
+    states = c.solve(**given, branches=branches)
+    control = next(k for k, spec in CONTROLS.items() if spec[3] in given)
+    meta = {"M": c.M, "theta": c.theta, "control": control}
     write_rows([s.as_dict() for s in states], args.format, meta=meta)
     return 0
 
@@ -99,12 +101,15 @@ def cmd_solve(args):
 def register(sub, number_type):
     """Add the forward-problem commands to the subparsers of jkrcyl.cli."""
     s = sub.add_parser("solve", help="every equilibrium at a load P [N/m] or an approach delta [m]",
-                       description="Every equilibrium at the given load per unit length (--P, fixed-load stability) "
-                                   "or approach (--delta, fixed-grip stability) on every branch, sorted by contact "
-                                   "size. Physical inputs only.")
+                       description="Every equilibrium at the given load per unit length (--P, fixed-load stability), "
+                                   "work-conjugate approach (--delta-work, stability with a testing machine holding "
+                                   "the pin) or the paper's approach (--delta, (5.8)) on every branch, sorted by "
+                                   "contact size. Physical inputs only.")
     add_physical(s, number_type)
     s.add_argument("--P", type=number_type, help="load per unit length [N/m], positive downward")
-    s.add_argument("--delta", type=number_type, help="approach [m], positive downward")
+    s.add_argument("--delta", type=number_type, help="the paper's approach (5.8) [m], positive downward")
+    s.add_argument("--delta-work", type=number_type,
+                   help="work-conjugate approach delta + P/(8 pi G_I) [m], positive downward")
     s.add_argument("--no-two-patch", action="store_true", help="skip the two-patch branches (faster)")
     s.add_argument("--format", choices=("csv", "json"), default="csv", help="output format (default csv)")
     s.set_defaults(func=cmd_solve)
@@ -115,20 +120,22 @@ def register(sub, number_type):
 def cmd_pull_off(args):
     c = contact_from(args)
     rows = []
-    for control in ("load", "grip"):
+    for control in ("load", "grip-work", "grip"):
         po = c.pull_off(control)
         rows.append({"control": control, "detached": po.detached, "P": po.P if po.detached else math.nan,
                      "contact_width": po.contact_width if po.detached else math.nan,
-                     "delta": po.delta if po.detached else math.nan, "reason": po.reason})
+                     "delta": po.delta if po.detached else math.nan,
+                     "delta_work": po.delta_work if po.detached else math.nan, "reason": po.reason})
     if args.format == "json":
         write_rows(rows, "json")
         return 0
     for r in rows:
         if r["detached"]:
-            print(f"{r['control']:4s}: pull-off P = {number(r['P'])} N/m, contact width = "
-                  f"{number(r['contact_width'])} m, delta = {number(r['delta'])} m")
+            print(f"{r['control']:9s}: pull-off P = {number(r['P'])} N/m, contact width = "
+                  f"{number(r['contact_width'])} m, delta = {number(r['delta'])} m, delta_work = "
+                  f"{number(r['delta_work'])} m")
         else:
-            print(f"{r['control']:4s}: no detachment -- {r['reason']}")
+            print(f"{r['control']:9s}: no detachment -- {r['reason']}")
     return 0
 
 
@@ -158,8 +165,10 @@ def cmd_cycle(args):
 
 def register_more(sub, number_type):
     p = sub.add_parser("pull-off", help="pull-off force [N/m], contact width and approach (load and grip)",
-                       description="Detachment along the stable path from the zero-load contact, under load and "
-                                   "under grip control, or the reason there is none.")
+                       description="Detachment along the stable path from the zero-load contact, under load, "
+                                   "under grip on the work-conjugate approach (grip-work: a testing machine "
+                                   "holding the pin) and on the paper's approach (grip), or the reason there is "
+                                   "none.")
     add_physical(p, number_type)
     p.add_argument("--format", choices=("text", "json"), default="text", help="output format (default text)")
     p.set_defaults(func=cmd_pull_off)
@@ -168,12 +177,14 @@ def register_more(sub, number_type):
                                    "again along the stable branch; jumps listed; energy dissipated per cycle "
                                    "(loop area) [J/m].")
     add_physical(c, number_type)
-    c.add_argument("--control", choices=("load", "grip"), default="load", help="driven quantity (default load)")
+    c.add_argument("--control", choices=("load", "grip-work", "grip"), default="load",
+                   help="driven quantity: load, the work-conjugate approach (grip-work) or the paper's (grip); "
+                        "default load")
     c.add_argument("--P-max", type=number_type, help="largest load [N/m] (load control)")
     c.add_argument("--P-min", type=number_type, help="smallest load [N/m] (load control)")
-    c.add_argument("--delta-max", type=number_type, help="largest approach [m] (grip control)")
-    c.add_argument("--delta-min", type=number_type, help="smallest approach [m] (grip control)")
+    c.add_argument("--delta-max", type=number_type, help="largest held approach [m] (grip controls)")
+    c.add_argument("--delta-min", type=number_type, help="smallest held approach [m] (grip controls)")
     c.add_argument("--n", type=int, default=2000, help="path points at most (default 2000)")
-    c.add_argument("--plot", default=None, help="P-delta plot with the jumps as arrows (PNG or PDF)")
+    c.add_argument("--plot", default=None, help="P-delta_work plot with the jumps as arrows (PNG or PDF)")
     c.add_argument("--csv", default=None, help="the path as CSV (physical units)")
     c.set_defaults(func=cmd_cycle)

@@ -144,13 +144,15 @@ class Contact:
         return twopatch.confined_events(M, th, gb=gb, alpha_ratio=self.materials.alpha_ratio)
 
     # --- forward problems (jkrcyl.forward, jkrcyl.cycle) -------------------------------------------------
-    def solve(self, P=None, delta=None, branches=None):
-        """Every equilibrium at load P [N/m] or approach delta [m] (exactly one): :func:`jkrcyl.forward.solve`."""
+    def solve(self, P=None, delta=None, branches=None, delta_work=None):
+        """Every equilibrium at load P [N/m], the paper's approach delta [m] or the work-conjugate approach
+        delta_work [m] (exactly one; stability under that control): :func:`jkrcyl.forward.solve`."""
         from .forward import solve
-        return solve(self, P=P, delta=delta, branches=branches)
+        return solve(self, P=P, delta=delta, branches=branches, delta_work=delta_work)
 
     def pull_off(self, control="load"):
-        """Detachment along the stable path (force [N/m], width, approach) or why not: :func:`jkrcyl.forward.pull_off`."""
+        """Detachment along the stable path (force [N/m], width, approach) or why not, under control 'load',
+        'grip-work' (a machine holding delta_work) or 'grip' (the paper's delta): :func:`jkrcyl.forward.pull_off`."""
         from .forward import pull_off
         return pull_off(self, control)
 

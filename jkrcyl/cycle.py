@@ -1,6 +1,7 @@
 """Quasi-static load cycles: the path an experiment follows, its jumps and the energy it dissipates (issue 11).
 
-``Contact.cycle(P_max=..., P_min=..., control="load")`` (or ``delta_max=, delta_min=, control="grip"``) starts at
+``Contact.cycle(P_max=..., P_min=..., control="load")`` (or ``delta_max=, delta_min=`` with ``control="grip-work"``, the
+work-conjugate approach held by a testing machine, or ``control="grip"``, the paper's approach (5.8)) starts at
 first contact -- the free pin touching the bottom of the hole (P = 0, delta = 0) snaps in to the stable
 zero-load contact (8.1) (to the stable contact at delta = 0 under grip) -- drives the load (approach) up to the
 maximum, down to the minimum and up again, following the stable, feasible branch, and jumps where it ends:
@@ -12,11 +13,11 @@ maximum, down to the minimum and up again, following the stable, feasible branch
 * ``zip``: a super-critical fold: a further pull lowers G, the contact grows (two patches, full contact);
 * ``top-contact``: the gap at phi = pi closes (h(pi) = 0): the next stable state at the same load/approach.
 
-Jumps happen at fixed load (control='load') or fixed approach (control='grip').  The energy dissipated per
+Jumps happen at fixed load (control='load') or fixed approach (control='grip', 'grip-work').  The energy dissipated per
 cycle is the area of the closed steady loop, the work of the load around it, int P d(delta) [J/m]
 (a closed loop has the same area in delta and in delta + c P, so the rigid-body term of (5.2) does not matter).
-Along branches the integral is done by Gauss-Legendre in the contact parameter; a jump at fixed load adds
-P (delta_2 - delta_1), one at fixed approach nothing.
+Along branches the integral is done by Gauss-Legendre in the contact parameter; a jump is a straight segment in
+the P-delta plane (fixed P, fixed delta, or fixed delta + c P), so the trapezoid rule is exact on it.
 """
 from __future__ import annotations
 
@@ -65,13 +66,14 @@ class Cycle:
     Attributes
     ----------
     control : str
-        'load' or 'grip'.
+        'load', 'grip' or 'grip-work' (jkrcyl.forward.CONTROLS).
     P, delta : ndarray
         The path in the load-approach plane [N/m], [m] (jumps are straight segments between two points); delta is
-        the paper's approach (5.8), driven under control='grip'.
+        the paper's approach (5.8), held under control='grip'.
     delta_work : ndarray
         The work-conjugate approach delta + P/(8 pi G_I) [m] (Contact.approach_work, derive/green.py) along the
-        path: the P-delta_work plane is where the loop area is the energy dissipated and the slope a stiffness.
+        path, held under control='grip-work': the P-delta_work plane is where the loop area is the energy
+        dissipated and the slope a stiffness.
     branch, a, stable : ndarray
         Branch name, contact parameter and stability (under the control) at each path point.
     leg : ndarray of int
@@ -122,13 +124,12 @@ class _Track:
         self.P = sgn * np.asarray(c.P_star) * ct.load_scale
         d = np.asarray(c.delta_over_Delta) * ct.Delta
         self.delta = -2 * ct.Delta - d if side == "top" else d
-        self.stable = np.asarray(c.stable_load if control == "load" else c.stable_grip)
-        if pb.M == 0:
-            self.stable = np.asarray(fw._stability(c, regime, 0.0)[0])
+        self.delta_work = ct.approach_work(self.P, self.delta)
+        self.stable = np.asarray(fw._stability(c, regime, pb.M)[list(fw.CONTROLS).index(control)])
         self.feasible = np.asarray(c.feasible)
 
     def y(self):
-        return self.P if self.control == "load" else self.delta
+        return getattr(self, fw.CONTROLS[self.control][3])
 
     def state_at(self, a):
         return fw.single_patch_states(self.pb, self.regime, a, self.control, self.side)[0]
@@ -137,12 +138,12 @@ class _Track:
         """The state between grid points lo, hi where the driven quantity equals target."""
         ct = self.pb.contact
         sgn = -1.0 if self.side == "top" else 1.0
+        key = fw.CONTROLS[self.control][0]
         if self.control == "load":
             t = sgn * target / ct.load_scale
-            f = lambda x: float(fw._curve(self.pb, self.regime, x).P_star[0]) - t
-        else:
+        else:                        # the mirror maps either approach to -2 Delta minus itself
             t = (-2 - target / ct.Delta) if self.side == "top" else target / ct.Delta
-            f = lambda x: float(fw._curve(self.pb, self.regime, x).delta_over_Delta[0]) - t
+        f = lambda x: float(getattr(fw._curve(self.pb, self.regime, x), key)[0]) - t
         x0, x1 = float(self.a[lo]), float(self.a[hi])
         return self.state_at(fw._refine(f, min(x0, x1), max(x0, x1)) if f(x0) * f(x1) < 0 else x1)
 
@@ -185,7 +186,7 @@ def _other(side):
 
 def _land(pb, s, event, control, value, up):
     """The state a jump from s lands on, at the same load / approach ``value``, and the jump's kind."""
-    kw = {"P": value} if control == "load" else {"delta": value}
+    kw = {fw.CONTROLS[control][3]: value}
     # two-patch states are traced by continuation (seconds): only where the contact grows or the top closes
     quick = event == "touch" or (event == "fold" and s.branch.startswith("sub-critical"))
     names = [b for b in fw.BRANCH_SOLVERS if not (quick and b == "two-patch")]
@@ -201,7 +202,7 @@ def _land(pb, s, event, control, value, up):
         same = [x for x in cands if x.side == s.side and x.size < s.size]
         if same:
             return max(same, key=lambda x: x.size), "pull-off"
-        if control == "grip":
+        if control != "load":
             sep = [x for x in cands if x.branch == "separated"]
             if sep:
                 return sep[0], "pull-off"
@@ -235,16 +236,17 @@ class _Path:
 
     def leg(self, s, target, leg):
         """Drive from state s to target; returns the end state or (None, note)."""
-        up = target > (s.P if self.control == "load" else s.delta)
+        held = fw.CONTROLS[self.control][3]
+        up = target > getattr(s, held)
         self.add(s, leg)                                  # the leg starts where the last one ended
         for _ in range(20):                              # at most 20 jumps per leg
             s, event = self._follow(s, target, leg)
             if event == "target":
                 return s, ""
-            value = s.P if self.control == "load" else s.delta
-            if s.branch == "separated" and self.control == "grip":
+            value = getattr(s, held)
+            if s.branch == "separated" and self.control != "load":
                 value = 0.0 if up else -2 * self.pb.contact.Delta
-                s = fw.separated_state(self.pb, value / self.pb.contact.Delta, "grip")
+                s = fw.separated_state(self.pb, value / self.pb.contact.Delta, self.control)
                 self.add(s, leg)
             to, kind = _land(self.pb, s, event, self.control, value, up)
             if to is None:
@@ -258,14 +260,12 @@ class _Path:
         """Move along the current branch; returns (state, event)."""
         ctl = self.control
         if s.branch == "full-contact":
-            kw = {"P_star": target / self.pb.load_scale} if ctl == "load" else \
-                {"delta_over_Delta": target / self.pb.contact.Delta}
-            key, t = next(iter(kw.items()))
-            e = fw.full_contact_state(self.pb, key, t, ctl)
+            t = target / (self.pb.load_scale if ctl == "load" else self.pb.contact.Delta)
+            e = fw.full_contact_state(self.pb, fw.CONTROLS[ctl][0], t, ctl)
             self.add(e, leg)
             return e, "target"
         if s.branch == "separated":
-            if ctl == "grip" and -2 * self.pb.contact.Delta < target < 0:
+            if ctl != "load" and -2 * self.pb.contact.Delta < target < 0:
                 e = fw.separated_state(self.pb, target / self.pb.contact.Delta, ctl)
                 self.add(e, leg)
                 return e, "target"
@@ -288,8 +288,9 @@ class _Path:
             if best is None or d.min() < best[0]:
                 best = (d.min(), b, int(np.argmin(d)))
         _, b, i = best
-        y = (b.P_star * ct.load_scale) if ctl == "load" else (b.delta_over_Delta * ct.Delta)
-        stable = b.stable_load if ctl == "load" else b.stable_grip
+        key, _, stab, _ = fw.CONTROLS[ctl]
+        y = fw._value(self.pb, b, key) * (ct.load_scale if ctl == "load" else ct.Delta)
+        stable = getattr(b, stab)
         sgn = 1 if target > y[i] else -1
         step = next((k - i for k in (i - 1, i + 1) if 0 <= k < y.size and sgn * (y[k] - y[i]) > 0), None)
         if step is None:
@@ -336,13 +337,14 @@ def cycle(contact, P_max: Optional[float] = None, P_min: Optional[float] = None,
         Needs Delta > 0.
     P_max, P_min : float
         Load limits [N/m] (control='load'), P_min < P_max; positive pushes the pin into the hole (section 6).
-    control : {'load', 'grip'}
-        What is driven; jumps happen at fixed load or fixed approach.
+    control : {'load', 'grip', 'grip-work'}
+        What is driven; jumps happen at fixed load or fixed approach ('grip': the paper's delta (5.8);
+        'grip-work': the work-conjugate delta_work = delta + P/(8 pi G_I), a testing machine holding the pin).
     n : int
         Points of the returned path at most, 10 <= n <= 1e6 (the path is thinned evenly; jumps and turning points
         kept).
     delta_max, delta_min : float
-        Approach limits [m] (control='grip', the approach of (5.8)), delta_min < delta_max.
+        Limits [m] of the held approach (delta for control='grip', delta_work for 'grip-work'), delta_min < delta_max.
 
     Returns
     -------
@@ -355,8 +357,7 @@ def cycle(contact, P_max: Optional[float] = None, P_min: Optional[float] = None,
     ValueError
         Naming the parameter: a missing or reversed limit pair, ``control``, ``n``, or Delta = 0.
     """
-    if control not in ("load", "grip"):
-        raise ValueError(f"control must be 'load' or 'grip', got {control!r}")
+    fw.check_control(control)
     contact._require_clearance("cycle")
     n = int(finite_scalar("n", n, low=10, high=1e6))
     if control == "load":
@@ -367,7 +368,7 @@ def cycle(contact, P_max: Optional[float] = None, P_min: Optional[float] = None,
             raise ValueError(f"P_min must be < P_max, got P_min = {lo:g}, P_max = {hi:g}")
     else:
         if delta_max is None or delta_min is None:
-            raise ValueError("delta_max: control='grip' needs delta_max and delta_min [m]")
+            raise ValueError(f"delta_max: control={control!r} needs delta_max and delta_min [m]")
         hi, lo = finite_scalar("delta_max", delta_max), finite_scalar("delta_min", delta_min)
         if not lo < hi:
             raise ValueError(f"delta_min must be < delta_max, got delta_min = {lo:g}, delta_max = {hi:g}")
@@ -439,16 +440,16 @@ def loop_energy(path, first_leg: int) -> float:
     float
         The energy dissipated per cycle per unit length [J/m].
 
-    Single-patch stretches by Gauss-Legendre in a, P d(delta)/da from jkrcyl.equilibria slopes; jumps at fixed load
-    add P (delta_2 - delta_1), at fixed approach nothing; two-patch and full-contact stretches by the trapezoid
-    rule on their points (full contact: delta is linear in P, so exact).
+    Single-patch stretches by Gauss-Legendre in a, P d(delta)/da from jkrcyl.equilibria slopes; jumps (straight
+    segments at fixed P, delta or delta_work) and two-patch and full-contact stretches by the trapezoid rule on
+    their points (exact on straight segments; full contact: delta is linear in P).
     """
     pts = [p for p in path.pts if p[5] in (first_leg, first_leg + 1)]
     total, k = 0.0, 0
     while k < len(pts) - 1:
         p, q = pts[k], pts[k + 1]
         if p[2] != q[2]:                                  # a jump between branches
-            total += p[0] * (q[1] - p[1]) if path.control == "load" else 0.0
+            total += 0.5 * (p[0] + q[0]) * (q[1] - p[1])     # straight segment: exact
             k += 1
             continue
         m = k + 1                                         # the monotone run of a on this branch

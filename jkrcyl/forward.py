@@ -28,11 +28,26 @@ import numpy as np
 
 from . import equilibria as eq
 from ._validate import finite_scalar
+from .numerics import kernels as _k
 
 ROOT_GRID = 4000          # grid points per single-patch branch (uniform in eps*) for sign changes
 ROOT_GRID_ALPHA = 400     # alpha* != 0: one collocation solve per point
 SMALL_A_POINTS = 200      # extra log-spaced points between A_MIN and the first grid point
 A_MIN = 1e-15             # smallest contact parameter searched (states with a < A_MIN are not reported)
+
+#: The controls: what is held fixed -> (normalised key on the branches, its slope along a Curve, the stability
+#: field, the physical field).  'grip' holds the paper's approach delta (5.8) (the rims' approach, as in section
+#: 8); 'grip-work' holds the work-conjugate approach delta_work = delta + P/(8 pi G_I) (derive/green.py), the
+#: displacement a testing machine holding the pin controls.
+CONTROLS = {"load": ("P_star", "dP_star_da", "stable_load", "P"),
+            "grip": ("delta_over_Delta", "ddelta_da", "stable_grip", "delta"),
+            "grip-work": ("delta_work_over_Delta", "ddelta_work_da", "stable_grip_work", "delta_work")}
+
+
+def check_control(control: str) -> str:
+    if control not in CONTROLS:
+        raise ValueError(f"control must be one of {', '.join(repr(c) for c in CONTROLS)}, got {control!r}")
+    return control
 
 
 # --- the problem in normalised form ---------------------------------------------------------------------
@@ -71,7 +86,7 @@ class Equilibrium:
     branch : str
         Key of :data:`BRANCH_SOLVERS` (``regime`` is the same string).
     control : str
-        'load' or 'grip': the control under which :attr:`stable` is judged.
+        'load', 'grip' or 'grip-work' (:data:`CONTROLS`): the control under which :attr:`stable` is judged.
     a, a_top : float
         Contact parameters tan(eps/2) of the bottom and the top patch (a_top = 0 for one patch; a = inf in
         full contact, a = 0 when separated).
@@ -91,12 +106,12 @@ class Equilibrium:
         Gap at phi = pi [m] (5.10); 0 when the top is in contact.
     K : float
         Stress intensity factor at the bottom edge [Pa m^1/2] (3.4); at equilibrium (pi/4) A K^2 = w.
-    P_star, delta_over_Delta : float
-        Normalised load (section 6; P_R* of (7.6) for vartheta = inf) and approach.
+    P_star, delta_over_Delta, delta_work_over_Delta : float
+        Normalised load (section 6; P_R* of (7.6) for vartheta = inf) and approaches.
     feasible : bool
         Gap inequality h >= 0 outside the contact (section 5).
-    stable_load, stable_grip : bool
-        Stable at fixed load / fixed grip.
+    stable_load, stable_grip, stable_grip_work : bool
+        Stable at fixed load / fixed delta / fixed delta_work.
     side : str
         'bottom', 'top' (mirrored single patch), 'both' (two patches, full contact) or 'none' (separated).
     """
@@ -113,9 +128,11 @@ class Equilibrium:
     K: float
     P_star: float
     delta_over_Delta: float
+    delta_work_over_Delta: float
     feasible: bool
     stable_load: bool
     stable_grip: bool
+    stable_grip_work: bool
     side: str = "bottom"
     a_top: float = 0.0
     eps_top: float = 0.0
@@ -128,7 +145,7 @@ class Equilibrium:
     @property
     def stable(self) -> bool:
         """Stable under the control given to :func:`solve`."""
-        return self.stable_load if self.control == "load" else self.stable_grip
+        return getattr(self, CONTROLS[self.control][2])
 
     @property
     def size(self) -> float:
@@ -142,7 +159,8 @@ class Equilibrium:
     def as_dict(self) -> dict:
         """Plain values (floats, bools, str) for CSV/JSON output."""
         keys = ("branch", "side", "a", "a_top", "eps", "eps_top", "contact_width", "P", "delta", "delta_work",
-                "h_pi", "K", "P_star", "delta_over_Delta", "feasible", "stable_load", "stable_grip", "stable")
+                "h_pi", "K", "P_star", "delta_over_Delta", "delta_work_over_Delta", "feasible", "stable_load",
+                "stable_grip", "stable_grip_work", "stable")
         return {k: getattr(self, k) for k in keys}
 
     def __repr__(self) -> str:
@@ -174,12 +192,6 @@ def _curve(pb: Problem, regime: str, a) -> "eq.Curve":
                     alpha_ratio=pb.alpha_ratio)
 
 
-def _branch_table(key, regime):
-    """(a, P*, delta/Delta) on the branch grid (:func:`branch_curve`, cached per (M, vartheta, gb, alpha*/beta*))."""
-    c = branch_curve(key, regime)
-    return c.a, c.P_star, c.delta_over_Delta
-
-
 @functools.lru_cache(maxsize=32)
 def branch_curve(key, regime):
     """The dense single-patch branch (jkrcyl.equilibria.Curve on the solver's grid), cached."""
@@ -193,11 +205,12 @@ def _refine(f, lo, hi):
 
 
 def single_patch_roots(pb: Problem, regime: str, key: str, target: float) -> List[float]:
-    """Contact parameters on a single-patch branch with P* (key 'P_star') or delta/Delta equal to target."""
+    """Contact parameters on a single-patch branch where the Curve field ``key`` (P_star, delta_over_Delta or
+    delta_work_over_Delta) equals target."""
     if regime == "super-critical" and math.isinf(pb.theta):
         return []
-    a, P, d = _branch_table(pb.key, regime)
-    v = (P if key == "P_star" else d) - target
+    c = branch_curve(pb.key, regime)
+    a, v = c.a, np.asarray(getattr(c, key)) - target
     f = lambda x: float(getattr(_curve(pb, regime, x), key)[0]) - target
     out = []
     for i in np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0]:
@@ -208,12 +221,13 @@ def single_patch_roots(pb: Problem, regime: str, key: str, target: float) -> Lis
 
 
 def _stability(c, regime: str, M: float):
-    """(stable_load, stable_grip) arrays; M = 0 (no adhesion): the M -> 0+ limit of the sign rules."""
+    """(stable_load, stable_grip, stable_grip_work) arrays; M = 0 (no adhesion): the M -> 0+ limit of the sign
+    rules (the load rule, and the same rule on delta_work, whose fixed-arc compliance is positive)."""
     if M > 0:
-        return np.asarray(c.stable_load), np.asarray(c.stable_grip)
+        return np.asarray(c.stable_load), np.asarray(c.stable_grip), np.asarray(c.stable_grip_work)
     sign = 1.0 if regime == "sub-critical" else -1.0
     ok = sign * np.asarray(c.dP_star_da) > 0
-    return ok, ok
+    return ok, ok, sign * np.asarray(c.ddelta_work_da) > 0
 
 
 def single_patch_states(pb: Problem, regime: str, a, control: str, side: str = "bottom") -> List[Equilibrium]:
@@ -224,20 +238,21 @@ def single_patch_states(pb: Problem, regime: str, a, control: str, side: str = "
     ct = pb.contact
     st = ct.state(a)
     c = _curve(pb, regime, a)
-    stab_load, stab_grip = _stability(c, regime, pb.M)
+    stab_load, stab_grip, stab_work = _stability(c, regime, pb.M)
     out = []
     for i in range(a.size):
         P, delta = float(np.ravel(st.P)[i]), float(np.ravel(st.delta)[i])
         h_pi = float(np.ravel(st.h_pi)[i])
         if side == "top":
             P, delta = -P, -2 * ct.Delta - delta
+        dw = float(ct.approach_work(P, delta))
         eps = float(2 * math.atan(a[i]))
         out.append(Equilibrium(
             branch=regime if side == "bottom" else regime + "-top", control=control, a=float(a[i]), eps=eps,
-            contact_width=2 * ct.R * eps, P=P, delta=delta, delta_work=float(ct.approach_work(P, delta)),
-            h_pi=h_pi, K=float(np.ravel(st.K)[i]),
-            P_star=P / ct.load_scale, delta_over_Delta=delta / ct.Delta, feasible=bool(h_pi >= 0),
-            stable_load=bool(stab_load[i]), stable_grip=bool(stab_grip[i]), side=side))
+            contact_width=2 * ct.R * eps, P=P, delta=delta, delta_work=dw, h_pi=h_pi, K=float(np.ravel(st.K)[i]),
+            P_star=P / ct.load_scale, delta_over_Delta=delta / ct.Delta, delta_work_over_Delta=dw / ct.Delta,
+            feasible=bool(h_pi >= 0), stable_load=bool(stab_load[i]), stable_grip=bool(stab_grip[i]),
+            stable_grip_work=bool(stab_work[i]), side=side))
     return out
 
 
@@ -289,19 +304,30 @@ def _two_patch_state(pb: Problem, eps: float, eps_top: float, control: str) -> E
     from . import twopatch
     kw = {"alpha_ratio": pb.alpha_ratio} if pb.alpha_ratio else {}
     s = twopatch.equilibrium_state(eps, eps_top, pb.M, pb.theta, pb.gb, **kw)
-    load, grip = twopatch.stability(eps, eps_top, s.delta_over_Delta, pb.M, pb.theta, pb.gb, **kw)
-    return _from_two_patch(pb, s, load, grip, control)
+    stab = twopatch.stability(eps, eps_top, s.delta_over_Delta, pb.M, pb.theta, pb.gb, **kw)
+    return _from_two_patch(pb, s, stab, control)
 
 
-def _from_two_patch(pb, s, load, grip, control):
+def work_over_Delta(pb: Problem, obj):
+    """delta_work/Delta of anything with delta_over_Delta and P_star (states, two-patch branches)."""
+    return _k.work_over_Delta(obj.delta_over_Delta, obj.P_star, theta=pb.theta, gb=pb.gb)
+
+
+def _value(pb: Problem, obj, key: str):
+    """The normalised field ``key`` of a two-patch state or branch (delta_work/Delta computed)."""
+    return work_over_Delta(pb, obj) if key == "delta_work_over_Delta" else np.asarray(getattr(obj, key))
+
+
+def _from_two_patch(pb, s, stab, control):
+    """stab: (stable_load, stable_grip, stable_grip_work) of jkrcyl.twopatch.stability."""
     ct = pb.contact
+    dw = float(work_over_Delta(pb, s))
     return Equilibrium(
         branch="two-patch", control=control, a=s.a, eps=s.eps, contact_width=2 * ct.R * (s.eps + s.eps_top),
-        P=s.P_star * ct.load_scale, delta=s.delta_over_Delta * ct.Delta,
-        delta_work=float(ct.approach_work(s.P_star * ct.load_scale, s.delta_over_Delta * ct.Delta)), h_pi=0.0,
-        K=math.sqrt(8 * ct.w / ct.beta),
-        P_star=s.P_star, delta_over_Delta=s.delta_over_Delta, feasible=bool(s.feasible),
-        stable_load=bool(load), stable_grip=bool(grip), side="both", a_top=s.a_top, eps_top=s.eps_top,
+        P=s.P_star * ct.load_scale, delta=s.delta_over_Delta * ct.Delta, delta_work=dw * ct.Delta, h_pi=0.0,
+        K=math.sqrt(8 * ct.w / ct.beta), P_star=s.P_star, delta_over_Delta=s.delta_over_Delta,
+        delta_work_over_Delta=dw, feasible=bool(s.feasible), stable_load=bool(stab[0]), stable_grip=bool(stab[1]),
+        stable_grip_work=bool(stab[2]), side="both", a_top=s.a_top, eps_top=s.eps_top,
         extra={"gap_min_over_Delta": s.gap_min, "G_bot": s.G_bot, "G_top": s.G_top})
 
 
@@ -314,7 +340,7 @@ def _two_patch_solver(pb: Problem, key: str, target: float, control: str) -> Lis
     kw = {"alpha_ratio": pb.alpha_ratio} if pb.alpha_ratio else {}
     out = []
     for b in two_patch_branches(pb.key):
-        v = np.asarray(getattr(b, key)) - target
+        v = _value(pb, b, key) - target
         for i in np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0]:
             e0, e1, t0, t1 = b.eps[i], b.eps[i + 1], b.eps_top[i], b.eps_top[i + 1]
             along_top = abs(t1 - t0) > abs(e1 - e0)
@@ -327,13 +353,13 @@ def _two_patch_solver(pb: Problem, key: str, target: float, control: str) -> Lis
                     return twopatch.solve(pb.M, pb.theta, eps_top=x, gb=pb.gb, guess=other(x), **kw)
                 return twopatch.solve(pb.M, pb.theta, eps=x, gb=pb.gb, guess=other(x), **kw)
             try:
-                f = lambda x: getattr(state(x), key) - target
+                f = lambda x: float(_value(pb, state(x), key)) - target
                 x = _refine_loose(f, min(lo, hi), max(lo, hi))
                 s = state(x)
             except ValueError:
                 continue
-            load, grip = twopatch.stability(s.eps, s.eps_top, s.delta_over_Delta, pb.M, pb.theta, pb.gb, **kw)
-            out.append(_from_two_patch(pb, s, load, grip, control))
+            stab = twopatch.stability(s.eps, s.eps_top, s.delta_over_Delta, pb.M, pb.theta, pb.gb, **kw)
+            out.append(_from_two_patch(pb, s, stab, control))
     return out
 
 
@@ -343,22 +369,28 @@ def _refine_loose(f, lo, hi):
 
 
 def full_contact_state(pb: Problem, key: str, target: float, control: str) -> Optional[Equilibrium]:
-    """The bonded pin (eps + eps_top = pi) at P* or delta/Delta = target (jkrcyl.twopatch.full_contact)."""
+    """The bonded pin (eps + eps_top = pi) at P*, delta/Delta or delta_work/Delta = target
+    (jkrcyl.twopatch.full_contact)."""
     from . import twopatch
     kw = {"alpha_ratio": pb.alpha_ratio} if pb.alpha_ratio else {}
-    args = {"P_star": target} if key == "P_star" else {"delta_over_Delta": target}
     try:
+        if key == "delta_work_over_Delta":          # affine in P* in full contact: invert through two loads
+            w0, w1 = (float(work_over_Delta(pb, twopatch.full_contact(pb.theta, gb=pb.gb, P_star=x, **kw)))
+                      for x in (0.0, 1.0))
+            args = {"P_star": (target - w0) / (w1 - w0)}
+        else:
+            args = {key: target}
         fc = twopatch.full_contact(pb.theta, gb=pb.gb, **args, **kw)
-    except ValueError:                     # delta/Delta fixes no load when gb = 1/2
+    except (ValueError, ZeroDivisionError):         # the approach fixes no load (e.g. delta when gb = 1/2)
         return None
     ct = pb.contact
+    dw = float(work_over_Delta(pb, fc))
     return Equilibrium(
         branch="full-contact", control=control, a=math.inf, eps=math.pi, contact_width=2 * math.pi * ct.R,
-        P=fc.P_star * ct.load_scale, delta=fc.delta_over_Delta * ct.Delta,
-        delta_work=float(ct.approach_work(fc.P_star * ct.load_scale, fc.delta_over_Delta * ct.Delta)), h_pi=0.0,
-        K=0.0, P_star=fc.P_star,
-        delta_over_Delta=fc.delta_over_Delta, feasible=True, stable_load=True, stable_grip=True, side="both",
-        a_top=math.inf, eps_top=0.0, extra={"tension_everywhere": fc.tension_everywhere})
+        P=fc.P_star * ct.load_scale, delta=fc.delta_over_Delta * ct.Delta, delta_work=dw * ct.Delta, h_pi=0.0,
+        K=0.0, P_star=fc.P_star, delta_over_Delta=fc.delta_over_Delta, delta_work_over_Delta=dw, feasible=True,
+        stable_load=True, stable_grip=True, stable_grip_work=True, side="both", a_top=math.inf, eps_top=0.0,
+        extra={"tension_everywhere": fc.tension_everywhere})
 
 
 def _full_contact_solver(pb: Problem, key: str, target: float, control: str) -> List[Equilibrium]:
@@ -374,12 +406,13 @@ def separated_state(pb: Problem, delta_over_Delta: float, control: str) -> Equil
     return Equilibrium(
         branch="separated", control=control, a=0.0, eps=0.0, contact_width=0.0, P=0.0,
         delta=delta_over_Delta * ct.Delta, delta_work=delta_over_Delta * ct.Delta,   # P = 0: delta_work = delta
-        h_pi=(2 + delta_over_Delta) * ct.Delta, K=0.0, P_star=0.0,
-        delta_over_Delta=delta_over_Delta, feasible=True, stable_load=False, stable_grip=True, side="none")
+        h_pi=(2 + delta_over_Delta) * ct.Delta, K=0.0, P_star=0.0, delta_over_Delta=delta_over_Delta,
+        delta_work_over_Delta=delta_over_Delta, feasible=True, stable_load=False, stable_grip=True,
+        stable_grip_work=True, side="none")
 
 
 def _separated_solver(pb: Problem, key: str, target: float, control: str) -> List[Equilibrium]:
-    if key != "delta_over_Delta" or not -2.0 < target < 0.0:
+    if key == "P_star" or not -2.0 < target < 0.0:       # P = 0: delta_work = delta
         return []
     return [separated_state(pb, target, control)]
 
@@ -399,9 +432,9 @@ BRANCH_SOLVERS: Dict[str, BranchSolver] = {
 
 
 # --- the forward problem ------------------------------------------------------------------------------
-def solve(contact, P: Optional[float] = None, delta: Optional[float] = None,
-          branches=None) -> List[Equilibrium]:
-    """Every equilibrium of ``contact`` at load ``P`` [N/m] or approach ``delta`` [m] (exactly one).
+def solve(contact, P: Optional[float] = None, delta: Optional[float] = None, branches=None,
+          delta_work: Optional[float] = None) -> List[Equilibrium]:
+    """Every equilibrium of ``contact`` at load ``P`` [N/m], approach ``delta`` or ``delta_work`` [m] (exactly one).
 
     Parameters
     ----------
@@ -410,7 +443,10 @@ def solve(contact, P: Optional[float] = None, delta: Optional[float] = None,
     P : float, optional
         Load per unit length [N/m], positive downward (section 6); stability is then judged at fixed load.
     delta : float, optional
-        Approach [m] (5.1); stability is then judged at fixed grip.
+        The paper's approach [m] (5.1), (5.8); stability is then judged at fixed delta (control 'grip').
+    delta_work : float, optional
+        The work-conjugate approach delta + P/(8 pi G_I) [m] (derive/green.py); stability is then judged at fixed
+        delta_work (control 'grip-work': a testing machine holding the pin).
     branches : iterable of str, optional
         Keys of :data:`BRANCH_SOLVERS` to search (default: all).  Two-patch states are traced by continuation
         (seconds, cached per contact); leave out 'two-patch' for speed.
@@ -420,23 +456,22 @@ def solve(contact, P: Optional[float] = None, delta: Optional[float] = None,
     list of Equilibrium
         Sorted by contact size (eps + eps_top), then by branch.  Empty if no state exists.
     """
-    if (P is None) == (delta is None):
-        raise ValueError("P: give exactly one of P [N/m] and delta [m]")
+    given = {k: v for k, v in (("P", P), ("delta", delta), ("delta_work", delta_work)) if v is not None}
+    if len(given) != 1:
+        raise ValueError("P: give exactly one of P [N/m], delta [m] and delta_work [m]")
     contact._require_clearance("solve")
     pb = Problem.of(contact)
-    if P is not None:
-        key, control = "P_star", "load"
-        target = finite_scalar("P", P) / contact.load_scale
-    else:
-        key, control = "delta_over_Delta", "grip"
-        target = finite_scalar("delta", delta) / contact.Delta
+    (name, value), = given.items()
+    control = next(c for c, spec in CONTROLS.items() if spec[3] == name)
+    key = CONTROLS[control][0]
+    target = finite_scalar(name, value) / (contact.load_scale if name == "P" else contact.Delta)
     names = list(BRANCH_SOLVERS) if branches is None else list(branches)
-    for name in names:
-        if name not in BRANCH_SOLVERS:
-            raise ValueError(f"branches: unknown branch {name!r} (choose from {', '.join(BRANCH_SOLVERS)})")
+    for branch in names:
+        if branch not in BRANCH_SOLVERS:
+            raise ValueError(f"branches: unknown branch {branch!r} (choose from {', '.join(BRANCH_SOLVERS)})")
     out = []
-    for name in names:
-        out += BRANCH_SOLVERS[name](pb, key, target, control)
+    for branch in names:
+        out += BRANCH_SOLVERS[branch](pb, key, target, control)
     order = {n: i for i, n in enumerate(BRANCH_SOLVERS)}
     return sorted(out, key=lambda s: (s.size, order[s.branch]))
 
@@ -449,7 +484,7 @@ class PullOff:
     Attributes
     ----------
     control : str
-        'load' or 'grip'.
+        'load', 'grip' or 'grip-work'.
     P : float or None
         Load per unit length at detachment [N/m] (negative: pulling); None if the pin does not detach.
     contact_width : float or None
@@ -473,6 +508,11 @@ class PullOff:
     def detached(self) -> bool:
         """True when the pin detaches (``P`` is a number)."""
         return self.P is not None
+
+    @property
+    def delta_work(self) -> Optional[float]:
+        """Work-conjugate approach at detachment [m] (derive/green.py); None without detachment."""
+        return self.state.delta_work if self.detached else None
 
     def __bool__(self) -> bool:
         return self.detached
@@ -510,8 +550,9 @@ def walk_down(pb: Problem, regime: str, i: int, control: str):
     stable (under control) and feasible.  Returns (j, event): event 'fold' (a minimum of the driven
     quantity), 'gap' (the next state has h(pi) < 0) or 'end' (the grid ends)."""
     c = branch_curve(pb.key, regime)
-    y = np.asarray(c.P_star if control == "load" else c.delta_over_Delta)
-    stable = np.asarray(c.stable_load if control == "load" else c.stable_grip)
+    key = CONTROLS[control][0]
+    y = np.asarray(getattr(c, key))
+    stable = _stability(c, regime, pb.M)[list(CONTROLS).index(control)]
     feasible = np.asarray(c.feasible)
     step = -1 if i > 0 and y[i - 1] < y[i] else 1
     j = i
@@ -526,9 +567,10 @@ def walk_down(pb: Problem, regime: str, i: int, control: str):
 
 
 def _fold(pb: Problem, regime: str, j: int, control: str) -> float:
-    """Contact parameter of the minimum of P* (load) or delta/Delta (grip) next to grid index j."""
+    """Contact parameter of the minimum of the held quantity (P*, delta/Delta, delta_work/Delta) next to grid
+    index j."""
     c = branch_curve(pb.key, regime)
-    key = "dP_star_da" if control == "load" else "ddelta_da"
+    key = CONTROLS[control][1]
     lo, hi = float(c.a[max(j - 1, 0)]), float(c.a[min(j + 1, c.a.size - 1)])
     f = lambda x: float(getattr(_curve(pb, regime, x), key)[0])
     if f(lo) * f(hi) < 0:
@@ -553,9 +595,10 @@ def pull_off(contact, control: str = "load") -> PullOff:
     ----------
     contact : jkrcyl.Contact
         Needs a clearance Delta > 0.
-    control : {'load', 'grip'}
-        Fixed load (the detachment is a minimum of P along the stable branch) or fixed grip (a minimum of the
-        approach delta, (5.8)).
+    control : {'load', 'grip', 'grip-work'}
+        Fixed load (the detachment is a minimum of P along the stable branch), fixed grip on the paper's approach
+        delta (5.8) (a minimum of delta) or on the work-conjugate delta_work (a minimum of delta_work: a testing
+        machine holding the pin).
 
     Returns
     -------
@@ -566,10 +609,9 @@ def pull_off(contact, control: str = "load") -> PullOff:
     Raises
     ------
     ValueError
-        Naming ``control`` (not 'load' or 'grip') or ``Delta`` (Delta = 0: the neat fit, section 7.3).
+        Naming ``control`` (not one of :data:`CONTROLS`) or ``Delta`` (Delta = 0: the neat fit, section 7.3).
     """
-    if control not in ("load", "grip"):
-        raise ValueError(f"control must be 'load' or 'grip', got {control!r}")
+    check_control(control)
     contact._require_clearance("pull_off")
     pb = Problem.of(contact)
     if pb.M == 0:

@@ -191,3 +191,54 @@ def test_cli_cycle_plot_and_csv(tmp_path):
     rows = list(csv.reader(open(out)))
     assert rows[1] == ["leg", "branch", "a", "P [N/m]", "delta [m]", "delta_work [m]", "stable"]
     assert {row[6] for row in rows[2:]} <= {"true", "false"}
+
+
+# --- grip on the work-conjugate approach (issue 10 item 4) --------------------------------------------------
+def _dense_work(c, st):
+    """delta_work = delta + P/(8 pi G_I) of dense states (DERIVATION.md, 'The work-conjugate approach')."""
+    return st.delta + st.P * c.materials.inv_G_I / (8 * np.pi)
+
+
+@pytest.mark.parametrize("M", [0.05, 0.3])
+def test_pull_off_grip_work_is_the_minimum_of_delta_work(M):
+    c = contact(M)
+    po = c.pull_off("grip-work")
+    assert po.detached and po.control == "grip-work"
+    a, st = dense_sub_critical(c)
+    dw = _dense_work(c, st)
+    i = int(np.argmin(dw))
+    assert po.delta_work == pytest.approx(dw[i], rel=1e-9)
+    assert po.P == pytest.approx(st.P[i], rel=1e-4)
+    # a testing machine holding the pin is a grip through the pin's own compliance: it lets go between the
+    # paper's rigid grip (delta held) and load control
+    assert c.pull_off("load").P < po.P < c.pull_off("grip").P
+
+
+def test_grip_work_cycle_jumps_and_energy():
+    c = contact(0.3)
+    cy = c.cycle(delta_max=0.3 * c.Delta, delta_min=-2.3 * c.Delta, control="grip-work")
+    po = c.pull_off("grip-work")
+    offs = [j for j in cy.jumps if j.kind == "pull-off"]
+    assert offs and offs[0].before.delta_work == pytest.approx(po.delta_work, rel=1e-12)
+    assert offs[0].after.branch == "separated" and offs[0].after.delta_work == pytest.approx(
+        offs[0].before.delta_work, rel=1e-12)
+    for j in cy.jumps:                                # every jump at fixed delta_work
+        assert j.after.delta_work == pytest.approx(j.before.delta_work, rel=1e-9, abs=1e-12 * c.Delta)
+    sel = (cy.leg == cy.closed_from_leg) | (cy.leg == cy.closed_from_leg + 1)
+    P, d, dw = cy.P[sel], cy.delta[sel], cy.delta_work[sel]
+    assert cy.dissipated > 0
+    assert cy.dissipated == pytest.approx(np.sum(0.5 * (P[1:] + P[:-1]) * np.diff(dw)), rel=1e-4)
+    assert cy.dissipated == pytest.approx(np.sum(0.5 * (P[1:] + P[:-1]) * np.diff(d)), rel=1e-4)
+
+
+def test_solve_delta_work_hits_the_request():
+    c = contact(0.3)
+    target = -0.2 * c.Delta
+    states = c.solve(delta_work=target, branches=["sub-critical", "super-critical", "separated"])
+    assert states and all(s.control == "grip-work" for s in states)
+    for s in states:
+        assert s.delta_work == pytest.approx(target, rel=1e-12)
+        assert s.delta_work == pytest.approx(s.delta + s.P * c.materials.inv_G_I / (8 * np.pi), rel=1e-12)
+        assert s.stable == s.stable_grip_work
+    with pytest.raises(ValueError, match="exactly one"):
+        c.solve(P=0.0, delta_work=0.0)

@@ -88,3 +88,16 @@ def test_stable_grip_work_lies_between_grip_and_load():
             both = cv.stable_grip & cv.stable_load
             neither = ~cv.stable_grip & ~cv.stable_load
             assert np.all(cv.stable_grip_work[both]) and not np.any(cv.stable_grip_work[neither])
+
+
+@pytest.mark.parametrize("M, theta, gb", [(0.3, 1.0, 0.5), (0.5, 1.0, 0.5), (0.2, 0.5, 1.0), (0.6, 0.6, 1.0)])
+def test_hessian_stability_of_one_arc_matches_the_release_rates(M, theta, gb):
+    """jkrcyl.twopatch.stability (second variation of the energy with the pin's n = 1 term, finite differences of
+    the collocation solution) with no top arc against Curve.stable_load / stable_grip / stable_grip_work (closed
+    form, chain rule): two routes that share no code for all three controls."""
+    from jkrcyl import twopatch as tp
+    for regime in ("sub-critical", "super-critical"):
+        cv = eq.curve(M, theta, regime=regime, n=40, gb=gb)
+        for i in range(1, 40, 4):
+            got = tp.stability(float(cv.eps[i]), 0.0, float(cv.delta_over_Delta[i]), M, theta, gb)
+            assert got == (cv.stable_load[i], cv.stable_grip[i], cv.stable_grip_work[i]), (regime, cv.a[i])

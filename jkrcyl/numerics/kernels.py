@@ -74,6 +74,15 @@ def approach_work(P, delta, *, inv_G_I):
     return out.reshape(P.shape)
 
 
+def work_over_Delta(delta_over_Delta, P_star, *, theta, gb):
+    """Normalised work-conjugate approach delta_work/Delta from delta/Delta and P* (p = vartheta P*, P_R* if inf)."""
+    d, P = np.broadcast_arrays(np.asarray(delta_over_Delta, dtype=float), np.asarray(P_star, dtype=float))
+    scale = 1.0 if math.isinf(theta) else theta
+    out = np.empty(d.size)
+    _green.approach_work_star_into(out, delta_over_Delta=_array(d.ravel()), gb=gb, p=_array(P.ravel()) * scale)
+    return out.reshape(d.shape)
+
+
 def pressure(a, phi, *, R, Delta, beta, inv_theta, zeta):
     """Pressure N(phi) of (5.4) [Pa] at one contact parameter a, phi 1-D inside the contact."""
     phi = _array(phi)
