@@ -95,6 +95,7 @@ def test_pull_at_2000_N_per_m_as_stated(namespace):
     assert po.detached and po.P == pytest.approx(-1555, abs=0.5)
     assert po.contact_width == pytest.approx(17.7e-3, abs=0.05e-3) and po.delta == pytest.approx(-0.31e-6, abs=5e-9)
     assert "-810 N/m" in README and pin.pull_off(control="grip").P == pytest.approx(-810, abs=0.5)
+    assert "-839 N/m" in README and pin.pull_off(control="grip-work").P == pytest.approx(-839, abs=0.5)
     assert "`sub-critical-top`" in README
     single = [s for s in states if s.regime in ("sub-critical", "super-critical", "sub-critical-top",
                                                 "super-critical-top")]
@@ -112,7 +113,7 @@ def test_cycle_as_stated(namespace):
     assert cy.jumps[0].before.P == 0 and cy.jumps[1].before.P == pytest.approx(po.P, rel=1e-12)
     assert cy.jumps[1].after.branch == "sub-critical-top"
     assert "about 0.0080 J/m per cycle" in README and cy.dissipated == pytest.approx(0.0080, abs=0.00005)
-    assert namespace["grip"].control == "grip" and namespace["grip"].jumps
+    assert namespace["grip"].control == "grip-work" and namespace["grip"].jumps
 
 
 def test_confined_regime_as_stated(namespace):
