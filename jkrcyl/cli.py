@@ -304,7 +304,9 @@ def build_parser():
     a.set_defaults(func=_cmd_adherence)
     tw = sub.add_parser("two-patch", help="two-patch equilibria (second contact at the top of the hole)",
                         description="Every branch of two-patch equilibria (bottom arc a, top arc a_top) at (M, "
-                                    "vartheta): CSV rows per branch (column 'branch') or JSON; columns "
+                                    "vartheta), for any material pair (physical inputs: the pair's alpha*): "
+                                    "CSV rows per branch (column 'branch') or JSON; with --figure FILE the "
+                                    "load-approach paths through the confined regime instead; columns "
                                     + ", ".join(("a", "a_top", "eps", "eps_top", "eps_star", "eps_top_star",
                                                  "P_star", "delta_over_Delta", "gap_min", "feasible",
                                                  "stable_load", "stable_grip")) + ".")

@@ -662,7 +662,8 @@ class ConfinedEvents:
     stable under load); grip_detachment: a feasible fixed-grip stationary point (min of delta) before
     the gap closes, i.e. the pin can be held free in the hole (true detachment under grip control);
     two_patch_stable_load / _grip: any two-patch state stable under load / grip; full_contact: some
-    two-patch branch runs into full contact; branches: the :class:`TwoPatchCurve` list.
+    two-patch branch runs into full contact; branches: the :class:`TwoPatchCurve` list; gb, alpha_ratio:
+    the compliance ratio and alpha*/beta* of the analysis (the full-contact law in :attr:`summary`).
     """
 
     M: float
@@ -677,6 +678,8 @@ class ConfinedEvents:
     two_patch_stable_grip: bool
     full_contact: bool
     branches: tuple
+    gb: float = None            # (1/G_I)/beta* and alpha*/beta* of the analysis (the full-contact law)
+    alpha_ratio: float = 0.0
 
     @property
     def description(self):
@@ -689,7 +692,8 @@ class ConfinedEvents:
             return (f"fixed-load detachment at P* = {self.P_fold:.6g}; the pin lands on the top of the hole "
                     f"(transfer); held at fixed grip it can be freed: {self.grip_detachment}")
         if self.regime == "zip-full":
-            fc = "entirely in tension" if abs(self.P_fold) < 1 else "partly compressed"
+            fc = full_contact(self.theta, P_star=self.P_fold, gb=self.gb, alpha_ratio=self.alpha_ratio)
+            fc = "entirely in tension" if fc.tension_everywhere else "partly compressed"
             return (f"fold at P* = {self.P_fold:.6g}; the contact grows into full contact ({fc} there); "
                     f"no detachment under load")
         if self.regime == "no-path":
@@ -792,7 +796,7 @@ def confined_events(M, theta, gb=None, n=N_NODES, alpha_ratio=0.0):
     nan = math.nan
     if path is None:
         return ConfinedEvents(M, th, "no-path", (nan, nan), nan, nan, tuple(onsets), bool(grip_pts), any_load,
-                              any_grip, full, bs)
+                              any_grip, full, bs, gb, ar)
     c, i, event, j = path
     start = (float(c.a[i]), float(c.P_star[i]))
     if event in ("fold", "none"):
@@ -805,7 +809,7 @@ def confined_events(M, theta, gb=None, n=N_NODES, alpha_ratio=0.0):
             P_fold = min(P_fold, _local_min_P(c.a[max(j - 1, 0)], c.a[min(j + 1, c.a.size - 1)], M, th, gb, n, ar))
         regime = "zip-full" if _grows_under_pull(float(c.eps[j]), th, gb, n, ar) else "detachment"
         return ConfinedEvents(M, th, regime, start, P_fold, nan, tuple(onsets), bool(grip_pts), any_load,
-                              any_grip, full, bs)
+                              any_grip, full, bs, gb, ar)
     P_on = float(c.P_star[j])
     e_on = float(c.eps[j])
     near = [b for b in bs if abs(b.eps[0] - e_on) < 0.05 and b.eps_top[0] < 1e-3 and b.ends[0] == "single"]
@@ -816,7 +820,7 @@ def confined_events(M, theta, gb=None, n=N_NODES, alpha_ratio=0.0):
     else:
         regime = "snap-in-transfer"
     return ConfinedEvents(M, th, regime, start, nan, P_on, tuple(onsets), bool(grip_pts), any_load, any_grip,
-                          full, bs)
+                          full, bs, gb, ar)
 
 
 # --- figure: load-approach paths through the confined regime ------------------------------------------

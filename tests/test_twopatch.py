@@ -338,6 +338,15 @@ def test_confined_events(M, regime):
     assert not ev.two_patch_stable_load
 
 
+def test_zip_summary_uses_the_full_contact_law_of_the_pair():
+    """Full contact is entirely in tension for |P*| < -pi N0 = 1/(1 - 2 vartheta alpha*/beta*) (N0 checked by quad
+    of the kernel in test_alpha_full_contact_law): 1 at alpha* = 0, 1.25 at vartheta = 0.9, alpha*/beta* = 1/9."""
+    ev = lambda ar: tp.ConfinedEvents(0.5, 0.9, "zip-full", (0.3, 0.0), -1.1, math.nan, (), False, False, False,
+                                      False, (), 0.37, ar)
+    assert "entirely in tension" in ev(1 / 9).summary
+    assert "partly compressed" in ev(0.0).summary
+
+
 @pytest.mark.parametrize("M", [0.3, 0.5, 0.8])
 def test_fixed_load_stability_flips_with_the_branch(M):
     """dG/dP* at fixed a is < 0 sub-critically and > 0 super-critically, so the emitted dG/da|_P kernel
