@@ -1,7 +1,12 @@
-"""The checked-in generated/ is exactly what `make derive` writes now (regenerated into a temp dir)."""
+"""The checked-in generated/ is exactly what `make derive` writes now (regenerated into a temp dir).
+
+Compare or update: ``pytest tests/test_generated_up_to_date.py --update-generated`` copies the fresh files over
+generated/ (the same as ``make derive``) and reports what changed instead of failing.
+"""
 import difflib
 import os
 import pathlib
+import shutil
 import subprocess
 import sys
 
@@ -10,20 +15,47 @@ import pytest
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 
+def _differences(fresh_dir):
+    """{file name: unified diff} between generated/ and a fresh derivation (a missing side diffs against '')."""
+    gen = ROOT / "generated"
+    names = {p.name for p in gen.iterdir() if p.is_file()} | {p.name for p in fresh_dir.iterdir() if p.is_file()}
+    out = {}
+    for name in sorted(names):
+        old = (gen / name).read_text().splitlines(keepends=True) if (gen / name).exists() else []
+        new = (fresh_dir / name).read_text().splitlines(keepends=True) if (fresh_dir / name).exists() else []
+        if old != new:
+            out[name] = "".join(difflib.unified_diff(old, new, f"generated/{name}", f"fresh/{name}", n=1))
+    return out
+
+
 @pytest.mark.slow
-def test_generated_matches_fresh_derivation(tmp_path):
+def test_generated_matches_fresh_derivation(tmp_path, request):
     env = dict(os.environ, PYTHONHASHSEED="0")
     subprocess.run([sys.executable, "-m", "derive", "--out", str(tmp_path)], cwd=ROOT, env=env,
                    check=True, capture_output=True, text=True)
-    checked_in = {p.name for p in (ROOT / "generated").iterdir() if p.is_file()}
-    fresh = {p.name for p in tmp_path.iterdir() if p.is_file()}
-    assert checked_in == fresh, f"file sets differ: {sorted(checked_in ^ fresh)}; run `make derive`"
-    for name in sorted(fresh):
-        old = (ROOT / "generated" / name).read_text().splitlines(keepends=True)
-        new = (tmp_path / name).read_text().splitlines(keepends=True)
-        if old != new:
-            diff = "".join(difflib.unified_diff(old, new, f"generated/{name}", f"fresh/{name}", n=1))
-            pytest.fail(f"generated/{name} is out of date; fix: make derive\n{diff[:4000]}")
+    diffs = _differences(tmp_path)
+    if diffs and request.config.getoption("--update-generated"):
+        for name in diffs:
+            target = ROOT / "generated" / name
+            if (tmp_path / name).exists():
+                shutil.copyfile(tmp_path / name, target)
+            else:
+                target.unlink()
+        print(f"updated generated/: {', '.join(diffs)}")
+        return
+    for name, diff in diffs.items():
+        pytest.fail(f"generated/{name} is out of date; fix: make derive (or pytest --update-generated)\n"
+                    f"{diff[:4000]}")
+
+
+def test_differences_are_reported(tmp_path):
+    """The comparison the up-to-date test relies on sees a changed, a missing and an extra file."""
+    for p in (ROOT / "generated").glob("*.py"):
+        shutil.copyfile(p, tmp_path / p.name)
+    (tmp_path / "DERIVATION.md").write_text("changed\n")
+    (tmp_path / "extra.py").write_text("x = 1\n")
+    (tmp_path / "green.py").unlink()
+    assert set(_differences(tmp_path)) == {"DERIVATION.md", "extra.py", "green.py"}
 
 
 def test_every_generated_file_has_the_banner():
