@@ -28,7 +28,7 @@ from typing import List, Optional
 import numpy as np
 
 from . import forward as fw
-from ._validate import finite_scalar
+from ._validate import count, finite_scalar
 
 MAX_REPEATS = 3          # cycles driven until the loop closes (the state at the top of the cycle repeats)
 GAUSS_NODES = 8
@@ -359,7 +359,7 @@ def cycle(contact, P_max: Optional[float] = None, P_min: Optional[float] = None,
     """
     fw.check_control(control)
     contact._require_clearance("cycle")
-    n = int(finite_scalar("n", n, low=10, high=1e6))
+    n = count("n", n, low=10)
     if control == "load":
         if P_max is None or P_min is None:
             raise ValueError("P_max: control='load' needs P_max and P_min [N/m]")

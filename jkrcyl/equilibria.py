@@ -27,7 +27,7 @@ from typing import List, Optional, Sequence, Tuple
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ._validate import contact_parameter, finite_scalar, theta as _check_theta
+from ._validate import A_MAX, contact_parameter, count, finite_scalar, theta as _check_theta
 from .critical import a_crit as _a_crit
 from .numerics import kernels as _k
 from .numerics import roots as _roots
@@ -62,8 +62,11 @@ NUMERIC_ROOT_GRID = 400   # root grid when alpha* != 0 (each point is a collocat
 
 
 def _alpha(alpha_ratio):
-    """alpha*/beta* (Materials.alpha_ratio); != 0 routes every function here through numerics.arcs."""
-    return finite_scalar("alpha_ratio", alpha_ratio, low=-1.0, high=1.0, low_open=True)
+    """alpha*/beta* (Materials.alpha_ratio) in (-1, 1); != 0 routes every function here through numerics.arcs."""
+    v = finite_scalar("alpha_ratio", alpha_ratio, low=-1.0, high=1.0, low_open=True)
+    if v == 1.0:
+        raise ValueError("alpha_ratio must be in (-1, 1) (|alpha*| < beta* for every elastic pair), got 1")
+    return v
 
 
 @functools.lru_cache(maxsize=256)     # alpha* != 0: a root search of ~40 solves, asked for by every curve()
@@ -267,8 +270,12 @@ def curve(M: float, theta: float, regime: str = "sub-critical", n: int = 2000, g
     _check_regime(regime, th)
     ac = _ac(th, gb, ar)
     if a is None:
-        n = int(finite_scalar("n", n, low=2, high=1e6))
+        n = count("n", n, low=2)
         a = _grid(regime, th, n, ac)
+        a = a[a <= A_MAX]          # huge vartheta: a_crit ~ vartheta^(1/4) pushes the grid past the domain of a
+        if a.size < 2:
+            raise ValueError(f"theta: the {regime} branch lies beyond a = {A_MAX:g} (the supported domain of a) "
+                             f"for theta = {th:g}")
     a = np.ascontiguousarray(_on_branch(a, regime, th, ac))
     st = _star_of(a, M, th, gb, ar)
     return Curve(M=M, theta=th, gb=gb, regime=regime, a=a, eps=2 * np.arctan(a), eps_star=_eps_star(a, th, ac),

@@ -246,3 +246,18 @@ def test_cli_two_patch_numbers_and_booleans():
     flags = [k for k in head if k == "feasible" or k.startswith("stable")]
     assert all(digits(v) <= 10 for row in rows for k, v in row.items() if k not in flags and k != "branch")
     assert {row[k] for row in rows for k in flags} <= {"true", "false"}
+
+
+def test_counts_alpha_ratio_and_huge_theta():
+    """Found by the property tests: fractional counts were truncated, alpha*/beta* = 1 accepted (|alpha*| < beta*
+    for every elastic pair), and a curve at huge vartheta complained about an 'a' the caller never gave."""
+    from jkrcyl import equilibria as eq
+    with pytest.raises(ValueError, match="n must be an integer"):
+        eq.curve(0.3, 1.0, n=5.5)
+    with pytest.raises(ValueError, match="alpha_ratio"):
+        eq.curve(0.3, 1.0, n=5, alpha_ratio=1.0)
+    with pytest.raises(ValueError, match="theta"):
+        eq.curve(0.3, 1e100, regime="super-critical", n=5)
+    c = jkrcyl.Contact(R=1.0, Delta=0.01, w=1e-4, materials=jkrcyl.Materials(G=1.0, kappa=2.0, G_I=1.0, kappa_I=2.0))
+    with pytest.raises(ValueError, match="n must be an integer"):
+        c.cycle(P_max=1.0, P_min=-1.0, n=10.5)
