@@ -406,14 +406,7 @@ def solve_load(M: float, theta: float, P_star: float, regime: str = "sub-critica
     list of float
         Contact parameters tan(eps/2) (the dimensional forward problem is :meth:`jkrcyl.Contact.solve`).
     """
-    M, th, gb = _params(M, theta, gb)
-    ar = _alpha(alpha_ratio)
-    _check_regime(regime, th)
-    if ar != 0.0 and n == ROOT_GRID:
-        n = NUMERIC_ROOT_GRID
-    target = finite_scalar("P_star", P_star)
-    grid = _grid(regime, th, n, _ac(th, gb, ar))
-    return sorted(r for r, _ in _star_roots("P_star", M, th, gb, ar, grid, target))
+    return _solve_field("P_star", P_star, M, theta, regime, gb, n, alpha_ratio)
 
 
 def solve_approach(M: float, theta: float, delta_over_Delta: float, regime: str = "sub-critical",
@@ -434,14 +427,19 @@ def solve_approach(M: float, theta: float, delta_over_Delta: float, regime: str 
     list of float
         Contact parameters tan(eps/2); empty if none.
     """
+    return _solve_field("delta_over_Delta", delta_over_Delta, M, theta, regime, gb, n, alpha_ratio)
+
+
+def _solve_field(field, value, M, theta, regime, gb, n, alpha_ratio):
+    """Sorted contact parameters on a branch where the Star field equals value (validated under its name)."""
     M, th, gb = _params(M, theta, gb)
     ar = _alpha(alpha_ratio)
     _check_regime(regime, th)
     if ar != 0.0 and n == ROOT_GRID:
         n = NUMERIC_ROOT_GRID
-    target = finite_scalar("delta_over_Delta", delta_over_Delta)
+    target = finite_scalar(field, value)
     grid = _grid(regime, th, n, _ac(th, gb, ar))
-    return sorted(r for r, _ in _star_roots("delta_over_Delta", M, th, gb, ar, grid, target))
+    return sorted(r for r, _ in _star_roots(field, M, th, gb, ar, grid, target))
 
 
 def two_patch(M: float, theta: float, n: Optional[int] = None, gb: Optional[float] = None,
