@@ -25,8 +25,8 @@ def row(name, E, nu, E_I, nu_I):
     th, gb, ar = mat.theta, mat.inv_G_I / mat.beta, mat.alpha_ratio
     true = eq.curve(M, th, gb=gb, a=np.array([A]), alpha_ratio=ar)
     cf = eq.curve(M, th, gb=gb, a=np.array([A]))
-    adh_t = eq.adherence(M, th, "load", gb=gb, regimes=("sub-critical",), alpha_ratio=ar)
-    adh_c = eq.adherence(M, th, "load", gb=gb, regimes=("sub-critical",))
+    adh_t = eq.adherence(M, th, "load", gb=gb, regimes=("sub-critical",), alpha_ratio=ar, confined=False)
+    adh_c = eq.adherence(M, th, "load", gb=gb, regimes=("sub-critical",), confined=False)
     f = lambda pts: pts[0].P_star if pts else math.nan
     cells = [f"{true.P_star[0]:.4f} / {cf.P_star[0]:.4f}",
              f"{true.delta_over_Delta[0]:.4f} / {cf.delta_over_Delta[0]:.4f}",

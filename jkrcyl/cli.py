@@ -153,13 +153,14 @@ def _confined_dict(ev):
 
 def _point_dict(p):
     return {k: getattr(p, k) for k in ("control", "regime", "kind", "a", "eps", "eps_star", "P_star",
-                                        "delta_over_Delta", "h_pi_over_Delta", "feasible")}
+                                        "delta_over_Delta", "h_pi_over_Delta", "feasible", "outcome")}
 
 
 def _cmd_adherence(args):
     M, th, gb = _resolve(args)
     ar = getattr(args, "alpha_ratio", 0.0)
-    load = eq.adherence(M, th, "load", gb=gb, alpha_ratio=ar)
+    want_confined = not math.isinf(th) and M > 0 and not args.no_confined
+    load = eq.adherence(M, th, "load", gb=gb, alpha_ratio=ar, confined=want_confined)
     grip = eq.adherence(M, th, "grip", gb=gb, alpha_ratio=ar)
     if ar:   # (8.1) is an alpha* = 0 result: the zero-load contact from the solver
         a0 = eq.solve_load(M, th, 0.0, gb=gb, alpha_ratio=ar)
@@ -169,7 +170,7 @@ def _cmd_adherence(args):
         a0 = zero_load_contact(M, th)
         Mmax = zero_load_max_M(th)[0]
     confined = None
-    if not math.isinf(th) and M > 0 and not args.no_confined:
+    if want_confined:
         from . import twopatch           # any alpha* (the arc engine); ~2 s at alpha* = 0, ~30-60 s otherwise
         confined = _confined_dict(twopatch.confined_events(M, th, gb=gb, alpha_ratio=ar))
     if args.format == "json":
@@ -183,7 +184,8 @@ def _cmd_adherence(args):
     print("fixed-load adherence (minimum of P* per branch):")
     for p in load or []:
         print(f"  {p.regime:14s} a = {p.a:.10g}  eps = {p.eps:.12g}  P* = {p.P_star:.10g}  "
-              f"delta/Delta = {p.delta_over_Delta:.12g}  feasible = {p.feasible}")
+              f"delta/Delta = {p.delta_over_Delta:.12g}  feasible = {p.feasible}"
+              + (f"  outcome = {p.outcome}" if p.outcome else ""))
     if not load:
         print("  none (no minimum of P* on any branch)")
     print("fixed-grip stationary points (d delta/da = 0):")

@@ -123,11 +123,13 @@ class Contact:
         return replace(cv, P=cv.P_star * self.load_scale, delta=cv.delta_over_Delta * self.Delta,
                        delta_work=cv.delta_work_over_Delta * self.Delta)
 
-    def adherence(self, control="load"):
-        """Adherence points (P* minima for control='load', d delta/da = 0 for 'grip'): jkrcyl.equilibria.adherence."""
+    def adherence(self, control="load", confined=True):
+        """Adherence points (P* minima for control='load', d delta/da = 0 for 'grip') with P [N/m], delta and
+        delta_work [m], and (load) what a further pull does, ``outcome``: jkrcyl.equilibria.adherence."""
         from . import equilibria
         M, th, gb = equilibria.from_contact(self)
-        pts = equilibria.adherence(M, th, control=control, gb=gb, alpha_ratio=self.materials.alpha_ratio)
+        pts = equilibria.adherence(M, th, control=control, gb=gb, alpha_ratio=self.materials.alpha_ratio,
+                                   confined=confined)
         return [replace(p, P=p.P_star * self.load_scale, delta=p.delta_over_Delta * self.Delta,
                         delta_work=p.delta_work_over_Delta * self.Delta) for p in pts]
 

@@ -291,6 +291,12 @@ class Point:
     """A stationary point on a branch: P* minimum (control = load) or d delta/da = 0 (control = grip).
 
     kind: 'min' or 'max' of P* (load) or of delta/Delta (grip) along the branch.
+    outcome (control = load, from :func:`adherence`): what a further pull does there -- 'detachment' (a
+    feasible sub-critical minimum: the contact shrinks away), 'zip-full' (a feasible super-critical minimum: the
+    contact grows round into full contact); for an infeasible point (h(pi) < 0: the gap at the top closes before
+    it is reached) the answer of the confined analysis, a key of :data:`jkrcyl.twopatch.REGIMES`
+    ('snap-in-full', 'snap-in-transfer', 'two-patch', ... ; jkrcyl.twopatch.confined_events), or
+    'gap-closes-first' where that analysis does not apply (vartheta = inf).
     """
 
     control: str
@@ -309,6 +315,7 @@ class Point:
     P: float = None               # [N/m], set when the point comes from a Contact (Contact.adherence)
     delta: float = None           # [m], likewise
     delta_work: float = None      # [m], likewise
+    outcome: str = None           # control = load: see the class docstring
 
 
 ROOT_GRID = 4000
@@ -355,7 +362,8 @@ def stationary_points(M: float, theta: float, control: str = "load", regime: str
 
 
 def adherence(M: float, theta: float, control: str = "load", gb: Optional[float] = None,
-              regimes: Optional[Sequence[str]] = None, alpha_ratio: float = 0.0) -> List["Point"]:
+              regimes: Optional[Sequence[str]] = None, alpha_ratio: float = 0.0,
+              confined: bool = True) -> List["Point"]:
     """Adherence points, sub-critical branch first.
 
     control='load': per branch, the lowest local minimum of P* (the 'x' of Fig. 3), if any.
@@ -368,6 +376,9 @@ def adherence(M: float, theta: float, control: str = "load", gb: Optional[float]
     control : {'load', 'grip'}
     regimes : sequence of str, optional
         Branches searched (default both; only 'sub-critical' for vartheta = inf).
+    confined : bool
+        control = load: set :attr:`Point.outcome` of infeasible points from the confined analysis
+        (jkrcyl.twopatch.confined_events: seconds, up to about a minute when alpha* != 0); False leaves it None.
 
     Returns
     -------
@@ -385,7 +396,20 @@ def adherence(M: float, theta: float, control: str = "load", gb: Optional[float]
                 out.append(min(mins, key=lambda p: p.P_star))
         else:
             out += pts
-    return out
+    return _outcomes(out, M, th, gb, alpha_ratio) if control == "load" and confined else out
+
+
+def _outcomes(points, M, th, gb, alpha_ratio):
+    """Point.outcome of fixed-load adherence points: the branch's fold rule where feasible (derive/confined.py:
+    detachment below a_crit, zip into full contact above), the confined analysis where the gap closes first."""
+    from dataclasses import replace
+    from . import twopatch
+    regime = None
+    if any(not p.feasible for p in points):
+        regime = ("gap-closes-first" if math.isinf(th) or M == 0 else     # no confined analysis there
+                  twopatch.confined_events(M, th, gb=gb, alpha_ratio=alpha_ratio).regime)
+    return [replace(p, outcome=(regime if not p.feasible else
+                                "detachment" if p.regime == "sub-critical" else "zip-full")) for p in points]
 
 
 def solve_load(M: float, theta: float, P_star: float, regime: str = "sub-critical", gb: Optional[float] = None,

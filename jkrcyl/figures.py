@@ -185,7 +185,8 @@ def fig03(n=600, alpha_ratio=0.0):
         _line(axs[1], cv.delta_over_Delta, cv.P_star, cv.feasible, st)
         rows.add("b", lab, "delta_over_Delta", cv.delta_over_Delta, "P_star", cv.P_star, cv.feasible)
         ac = cv.a[0] / x[0]
-        for p in eq.adherence(M, 1.0, "load", gb=gb, regimes=("sub-critical",), alpha_ratio=alpha_ratio):
+        for p in eq.adherence(M, 1.0, "load", gb=gb, regimes=("sub-critical",), alpha_ratio=alpha_ratio,
+                              confined=False):
             axs[0].plot(p.a / ac, p.P_star, "kx", ms=8)
             axs[1].plot(p.delta_over_Delta, p.P_star, "kx", ms=8)
             rows.add("a", lab + " adherence (load)", "a/a_crit", [p.a / ac], "P_star", [p.P_star], [p.feasible])
@@ -398,7 +399,7 @@ def fig10(n=60, alpha_ratio=0.0):
         Ms = np.linspace(0.01, 0.9, n)
         cyl, feas, half = [], [], []
         for M in Ms:
-            pts = eq.adherence(M, th, "load", alpha_ratio=alpha_ratio)
+            pts = eq.adherence(M, th, "load", alpha_ratio=alpha_ratio, confined=False)
             p = min(pts, key=lambda q: q.P_star) if pts else None
             cyl.append(p.P_star if p and p.P_star < 0 else np.nan)
             feas.append(bool(p.feasible) if p else False)

@@ -774,8 +774,13 @@ def _grows_under_pull(eps, th, gb, n, ar=0.0):
 def confined_events(M, theta, gb=None, n=N_NODES, alpha_ratio=0.0):
     """Classify the confined regime at (M, vartheta): see :class:`ConfinedEvents` and :data:`REGIMES`.
 
-    alpha_ratio = alpha*/beta* != 0: every single-patch quantity from the solver (jkrcyl.numerics.arcs)."""
-    M, th, gb, ar = _params(M, theta, gb, alpha_ratio)
+    alpha_ratio = alpha*/beta* != 0: every single-patch quantity from the solver (jkrcyl.numerics.arcs).
+    Cached per (M, vartheta, gb, n, alpha_ratio) after validation (the result is immutable; tracing takes seconds)."""
+    return _confined_events(*_params(M, theta, gb, alpha_ratio), n)
+
+
+@functools.lru_cache(maxsize=32)
+def _confined_events(M, th, gb, ar, n):
     segs = _segments(M, th, gb, ar)
     # alpha* = 0: the onsets on their own grid (closed form, cheap); otherwise on the load path's curves
     on = onset_angles(M, th, gb, ar, segments=None if ar == 0.0 else segs)

@@ -574,3 +574,18 @@ def test_cli_two_patch_and_confined_report_for_a_pair_with_alpha(capsys):
         lin = tp._linear(e, 0.0, th, gb, 64, ar)
         assert abs(lin.gap(math.pi, d_on)[0]) < 1e-8
         assert P_on == pytest.approx(lin.q0[0] + d_on * lin.q1[0], rel=1e-8)
+
+
+def test_adherence_outcome_replaces_overclosure():
+    """Issue 12 item 4: fixed-load adherence points say what a further pull does -- the branch's fold rule
+    where the point is feasible (derive/confined.py: below a_crit the contact shrinks away, above it grows into
+    full contact), the confined analysis where the gap at pi closes first."""
+    from dataclasses import replace
+    from jkrcyl import a_crit
+    for M in (0.1, 0.3, 0.5, 0.8):
+        for p in eq.adherence(M, 1.0, "load"):
+            assert p.feasible and p.outcome == ("detachment" if p.a < a_crit(1.0) else "zip-full")
+    p = eq.adherence(0.3, 1.0, "load")[0]
+    closed = eq._outcomes([replace(p, feasible=False)], 0.3, 1.0, eq.default_gb(1.0), 0.0)[0]
+    assert closed.outcome == tp.confined_events(0.3, 1.0).regime and closed.outcome in tp.REGIMES
+    assert eq.adherence(0.3, 1.0, "grip")[0].outcome is None
