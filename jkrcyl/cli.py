@@ -133,13 +133,15 @@ def _cmd_two_patch(args):
             {"ends": list(b.ends), **{k: clean(v) for k, v in b.table().items()}} for b in bs]}, sys.stdout)
         sys.stdout.write("\n")
         return 0
-    print(f"# M={M!r} theta={th!r} gb={gb!r} alpha_ratio={ar!r} branches={len(bs)}")
+    from .cli_forward import number
+    print(f"# M={number(M)} theta={number(th)} gb={number(gb)} alpha_ratio={number(ar)} branches={len(bs)}")
     for i, b in enumerate(bs):
-        t = b.table()
         print(f"# branch {i}: ends {b.ends[0]} -> {b.ends[1]}")
-        print("branch," + ",".join(t))
+    print("branch," + ",".join(twopatch.TwoPatchCurve.COLUMNS))
+    for i, b in enumerate(bs):
+        t = b.table(raw=True)
         for row in zip(*t.values()):
-            print(f"{i}," + ",".join(repr(float(x)) for x in row))
+            print(f"{i}," + ",".join(number(x) for x in row))
     return 0
 
 
@@ -183,8 +185,8 @@ def _cmd_adherence(args):
                                                               if ar else ""))
     print("fixed-load adherence (minimum of P* per branch):")
     for p in load or []:
-        print(f"  {p.regime:14s} a = {p.a:.10g}  eps = {p.eps:.12g}  P* = {p.P_star:.10g}  "
-              f"delta/Delta = {p.delta_over_Delta:.12g}  feasible = {p.feasible}"
+        print(f"  {p.regime:14s} a = {p.a:.10g}  eps = {p.eps:.10g}  P* = {p.P_star:.10g}  "
+              f"delta/Delta = {p.delta_over_Delta:.10g}  feasible = {p.feasible}"
               + (f"  outcome = {p.outcome}" if p.outcome else ""))
     if not load:
         print("  none (no minimum of P* on any branch)")

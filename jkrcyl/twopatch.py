@@ -354,11 +354,22 @@ class TwoPatchCurve:
     alpha_ratio: float = 0.0
 
     COLUMNS = ("a", "a_top", "eps", "eps_top", "eps_star", "eps_top_star", "P_star", "delta_over_Delta",
-               "gap_min", "feasible", "stable_load", "stable_grip")
+               "delta_work_over_Delta", "gap_min", "feasible", "stable_load", "stable_grip", "stable_grip_work")
 
-    def table(self):
-        """Columns of :attr:`COLUMNS` as a dict of arrays (booleans as 0/1)."""
-        return {k: np.asarray(getattr(self, k), dtype=float) for k in self.COLUMNS}
+    @property
+    def delta_work_over_Delta(self):
+        """Work-conjugate approach delta_work/Delta = delta/Delta + (gb/2) vartheta P* (derive/green.py)."""
+        from .numerics import kernels
+        return kernels.work_over_Delta(self.delta_over_Delta, self.P_star, theta=self.theta, gb=self.gb)
+
+    def table(self, raw=False):
+        """Columns of :attr:`COLUMNS` as a dict of arrays (booleans as 0/1; raw=True keeps them boolean)."""
+        return {k: np.asarray(getattr(self, k)) if raw else np.asarray(getattr(self, k), dtype=float)
+                for k in self.COLUMNS}
+
+    def __repr__(self):
+        return (f"TwoPatchCurve(M={self.M:.6g}, theta={self.theta:.6g}, {np.size(self.a)} points, ends "
+                f"{self.ends[0]} -> {self.ends[1]}, {int(np.sum(self.stable_load))} stable under load)")
 
 
 LOG_AXIS = math.log(EPS_AXIS)
@@ -680,6 +691,10 @@ class ConfinedEvents:
     branches: tuple
     gb: float = None            # (1/G_I)/beta* and alpha*/beta* of the analysis (the full-contact law)
     alpha_ratio: float = 0.0
+
+    def __repr__(self):
+        return (f"ConfinedEvents({self.regime}: M={self.M:.6g}, theta={self.theta:.6g}, P_fold={self.P_fold:.6g}, "
+                f"P_top_contact={self.P_top_contact:.6g}, {len(self.branches)} two-patch branches)")
 
     @property
     def description(self):

@@ -234,9 +234,8 @@ def test_cli_numbers_and_booleans():
     assert all(isinstance(v, bool) for v in data["feasible"])
 
 
-@pytest.mark.xfail(strict=True, reason="jkrcyl/cli.py _cmd_two_patch prints repr(float) (17 digits) and booleans as "
-                   "1.0/0.0, unlike every other command (issue 11: no 17-digit noise, booleans true/false)")
 def test_cli_two_patch_numbers_and_booleans():
+    """Was: repr(float) (17 digits) and booleans as 1.0/0.0, unlike every other command (issue 11)."""
     r = run("two-patch", "--M", "0.4", "--theta", "1", "--n", "4")
     assert r.returncode == 0, r.stderr
     lines = [ln for ln in r.stdout.splitlines() if not ln.startswith("#")]
