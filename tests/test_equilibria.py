@@ -254,3 +254,23 @@ def test_bad_inputs_name_the_parameter():
         eq.zero_load_contact(-1, 1.0)
     with pytest.raises(ValueError, match="theta"):
         eq.curve(0.3, 0.2)
+
+
+@pytest.mark.parametrize("a_txt", ("1e-8", "1e-5", "1e-2", "10", "1e3", "1e4"))
+def test_release_rate_pieces_vs_mpmath_across_the_domain(a_txt):
+    """The pieces the layer's chain rule uses, (1/w) dG/dp and d(delta/Delta)/dp at fixed a, against the printed
+    (4.4), (5.8) and (3.4)-(3.5) at 40 digits, from tiny to huge contacts (the direct dG/da forms cancelled
+    there): P and delta are affine in zeta* at fixed a, so the compliance is a ratio of zeta*-coefficients."""
+    beta, th, GI = PAIRS[1]
+    a = mp.mpf(a_txt)
+    with mp.workdps(40):
+        M = mp.mpf("0.35")
+        zeta = 4 * mp.pi * DELTA * th * M / beta
+        w = zeta**2 * beta / (4 * mp.pi * R)
+        dn = lambda z: pp.delta_58(a, DELTA, R, beta, th, GI, z, mp) / DELTA
+        p = lambda z: pp.P_44(a, DELTA, beta, th, z, mp) * beta / (4 * mp.pi * DELTA)
+        ref_c = (dn(1) - dn(0)) / (p(1) - p(0))
+        ref_g = mp.diff(lambda q: _G(a, beta, th, _zeta_for(a, beta, th, P=q * 4 * mp.pi * DELTA / beta)), p(zeta)) / w
+    r = _k.star_m(np.array([float(a)]), inv_theta=float(1 / th), m=float(M * th), gb=float(1 / GI / beta))
+    _close(r.ddelta_dp[0], ref_c, 1e-14)
+    _close(r.dG_dp[0], ref_g, 1e-14)
