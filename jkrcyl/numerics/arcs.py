@@ -24,9 +24,11 @@ import math
 
 import numpy as np
 from scipy.linalg.lapack import dgesv as _dgesv
+from scipy.special import jv as _jv
 
 from ..generated import green as _green
 from . import arcs_enrich as _en
+from . import arcs_kernels as _ak
 
 LOG2 = math.log(2.0)
 NEAR_ARC = 1.6     # gap points closer than this (in half-widths from the centre) use the fine grid
@@ -84,13 +86,16 @@ def _ell(t):
 def _fine_grid(n_fine=4096):
     """Gauss-Chebyshev nodes and the enrichment functions on them (gap evaluation off the tables)."""
     s = _nodes(n_fine)
-    return s, _en._g(s)
+    return s, np.ascontiguousarray(_en._g(s)[:_en.N_ENRICH])
 
 
 def _ell3(t):
     """log(4 sin^2(t/2)/(t^2 (t - 2 pi)^2 (t + 2 pi)^2)), analytic for |t| < 4 pi."""
     t = np.asarray(t, dtype=float)
     return _ell(t) - 2 * np.log(np.abs(t - 2 * math.pi)) - 2 * np.log(np.abs(t + 2 * math.pi))
+
+
+_NO_TRIG = np.zeros((0, _en.K_TRIG))
 
 
 class Kernel:
@@ -107,6 +112,44 @@ class Kernel:
         self.k0, self.k1 = c.k0, c.k1
 
 
+@functools.lru_cache(maxsize=None)
+def _tables(n, enriched):
+    """Per node count: the table points xt (the nodes, and with the enrichment the end points too),
+    arcs_enrich.tables and, stacked for the kernels, Lam, Sig (m, n + m, K), omega[j] = D^T mu_j (quadrature
+    weights of g_j w), mu (m, n), and the same-arc rows of the log and sign moments times D, LD0 and SD0 (their
+    points offset/e are the table points)."""
+    D = _cheb_matrix(n)
+    if not enriched:
+        xt = _nodes(n)
+        LD0, SD0 = _log_moments(xt, n) @ D, np.zeros((xt.size, n))
+        z = np.zeros((0, 1, 1))
+        return None, None, xt, None, z, z, np.zeros((0, n)), np.zeros((0, n)), LD0, SD0
+    m = _en.N_ENRICH
+    x_extra = np.cos(np.arange(m) * np.pi / (2 * n * m))
+    x_table = tuple(np.concatenate([_nodes(n), x_extra]))
+    tab = _en.tables(n, x_table)
+    Lam, Sig, mu = tab
+    omega = np.ascontiguousarray([D.T @ mu[j][:n] for j in range(m)])
+    xt = np.array(x_table)
+    LD0, SD0 = _log_moments(xt, n) @ D, _sign_moments(xt, n) @ D
+    return (x_extra, x_table, xt, tab, np.ascontiguousarray(Lam), np.ascontiguousarray(Sig), omega,
+            np.ascontiguousarray([mu[j][:n] for j in range(m)]), LD0, SD0)
+
+
+_K = np.arange(_en.K_TRIG)
+_TRIG_SIGN = (-1.0) ** (_K // 2)
+
+
+def _trig_all(ae):
+    """arcs_enrich.trig_coefficients of every half-width: (na, K) arrays gamma_c, gamma_s."""
+    J = _jv(_K[None, :], ae[:, None])
+    sj = 2 * _TRIG_SIGN * J
+    gc = np.where(_K % 2 == 0, sj, 0.0)
+    gc[:, 0] = J[:, 0]
+    gs = np.where(_K % 2 == 1, sj, 0.0)
+    return gc, gs
+
+
 class Arcs:
     """Collocation system for arcs [(centre, half-width), ...] with n Gauss-Chebyshev nodes per arc."""
 
@@ -115,94 +158,61 @@ class Arcs:
         self.kernel, self.n = kernel, n
         self.s = _nodes(n)
         self.D = _cheb_matrix(n)
-        self.centres = np.repeat([c for c, _ in self.arcs], n)
-        self.offsets = np.concatenate([e * self.s for _, e in self.arcs])
-        self.cos = np.cos(self.centres) * np.cos(self.offsets)    # exact for centres 0, pi
+        self._ac = np.array([c for c, _ in self.arcs], dtype=float)
+        self._ae = np.array([e for _, e in self.arcs], dtype=float)
         # alpha* != 0: unknowns u (n per arc) then c (N_ENRICH per arc); extra collocation points at the ends
         self.m = _en.N_ENRICH if kernel.ar != 0.0 else 0
+        na = len(self.arcs)
+        (self.x_extra, self.x_table, self._xt, self.tab, self._Lam, self._Sig, self._omega, self._mu,
+         LD0, SD0) = _tables(n, bool(self.m))
         if self.m:
-            self.x_extra = np.cos(np.arange(self.m) * np.pi / (2 * n * self.m))
-            self.x_table = tuple(np.concatenate([self.s, self.x_extra]))
-            self.tab = _en.tables(n, self.x_table)
-            cen = np.repeat([c for c, _ in self.arcs], n + self.m)
-            off = np.concatenate([e * np.array(self.x_table) for _, e in self.arcs])
-            self.A = np.hstack([self.operator(cen, off), self.enrichment(cen, off, table=True)])
+            self._gcs, self._gss = _trig_all(self._ae)
         else:
-            self.A = self.operator(self.centres, self.offsets)
+            self._gcs = self._gss = _NO_TRIG
+        npt = na * self._xt.size
+        self.A = np.empty((npt, npt))
+        self._rhs = np.empty((npt, 2))      # the right-hand sides of Linear: -(1 - cos phi), cos phi
+        _ak.assemble(self._ac, self._ae, self.s, self.D, kernel.k0, kernel.k1, kernel.ar, self._xt, LD0, SD0,
+                     self._Lam, self._Sig, self._omega, self._gcs, self._gss, self.A, self._rhs)
+
+    @property
+    def centres(self):
+        return np.repeat(self._ac, self.n)
+
+    @property
+    def offsets(self):
+        return (self._ae[:, None] * self.s[None, :]).ravel()
+
+    @property
+    def cos(self):
+        return np.cos(self.centres) * np.cos(self.offsets)    # exact for centres 0, pi
+
+    def _operator(self, centres, offsets, out, col0):
+        kn = self.kernel
+        _ak.operator(centres, offsets, self._ac, self._ae, self.s, self.D, kn.k0, kn.k1, kn.ar, out, col0)
+
+    def _enrichment(self, centres, offsets, table, out, col0):
+        kn = self.kernel
+        sf, gf = _fine_grid()
+        _ak.enrichment(centres, offsets, self._ac, self._ae, self.s, kn.k0, kn.k1, kn.ar, table, self._Lam,
+                       self._Sig, self._omega, self._gcs, self._gss, sf, gf, out, col0)
 
     def operator(self, centres, offsets):
         """Matrix: node values u -> -int nu K dpsi at the angles centre + offset (= gap - rigid part)."""
-        kn, n = self.kernel, self.n
-        blocks = []
-        for c, e in self.arcs:
-            same = centres == c
-            d = np.where(same, offsets, np.angle(np.exp(1j * (centres - c))) + offsets)
-            t = d[:, None] - e * self.s[None, :]
-            cos_t, sin_t = np.cos(t), np.sin(t)
-            x = d / e
-            if same.any() and e > 1.0:
-                # the arc's own images at t = +-2 pi lie just beyond its ends as eps -> pi: exact moments too
-                images = 2 * math.pi / e
-                smooth = cos_t * (6 * math.log(e) + _ell3(t)) + kn.k1 * cos_t + kn.k0
-                L = _log_moments(x, n) + _log_moments(x - images, n) + _log_moments(x + images, n)
-            else:
-                smooth = cos_t * (2 * math.log(e) + _ell(t)) + kn.k1 * cos_t + kn.k0
-                L = _log_moments(x, n)
-            block = 2 * cos_t * (L @ self.D)
-            if kn.ar != 0.0:
-                kink = np.abs(x) < 1            # sign(t) changes inside this arc: exact sign moments
-                smooth = smooth - kn.ar * t * sin_t
-                smooth[~kink] += kn.ar * math.pi * np.sign(t[~kink]) * sin_t[~kink]
-                if kink.any():
-                    S = _sign_moments(x[kink], n) @ self.D
-                    block[kink] += kn.ar * math.pi * sin_t[kink] * S
-            blocks.append(smooth * (math.pi / n) + block)
-        return -np.hstack(blocks)
+        centres = np.ascontiguousarray(centres, dtype=float)
+        offsets = np.ascontiguousarray(offsets, dtype=float)
+        out = np.empty((centres.size, len(self.arcs) * self.n))
+        self._operator(centres, offsets, out, 0)
+        return out
 
     def enrichment(self, centres, offsets, table=False):
         """Matrix: enrichment coefficients c -> -int nu K dpsi at the angles (arcs_enrich).  table=True: the
         points are the collocation points of each arc in order (same-arc rows use the exact tables)."""
-        kn, n, m = self.kernel, self.n, self.m
-        npt = n + m
-        blocks = []
-        for ia, (c, e) in enumerate(self.arcs):
-            Lam, Sig, mu = self.tab
-            omega = [self.D.T @ mu[j][:n] for j in range(m)]
-            same = centres == c
-            d = np.where(same, offsets, np.angle(np.exp(1j * (centres - c))) + offsets)
-            t = d[:, None] - e * self.s[None, :]
-            cos_t, sin_t = np.cos(t), np.sin(t)
-            rows = np.zeros(d.size, dtype=bool)
-            if table:
-                rows[ia * npt:(ia + 1) * npt] = True
-            tf, cf, sf = t[~rows], cos_t[~rows], sin_t[~rows]
-            full = cf * np.log(2 - 2 * cf) + kn.k1 * cf + kn.k0 + kn.ar * (math.pi * np.sign(tf) * sf - tf * sf)
-            tr, cr, sr = t[rows], cos_t[rows], sin_t[rows]
-            reg = cr * (2 * math.log(e) + _ell(tr)) + kn.k1 * cr + kn.k0 - kn.ar * tr * sr
-            block = np.empty((d.size, m))
-            gc, gs = _en.trig_coefficients(e)
-            K = gc.size
-            ce, se = np.cos(d[rows]), np.sin(d[rows])
-            near = ~rows & (np.abs(d / e) < NEAR_ARC) & (not table)
-            if near.any():
-                # gap points just outside the arc: the kernel is nearly singular there, so integrate g_j w
-                # on a fine Gauss-Chebyshev grid instead of the n-node weights (Chebyshev rate NEAR_ARC^-n)
-                sf, gf = _fine_grid()
-                tf = d[near, None] - e * sf[None, :]
-                cf, sf_ = np.cos(tf), np.sin(tf)
-                kf = (cf * np.log(2 - 2 * cf) + kn.k1 * cf + kn.k0
-                      + kn.ar * (math.pi * np.sign(tf) * sf_ - tf * sf_)) * (math.pi / sf.size)
-                block[near] = kf @ gf[:m].T
-            far = ~rows & ~near
-            full = full[far[~rows]]
-            for j in range(m):
-                block[far, j] = full @ omega[j]
-                if rows.any():
-                    lam, sig = Lam[j][:, :K], Sig[j][:, :K]
-                    block[rows, j] = (reg @ omega[j] + 2 * (ce * (lam @ gc) + se * (lam @ gs))
-                                      + kn.ar * math.pi * (se * (sig @ gc) - ce * (sig @ gs)))
-            blocks.append(block)
-        return -np.hstack(blocks)
+        centres = np.ascontiguousarray(centres, dtype=float)
+        offsets = np.ascontiguousarray(offsets, dtype=float)
+        out = np.empty((centres.size, len(self.arcs) * self.m))
+        self._enrichment(centres, offsets, bool(table), out, 0)
+        return out
 
     def apply(self, centres, offsets, v):
         """-int nu K dpsi at angles outside the arcs for the unknown vector v."""
@@ -235,6 +245,9 @@ class Arcs:
         return out
 
 
+_G_END = np.ascontiguousarray(_en.G_END[:_en.N_ENRICH])
+
+
 class Linear:
     """Both unit cases for fixed arcs, normalised by vartheta_eff (vartheta, or 1 for a rigid cradle):
     u = u0 + (delta/Delta) u1 and q = [P*, B*, k_bot, k_top] = q0 + (delta/Delta) q1, with
@@ -246,15 +259,12 @@ class Linear:
         self.scale = 1.0 if math.isinf(theta) else float(theta)
         self.sys = Arcs([(0.0, eps), (math.pi, eps_top)], Kernel(theta, gb, alpha_ratio), n)
         sy = self.sys
-        cos_pts = sy.cos if not sy.m else np.concatenate(
-            [math.cos(c) * np.cos(e * np.array(sy.x_table)) for c, e in sy.arcs])
-        rhs = np.column_stack([-(1 - cos_pts), cos_pts])
-        lu, piv, U, info = _dgesv(sy.A, rhs)           # one LAPACK call: LU (for sign_det) and the solve
-        U = U / self.scale
+        lu, piv, U, info = _dgesv(sy.A, sy._rhs)       # one LAPACK call: LU (for sign_det) and the solve
         swaps = np.count_nonzero(piv != np.arange(1, piv.size + 1))   # LAPACK pivots are 1-based
         self.sign_det = float((-1) ** swaps * np.prod(np.sign(np.diag(lu))))
+        U, q = _ak.unit_q(U, sy._ac, sy._ae, sy.s, sy.D, sy._mu, _G_END, self.scale)
         self.u0, self.u1 = U[:, 0], U[:, 1]
-        self.q0, self.q1 = self._q(self.u0), self._q(self.u1)
+        self.q0, self.q1 = q[:, 0], q[:, 1]
 
     def _q(self, u):
         sy = self.sys

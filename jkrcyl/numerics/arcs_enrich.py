@@ -13,6 +13,7 @@ import math
 import numpy as np
 from scipy.fft import dct
 from scipy.special import jv
+from threadpoolctl import threadpool_limits
 
 M_FINE = 2 ** 16           # Chebyshev degree of the g_j tables (aliasing error ~ M^-3 relative)
 K_TRIG = 34                # Chebyshev terms of cos(e s), sin(e s) for e <= pi (J_34(pi) ~ 1e-32)
@@ -71,11 +72,14 @@ def tables(n, x_key):
     SM[:, 1:] = -2 * np.sin(np.outer(th, m)) / m
     C = _coefficients()
     Lam, Sig, mu = [], [], []
-    for j in range(N_ENRICH):
-        P = np.array([_times_T(C[j], k) for k in range(K_TRIG)])       # K x M
-        Lam.append(LM @ P.T)
-        Sig.append(SM @ P.T)
-        mu.append(np.where(np.arange(n) == 0, math.pi, math.pi / 2) * C[j][:n])
+    # one BLAS thread: threaded products here leave OpenBLAS workers spinning for ~0.1 s afterwards, which on
+    # a small machine halves the speed of the many small solves that follow a fresh table
+    with threadpool_limits(limits=1, user_api="blas"):
+        for j in range(N_ENRICH):
+            P = np.array([_times_T(C[j], k) for k in range(K_TRIG)])       # K x M
+            Lam.append(LM @ P.T)
+            Sig.append(SM @ P.T)
+            mu.append(np.where(np.arange(n) == 0, math.pi, math.pi / 2) * C[j][:n])
     return Lam, Sig, mu
 
 

@@ -1,0 +1,371 @@
+"""numba kernels of the arc collocation (jkrcyl.numerics.arcs): the operator and enrichment matrices.
+
+The formulas are those of arcs.Arcs.operator / Arcs.enrichment (see there), evaluated entry by entry in
+compiled loops instead of numpy temporaries; the node-count tables (nodes, Chebyshev matrix, enrichment
+tables) are passed in.  Arc geometry: arrays ac (centres), ae (half-widths); points: centres, offsets.
+"""
+import math
+
+import numpy as np
+from numba import njit
+
+PI = math.pi
+TWO_PI = 2 * math.pi
+LOG2 = math.log(2.0)
+NEAR_ARC = 1.6
+
+
+@njit(cache=True, inline="always")
+def _sign(t):
+    return 1.0 if t > 0 else (-1.0 if t < 0 else 0.0)
+
+
+@njit(cache=True, inline="always")
+def _ell(t):
+    """log((2 sin(t/2)/t)^2) as arcs._ell: 2 log|sinc(t/(2 pi))|."""
+    u = t / TWO_PI
+    if u == 0.0:
+        return 0.0
+    y = PI * u
+    return 2 * math.log(abs(math.sin(y) / y))
+
+
+@njit(cache=True, inline="always")
+def _ell3(t):
+    return _ell(t) - 2 * math.log(abs(t - TWO_PI)) - 2 * math.log(abs(t + TWO_PI))
+
+
+@njit(cache=True, inline="always")
+def _wrap(y):
+    """np.angle(np.exp(1j y))."""
+    return math.atan2(math.sin(y), math.cos(y))
+
+
+@njit(cache=True)
+def _add_log_moments(x, n, out, sgn):
+    """out[m] += sgn * int log|x - s| T_m(s)/sqrt(1 - s^2) ds (arcs._log_moments)."""
+    if abs(x) <= 1:
+        th = math.acos(min(max(x, -1.0), 1.0))
+        out[0] += sgn * (-PI * LOG2)
+        for m in range(1, n):
+            out[m] += sgn * (-PI * math.cos(th * m) / m)
+    else:
+        ax = abs(x)
+        r = math.sqrt((ax - 1) * (ax + 1))
+        z = _sign(x) / (ax + r)
+        out[0] += sgn * (PI * math.log((ax + r) / 2))
+        zm = 1.0
+        for m in range(1, n):
+            zm *= z
+            out[m] += sgn * (-PI * zm / m)
+
+
+@njit(cache=True, inline="always")
+def _vecmat(v, D, out, add):
+    """out (+)= v @ D (rows of D in order: the sum over q ascends as in a dot product)."""
+    n = D.shape[1]
+    if not add:
+        for k in range(n):
+            out[k] = 0.0
+    for q in range(D.shape[0]):
+        vq = v[q]
+        for k in range(n):
+            out[k] += vq * D[q, k]
+
+
+@njit(cache=True)
+def operator(centres, offsets, ac, ae, s, D, k0, k1, ar, out, col0):
+    """out[:, col0 + ia n + k] = the operator block of arc ia (arcs.Arcs.operator, negated as there)."""
+    npt = centres.size
+    n = s.size
+    na = ac.size
+    L = np.empty(n)
+    L2 = np.empty(n)
+    Sg = np.empty(n)
+    LD = np.empty(n)
+    SD = np.empty(n)
+    d = np.empty(npt)
+    for ia in range(na):
+        c, e = ac[ia], ae[ia]
+        any_same = False
+        for i in range(npt):
+            if centres[i] == c:
+                d[i] = offsets[i]
+                any_same = True
+            else:
+                d[i] = _wrap(centres[i] - c) + offsets[i]
+        images_on = any_same and e > 1.0
+        loge = math.log(e)
+        images = 2 * PI / e
+        for i in range(npt):
+            x = d[i] / e
+            for m in range(n):
+                L[m] = 0.0
+            _add_log_moments(x, n, L, 1.0)
+            if images_on:
+                for m in range(n):
+                    L2[m] = 0.0
+                _add_log_moments(x - images, n, L2, 1.0)
+                for m in range(n):
+                    L[m] = L[m] + L2[m]
+                for m in range(n):
+                    L2[m] = 0.0
+                _add_log_moments(x + images, n, L2, 1.0)
+                for m in range(n):
+                    L[m] = L[m] + L2[m]
+            kink = ar != 0.0 and abs(x) < 1
+            if kink:
+                th = math.acos(min(max(x, -1.0), 1.0))
+                Sg[0] = PI - 2 * th
+                for m in range(1, n):
+                    Sg[m] = -2 * math.sin(th * m) / m
+            _vecmat(L, D, LD, False)
+            if kink:
+                _vecmat(Sg, D, SD, False)
+            for k in range(n):
+                t = d[i] - e * s[k]
+                ct, st = math.cos(t), math.sin(t)
+                if images_on:
+                    smooth = ct * (6 * loge + _ell3(t)) + k1 * ct + k0
+                else:
+                    smooth = ct * (2 * loge + _ell(t)) + k1 * ct + k0
+                block = 2 * ct * LD[k]
+                if ar != 0.0:
+                    smooth = smooth - ar * t * st
+                    if kink:
+                        block += ar * PI * st * SD[k]
+                    else:
+                        smooth += ar * PI * _sign(t) * st
+                out[i, col0 + ia * n + k] = -(smooth * (PI / n) + block)
+
+
+@njit(cache=True, inline="always")
+def _full(t, k0, k1, ar):
+    ct, st = math.cos(t), math.sin(t)
+    return ct * math.log(2 - 2 * ct) + k1 * ct + k0 + ar * (PI * _sign(t) * st - t * st)
+
+
+@njit(cache=True)
+def enrichment(centres, offsets, ac, ae, s, k0, k1, ar, table, Lam, Sig, omega, gcs, gss, sfine, gfine,
+               out, col0):
+    """out[:, col0 + ia m + j] = the enrichment block of arc ia (arcs.Arcs.enrichment, negated as there).
+
+    Lam, Sig: (m, n + m, K) tables; omega: (m, n) = D^T mu_j; gcs, gss: (na, K) trig coefficients of the arcs;
+    sfine, gfine: the fine grid and g_j on it (for points near an arc, table=False)."""
+    npt = centres.size
+    n = s.size
+    na = ac.size
+    m = omega.shape[0]
+    K = gcs.shape[1]
+    nf = sfine.size
+    nt = n + m
+    reg = np.empty(n)
+    acc = np.empty(m)
+    for ia in range(na):
+        c, e = ac[ia], ae[ia]
+        loge = math.log(e)
+        for i in range(npt):
+            if centres[i] == c:
+                di = offsets[i]
+            else:
+                di = _wrap(centres[i] - c) + offsets[i]
+            is_row = table and (ia * nt <= i < (ia + 1) * nt)
+            if is_row:
+                p = i - ia * nt
+                for k in range(n):
+                    t = di - e * s[k]
+                    ct, st = math.cos(t), math.sin(t)
+                    reg[k] = ct * (2 * loge + _ell(t)) + k1 * ct + k0 - ar * t * st
+                ce, se = math.cos(di), math.sin(di)
+                for j in range(m):
+                    a1 = 0.0
+                    for k in range(n):
+                        a1 += reg[k] * omega[j, k]
+                    lc = 0.0
+                    ls = 0.0
+                    sc = 0.0
+                    ss = 0.0
+                    for q in range(K):
+                        lc += Lam[j, p, q] * gcs[ia, q]
+                        ls += Lam[j, p, q] * gss[ia, q]
+                        sc += Sig[j, p, q] * gcs[ia, q]
+                        ss += Sig[j, p, q] * gss[ia, q]
+                    out[i, col0 + ia * m + j] = -(a1 + 2 * (ce * lc + se * ls) + ar * PI * (se * sc - ce * ss))
+            elif (not table) and abs(di / e) < NEAR_ARC:
+                for j in range(m):
+                    acc[j] = 0.0
+                for q in range(nf):
+                    kf = _full(di - e * sfine[q], k0, k1, ar) * (PI / nf)
+                    for j in range(m):
+                        acc[j] += kf * gfine[j, q]
+                for j in range(m):
+                    out[i, col0 + ia * m + j] = -acc[j]
+            else:
+                for j in range(m):
+                    acc[j] = 0.0
+                for k in range(n):
+                    f = _full(di - e * s[k], k0, k1, ar)
+                    for j in range(m):
+                        acc[j] += f * omega[j, k]
+                for j in range(m):
+                    out[i, col0 + ia * m + j] = -acc[j]
+
+
+@njit(cache=True)
+def assemble(ac, ae, s, D, k0, k1, ar, xt, LD0, SD0, Lam, Sig, omega, gcs, gss, A, rhs):
+    """The collocation matrix A of arcs.Arcs (operator columns, then enrichment columns when omega has rows)
+    and the two right-hand sides of arcs.Linear, in one pass (cos t, sin t and the log factor shared).
+
+    Rows: arc ir, table point p (centre ac[ir], offset ae[ir] xt[p]); xt = the nodes (alpha* = 0) or the
+    nodes and the end points (arcs_enrich); LD0[p] = (log moments at xt[p]) @ D, SD0 (sign moments): the
+    same-arc rows, whose points offset/e are the table points."""
+    n = s.size
+    na = ac.size
+    m = omega.shape[0]
+    npt = xt.size
+    K = gcs.shape[1]
+    N = na * npt
+    L = np.empty(n)
+    Sg = np.empty(n)
+    LD = np.empty(n)
+    SD = np.empty(n)
+    reg = np.empty(n)
+    acc = np.empty(max(m, 1))
+    for ir in range(na):
+        for p in range(npt):
+            i = ir * npt + p
+            cp = math.cos(ac[ir]) * math.cos(ae[ir] * xt[p])
+            rhs[i, 0] = -(1 - cp)
+            rhs[i, 1] = cp
+    for ia in range(na):
+        c, e = ac[ia], ae[ia]
+        loge = math.log(e)
+        images = 2 * PI / e
+        images_on = e > 1.0        # every arc has its own rows here
+        for i in range(N):
+            ir = i // npt
+            p = i - ir * npt
+            cen, off = ac[ir], ae[ir] * xt[p]
+            same = cen == c
+            d = off if same else _wrap(cen - c) + off
+            x = d / e
+            kink = ar != 0.0 and abs(x) < 1
+            if same:
+                for k in range(n):
+                    LD[k] = LD0[p, k]
+                    SD[k] = SD0[p, k]
+                if images_on:
+                    for q in range(n):
+                        L[q] = 0.0
+                    _add_log_moments(x - images, n, L, 1.0)
+                    _add_log_moments(x + images, n, L, 1.0)
+                    _vecmat(L, D, Sg, False)
+                    for k in range(n):
+                        LD[k] += Sg[k]
+            else:
+                for q in range(n):
+                    L[q] = 0.0
+                _add_log_moments(x, n, L, 1.0)
+                if images_on:
+                    _add_log_moments(x - images, n, L, 1.0)
+                    _add_log_moments(x + images, n, L, 1.0)
+                if kink:
+                    th = math.acos(min(max(x, -1.0), 1.0))
+                    Sg[0] = PI - 2 * th
+                    for q in range(1, n):
+                        Sg[q] = -2 * math.sin(th * q) / q
+                _vecmat(L, D, LD, False)
+                if kink:
+                    _vecmat(Sg, D, SD, False)
+            for j in range(m):
+                acc[j] = 0.0
+            for k in range(n):
+                t = d - e * s[k]
+                ct, st = math.cos(t), math.sin(t)
+                el = _ell(t)
+                if images_on:
+                    smooth = ct * (6 * loge + (el - 2 * math.log(abs(t - TWO_PI)) - 2 * math.log(abs(t + TWO_PI)))) \
+                        + k1 * ct + k0
+                else:
+                    smooth = ct * (2 * loge + el) + k1 * ct + k0
+                block = 2 * ct * LD[k]
+                if ar != 0.0:
+                    smooth = smooth - ar * t * st
+                    if kink:
+                        block += ar * PI * st * SD[k]
+                    else:
+                        smooth += ar * PI * _sign(t) * st
+                A[i, ia * n + k] = -(smooth * (PI / n) + block)
+                if m:
+                    if same:
+                        r = ct * (2 * loge + el) + k1 * ct + k0 - ar * t * st
+                    else:
+                        r = ct * math.log(2 - 2 * ct) + k1 * ct + k0 + ar * (PI * _sign(t) * st - t * st)
+                    for j in range(m):
+                        acc[j] += r * omega[j, k]
+            if m:
+                if same:
+                    ce, se = math.cos(d), math.sin(d)
+                    for j in range(m):
+                        lc = 0.0
+                        ls = 0.0
+                        sc = 0.0
+                        ss = 0.0
+                        for q in range(K):
+                            lc += Lam[j, p, q] * gcs[ia, q]
+                            ls += Lam[j, p, q] * gss[ia, q]
+                            sc += Sig[j, p, q] * gcs[ia, q]
+                            ss += Sig[j, p, q] * gss[ia, q]
+                        A[i, na * n + ia * m + j] = -(acc[j] + 2 * (ce * lc + se * ls)
+                                                      + ar * PI * (se * sc - ce * ss))
+                else:
+                    for j in range(m):
+                        A[i, na * n + ia * m + j] = -acc[j]
+
+
+@njit(cache=True)
+def unit_q(U, ac, ae, s, D, mu, gend, scale):
+    """(U / scale, q): q[:, col] = [P*, B*, k_bot, k_top] of the column col of U / scale (arcs.Linear._q:
+    arcs.Arcs.moments of cos and 1, arcs.Arcs.edge); mu (m, n): the enrichment moments mu_j[:n]."""
+    n = s.size
+    na = ac.size
+    m = mu.shape[0]
+    nc = U.shape[1]
+    Us = U / scale
+    q = np.zeros((4, nc))
+    f = np.empty(n)
+    fhat = np.empty(n)
+    for col in range(nc):
+        for which in range(2):
+            out = 0.0
+            for ia in range(na):
+                for k in range(n):
+                    f[k] = math.cos(ac[ia] + ae[ia] * s[k]) if which == 0 else 1.0
+                a1 = 0.0
+                for k in range(n):
+                    a1 += Us[ia * n + k, col] * f[k]
+                out += PI / n * a1
+                if m:
+                    for r in range(n):
+                        a2 = 0.0
+                        for k in range(n):
+                            a2 += D[r, k] * f[k]
+                        fhat[r] = a2
+                    sj = 0.0
+                    for j in range(m):
+                        a3 = 0.0
+                        for r in range(n):
+                            a3 += mu[j, r] * fhat[r]
+                        sj += Us[na * n + ia * m + j, col] * a3
+                    out += sj
+            q[which, col] = out
+        for ia in range(na):
+            tot = 0.0
+            for r in range(n):
+                for k in range(n):
+                    tot += D[r, k] * Us[ia * n + k, col]
+            en = 0.0
+            for j in range(m):
+                en += Us[na * n + ia * m + j, col] * gend[j]
+            q[2 + ia, col] = -(tot + en) / math.sqrt(2 * ae[ia])
+    return Us, q
