@@ -140,14 +140,15 @@ _K = np.arange(_en.K_TRIG)
 _TRIG_SIGN = (-1.0) ** (_K // 2)
 
 
+_TRIG_C = np.where(_K % 2 == 0, 2 * _TRIG_SIGN, 0.0)
+_TRIG_C[0] = 1.0
+_TRIG_S = np.where(_K % 2 == 1, 2 * _TRIG_SIGN, 0.0)
+
+
 def _trig_all(ae):
     """arcs_enrich.trig_coefficients of every half-width: (na, K) arrays gamma_c, gamma_s."""
-    J = _jv(_K[None, :], ae[:, None])
-    sj = 2 * _TRIG_SIGN * J
-    gc = np.where(_K % 2 == 0, sj, 0.0)
-    gc[:, 0] = J[:, 0]
-    gs = np.where(_K % 2 == 1, sj, 0.0)
-    return gc, gs
+    J = _jv(_K, ae[0])[None, :] if ae.size == 1 else _jv(_K[None, :], ae[:, None])
+    return J * _TRIG_C, J * _TRIG_S
 
 
 class Arcs:
@@ -216,10 +217,13 @@ class Arcs:
 
     def apply(self, centres, offsets, v):
         """-int nu K dpsi at angles outside the arcs for the unknown vector v."""
-        out = self.operator(centres, offsets) @ v[:self.n * len(self.arcs)]
+        centres = np.ascontiguousarray(centres, dtype=float)
+        offsets = np.ascontiguousarray(offsets, dtype=float)
+        M = np.empty((centres.size, len(self.arcs) * (self.n + self.m)))
+        self._operator(centres, offsets, M, 0)
         if self.m:
-            out = out + self.enrichment(centres, offsets) @ v[self.n * len(self.arcs):]
-        return out
+            self._enrichment(centres, offsets, False, M, len(self.arcs) * self.n)
+        return M @ v
 
     def split(self, v):
         """(node values u per arc, enrichment coefficients per arc) of an unknown vector."""
@@ -234,15 +238,10 @@ class Arcs:
 
     def moments(self, v, F):
         """int u(s) F(c + e s) ds/sqrt(1 - s^2) summed over the arcs, F vectorised (smooth)."""
-        U, C = self.split(v)
-        out = 0.0
-        for i, (c, e) in enumerate(self.arcs):
-            f = F(c + e * self.s)
-            out += math.pi / self.n * np.sum(U[i] * f)
-            if self.m:
-                fhat = self.D @ f
-                out += sum(C[i, j] * (self.tab[2][j][:self.n] @ fhat) for j in range(self.m))
-        return out
+        f = [np.asarray(F(c + e * self.s), dtype=float) for c, e in self.arcs]
+        f = f[0] if len(f) == 1 and f[0].shape == self.s.shape else np.concatenate(
+            [np.broadcast_to(fi, self.s.shape) for fi in f])
+        return _ak.moment(np.ascontiguousarray(v, dtype=float), f, self.n, len(self.arcs), self.D, self._mu)
 
 
 _G_END = np.ascontiguousarray(_en.G_END[:_en.N_ENRICH])
@@ -260,9 +259,8 @@ class Linear:
         self.sys = Arcs([(0.0, eps), (math.pi, eps_top)], Kernel(theta, gb, alpha_ratio), n)
         sy = self.sys
         lu, piv, U, info = _dgesv(sy.A, sy._rhs)       # one LAPACK call: LU (for sign_det) and the solve
-        swaps = np.count_nonzero(piv != np.arange(1, piv.size + 1))   # LAPACK pivots are 1-based
-        self.sign_det = float((-1) ** swaps * np.prod(np.sign(np.diag(lu))))
-        U, q = _ak.unit_q(U, sy._ac, sy._ae, sy.s, sy.D, sy._mu, _G_END, self.scale)
+        # sign_det from the LU (LAPACK pivots are 1-based), U / scale and both unit cases q in one kernel
+        self.sign_det, U, q = _ak.unit_q(lu, piv, U, sy._ac, sy._ae, sy.s, sy.D, sy._mu, _G_END, self.scale)
         self.u0, self.u1 = U[:, 0], U[:, 1]
         self.q0, self.q1 = q[:, 0], q[:, 1]
 
@@ -303,6 +301,13 @@ def two_patch_linear(eps, eps_top, theta, gb, n, alpha_ratio=0.0):
 
 
 # --- one arc in physical units (Contact.state(method="numeric")) -------------------------------------------
+_ZERO1, _PI1 = np.zeros(1), np.array([math.pi])
+
+
+def _dx_dphi(p):
+    return (1 + np.tan(p / 2) ** 2) / 2          # dx = (1 + x^2)/2 dphi
+
+
 def single_arc_state(a, R, Delta, w, beta, inv_theta, inv_G_I, alpha_star, n=None):
     """Griffith equilibrium (3.6) of the single bottom arc at contact parameter(s) a = tan(eps/2), any alpha*.
 
@@ -316,20 +321,19 @@ def single_arc_state(a, R, Delta, w, beta, inv_theta, inv_G_I, alpha_star, n=Non
     A = beta / (2 * math.pi)
     keys = ("P", "B", "C", "c0", "c1", "r0", "K", "G_release", "delta", "h_pi")
     out = {k: np.empty(a.size) for k in keys}
-    for i, ai in enumerate(a):
+    for i, ai in enumerate(a.tolist()):
         lin, f, delta = griffith_arc(ai, R, Delta, w, beta, inv_theta, inv_G_I, alpha_star, n)
-        q = f * (Delta * lin.q0 + delta * lin.q1)
+        q = [f * (Delta * x + delta * y) for x, y in zip(lin.q0.tolist(), lin.q1.tolist())]
         u = Delta * lin.u0 + delta * lin.u1
-        C = f * lin.sys.moments(u, lambda p: (1 + np.tan(p / 2) ** 2) / 2)   # dx = (1 + x^2)/2 dphi
+        C = f * lin.sys.moments(u, _dx_dphi)
         P, B = R * q[0], q[1]
-        out["P"][i], out["B"][i], out["C"][i] = P, B, C
-        out["c0"][i] = -Delta - R * beta * inv_theta * B / (8 * math.pi)  # (kappa + 1)/G = beta*/vartheta
-        out["c1"][i] = beta * P / (2 * math.pi)
-        out["r0"][i] = -q[2] * math.sqrt(ai * (1 + ai * ai))             # 1/sqrt(a^2 - x^2) ~ 1/sqrt(a(1+a^2)(eps-phi))
-        out["K"][i] = math.sqrt(2 * math.pi * R) * q[2]
-        out["G_release"][i] = math.pi / 4 * A * out["K"][i] ** 2
-        out["delta"][i] = delta
-        out["h_pi"][i] = 2 * Delta + delta + lin.scale * lin.sys.apply(np.zeros(1), np.array([math.pi]), u)[0]
+        K = math.sqrt(2 * math.pi * R) * q[2]
+        h_pi = 2 * Delta + delta + lin.scale * lin.sys.apply(_ZERO1, _PI1, u)[0]
+        for k, val in zip(keys, (P, B, C, -Delta - R * beta * inv_theta * B / (8 * math.pi),  # (kappa+1)/G = beta*/vartheta
+                                 beta * P / (2 * math.pi),
+                                 -q[2] * math.sqrt(ai * (1 + ai * ai)),  # 1/sqrt(a^2 - x^2) ~ 1/sqrt(a(1+a^2)(eps-phi))
+                                 K, math.pi / 4 * A * K ** 2, delta, h_pi)):
+            out[k][i] = val
     return out
 
 
