@@ -108,8 +108,13 @@ class Kernel:
     def __init__(self, theta, gb, ar=0.0):
         self.theta, self.gb, self.ar = float(theta), float(gb), float(ar)
         inv_theta = 0.0 if math.isinf(self.theta) else 1.0 / self.theta
-        c = _green.kernel_constants(ar=self.ar, gb=self.gb, inv_theta=inv_theta)
-        self.k0, self.k1 = c.k0, c.k1
+        self.k0, self.k1 = _kernel_constants(self.ar, self.gb, inv_theta)
+
+
+@functools.lru_cache(maxsize=256)
+def _kernel_constants(ar, gb, inv_theta):
+    c = _green.kernel_constants(ar=ar, gb=gb, inv_theta=inv_theta)
+    return c.k0, c.k1
 
 
 @functools.lru_cache(maxsize=None)
