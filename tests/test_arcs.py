@@ -84,7 +84,8 @@ def test_a_crit_of_the_solver_is_the_closed_form_pole():
 @pytest.mark.parametrize("ar", [0.0, 0.1167, -0.1167, 0.375])
 @pytest.mark.parametrize("eps", [0.3, 1.5, 2.5])
 def test_spectral_convergence_in_the_nodes(ar, eps):
-    """Unit cases [P*, B*, k] and h(pi): errors against n = 96 fall by >= 10x per 8 nodes down to 1e-11."""
+    """Unit cases [P*, B*, k] and h(pi): errors against n = 96 fall with n down to 1e-11; a fall is required only
+    while the error is above the roundoff floor (1e-14: below, the order of two ~1e-16 errors is chance)."""
     ref = arcs.two_patch_linear(eps, 0.0, 1.0, 0.4, 96, ar)
     errs = []
     for n in (8, 16, 24, 32, 48):
@@ -93,7 +94,8 @@ def test_spectral_convergence_in_the_nodes(ar, eps):
                 abs(lin.gap(math.pi, 0.3)[0] - ref.gap(math.pi, 0.3)[0]))
         errs.append(e / max(1.0, np.max(np.abs(ref.q1))))
     assert errs[-1] < 1e-11
-    assert errs[2] < 1e-7 and errs[0] > errs[1] > errs[2], errs
+    falls = lambda e0, e1: e0 > e1 or max(e0, e1) < 1e-14
+    assert errs[2] < 1e-7 and falls(errs[0], errs[1]) and falls(errs[1], errs[2]), errs
 
 
 # --- JKR superposition identities (any linear frictionless contact) ---------------------------------------
