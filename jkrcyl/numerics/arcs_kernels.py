@@ -60,6 +60,15 @@ def _add_log_moments(x, n, out, sgn):
             out[m] += sgn * (-PI * zm / m)
 
 
+@njit(cache=True)
+def _sign_moments_into(x, n, out):
+    """out[m] = int_{-1}^{1} sign(x - s) T_m(s)/sqrt(1 - s^2) ds (exact): pi - 2 theta, -2 sin(m theta)/m."""
+    th = math.acos(min(max(x, -1.0), 1.0))
+    out[0] = PI - 2 * th
+    for m in range(1, n):
+        out[m] = -2 * math.sin(th * m) / m
+
+
 @njit(cache=True, inline="always")
 def _vecmat(v, D, out, add):
     """out (+)= v @ D (rows of D in order: the sum over q ascends as in a dot product)."""
@@ -115,10 +124,7 @@ def operator(centres, offsets, ac, ae, s, D, k0, k1, ar, out, col0):
                     L[m] = L[m] + L2[m]
             kink = ar != 0.0 and abs(x) < 1
             if kink:
-                th = math.acos(min(max(x, -1.0), 1.0))
-                Sg[0] = PI - 2 * th
-                for m in range(1, n):
-                    Sg[m] = -2 * math.sin(th * m) / m
+                _sign_moments_into(x, n, Sg)
             _vecmat(L, D, LD, False)
             if kink:
                 _vecmat(Sg, D, SD, False)
@@ -270,10 +276,7 @@ def assemble(ac, ae, s, D, k0, k1, ar, xt, LD0, SD0, Lam, Sig, omega, gcs, gss, 
                     _add_log_moments(x - images, n, L, 1.0)
                     _add_log_moments(x + images, n, L, 1.0)
                 if kink:
-                    th = math.acos(min(max(x, -1.0), 1.0))
-                    Sg[0] = PI - 2 * th
-                    for q in range(1, n):
-                        Sg[q] = -2 * math.sin(th * q) / q
+                    _sign_moments_into(x, n, Sg)
                 _vecmat(L, D, LD, False)
                 if kink:
                     _vecmat(Sg, D, SD, False)
