@@ -60,6 +60,37 @@ def _add_log_moments(x, n, out, sgn):
             out[m] += sgn * (-PI * zm / m)
 
 
+@njit(cache=True, inline="always")
+def _operator_entry(smooth, t, ct, st, LDk, SDk, kink, ar, n):
+    """Operator column k at a point: Gauss-Chebyshev of the smooth kernel part plus the exact log moment
+    (LDk) and, on an arc with the alpha* kink, the exact sign moment (SDk); t = phi - psi_k."""
+    block = 2 * ct * LDk
+    if ar != 0.0:
+        smooth = smooth - ar * t * st
+        if kink:
+            block += ar * PI * st * SDk
+        else:
+            smooth += ar * PI * _sign(t) * st
+    return -(smooth * (PI / n) + block)
+
+
+@njit(cache=True, inline="always")
+def _same_arc_enrichment(smooth, Lam, Sig, gcs, gss, j, p, ia, ce, se, ar):
+    """Enrichment column j at point p of its own arc: the smooth part plus the exact log and sign moments of
+    the end terms (tables Lam, Sig) against the arc's trig coefficients gcs, gss (ce, se: cos, sin of the centre
+    offset)."""
+    lc = 0.0
+    ls = 0.0
+    sc = 0.0
+    ss = 0.0
+    for q in range(gcs.shape[1]):
+        lc += Lam[j, p, q] * gcs[ia, q]
+        ls += Lam[j, p, q] * gss[ia, q]
+        sc += Sig[j, p, q] * gcs[ia, q]
+        ss += Sig[j, p, q] * gss[ia, q]
+    return smooth + 2 * (ce * lc + se * ls) + ar * PI * (se * sc - ce * ss)
+
+
 @njit(cache=True)
 def _sign_moments_into(x, n, out):
     """out[m] = int_{-1}^{1} sign(x - s) T_m(s)/sqrt(1 - s^2) ds (exact): pi - 2 theta, -2 sin(m theta)/m."""
@@ -135,14 +166,7 @@ def operator(centres, offsets, ac, ae, s, D, k0, k1, ar, out, col0):
                     smooth = ct * (6 * loge + _ell3(t)) + k1 * ct + k0
                 else:
                     smooth = ct * (2 * loge + _ell(t)) + k1 * ct + k0
-                block = 2 * ct * LD[k]
-                if ar != 0.0:
-                    smooth = smooth - ar * t * st
-                    if kink:
-                        block += ar * PI * st * SD[k]
-                    else:
-                        smooth += ar * PI * _sign(t) * st
-                out[i, col0 + ia * n + k] = -(smooth * (PI / n) + block)
+                out[i, col0 + ia * n + k] = _operator_entry(smooth, t, ct, st, LD[k], SD[k], kink, ar, n)
 
 
 @njit(cache=True, inline="always")
@@ -162,7 +186,6 @@ def enrichment(centres, offsets, ac, ae, s, k0, k1, ar, table, Lam, Sig, omega, 
     n = s.size
     na = ac.size
     m = omega.shape[0]
-    K = gcs.shape[1]
     nf = sfine.size
     nt = n + m
     reg = np.empty(n)
@@ -187,16 +210,7 @@ def enrichment(centres, offsets, ac, ae, s, k0, k1, ar, table, Lam, Sig, omega, 
                     a1 = 0.0
                     for k in range(n):
                         a1 += reg[k] * omega[j, k]
-                    lc = 0.0
-                    ls = 0.0
-                    sc = 0.0
-                    ss = 0.0
-                    for q in range(K):
-                        lc += Lam[j, p, q] * gcs[ia, q]
-                        ls += Lam[j, p, q] * gss[ia, q]
-                        sc += Sig[j, p, q] * gcs[ia, q]
-                        ss += Sig[j, p, q] * gss[ia, q]
-                    out[i, col0 + ia * m + j] = -(a1 + 2 * (ce * lc + se * ls) + ar * PI * (se * sc - ce * ss))
+                    out[i, col0 + ia * m + j] = -_same_arc_enrichment(a1, Lam, Sig, gcs, gss, j, p, ia, ce, se, ar)
             elif (not table) and abs(di / e) < NEAR_ARC:
                 for j in range(m):
                     acc[j] = 0.0
@@ -229,7 +243,6 @@ def assemble(ac, ae, s, D, k0, k1, ar, xt, LD0, SD0, Lam, Sig, omega, gcs, gss, 
     na = ac.size
     m = omega.shape[0]
     npt = xt.size
-    K = gcs.shape[1]
     N = na * npt
     L = np.empty(n)
     Sg = np.empty(n)
@@ -291,14 +304,7 @@ def assemble(ac, ae, s, D, k0, k1, ar, xt, LD0, SD0, Lam, Sig, omega, gcs, gss, 
                         + k1 * ct + k0
                 else:
                     smooth = ct * (2 * loge + el) + k1 * ct + k0
-                block = 2 * ct * LD[k]
-                if ar != 0.0:
-                    smooth = smooth - ar * t * st
-                    if kink:
-                        block += ar * PI * st * SD[k]
-                    else:
-                        smooth += ar * PI * _sign(t) * st
-                A[i, ia * n + k] = -(smooth * (PI / n) + block)
+                A[i, ia * n + k] = _operator_entry(smooth, t, ct, st, LD[k], SD[k], kink, ar, n)
                 if m:
                     if same:
                         r = ct * (2 * loge + el) + k1 * ct + k0 - ar * t * st
@@ -310,17 +316,8 @@ def assemble(ac, ae, s, D, k0, k1, ar, xt, LD0, SD0, Lam, Sig, omega, gcs, gss, 
                 if same:
                     ce, se = math.cos(d), math.sin(d)
                     for j in range(m):
-                        lc = 0.0
-                        ls = 0.0
-                        sc = 0.0
-                        ss = 0.0
-                        for q in range(K):
-                            lc += Lam[j, p, q] * gcs[ia, q]
-                            ls += Lam[j, p, q] * gss[ia, q]
-                            sc += Sig[j, p, q] * gcs[ia, q]
-                            ss += Sig[j, p, q] * gss[ia, q]
-                        A[i, na * n + ia * m + j] = -(acc[j] + 2 * (ce * lc + se * ls)
-                                                      + ar * PI * (se * sc - ce * ss))
+                        A[i, na * n + ia * m + j] = -_same_arc_enrichment(acc[j], Lam, Sig, gcs, gss, j, p, ia, ce,
+                                                                          se, ar)
                 else:
                     for j in range(m):
                         A[i, na * n + ia * m + j] = -acc[j]
