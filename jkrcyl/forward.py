@@ -1,6 +1,6 @@
-"""Forward problems: every equilibrium at a given load P [N/m] or approach delta [m] (issue 11).
+"""Forward problems: every equilibrium at a given load P [N/m] or approach [m] (issue 11).
 
-A :class:`jkrcyl.Contact` answers ``solve(P=...)`` or ``solve(delta=...)`` with a list of
+A :class:`jkrcyl.Contact` answers ``solve(P=...)``, ``solve(delta_work=...)`` or ``solve(delta=...)`` with a list of
 :class:`Equilibrium` -- one per state on every branch, sorted by contact size.  The branches are an
 explicit registry, :data:`BRANCH_SOLVERS`, each entry a function ``(problem, key, target) -> [Equilibrium]``:
 
@@ -12,8 +12,9 @@ explicit registry, :data:`BRANCH_SOLVERS`, each entry a function ``(problem, key
 * ``full-contact``: the pin bonded all round (no edge, always stable), confined regime only;
 * ``separated``: the free pin (no contact, P = 0), for a given approach -2 Delta < delta < 0 only.
 
-Stability is that of the control given: fixed load for ``P``, fixed grip for ``delta``
-(dG/da > 0 at fixed P or delta, section 9; the Hessians of jkrcyl.twopatch for two patches).
+Stability is that of the control given (:data:`CONTROLS`): fixed load for ``P``, fixed work-conjugate approach
+for ``delta_work`` ('grip-work', a machine holding the pin), fixed paper's approach for ``delta`` ('grip')
+(dG/da > 0 at the fixed quantity, section 8; the Hessians of jkrcyl.twopatch for two patches).
 Signs as in the paper (section 6): P and delta are positive downward (pushing the pin into the bottom
 of the hole); pulling is negative.
 """
