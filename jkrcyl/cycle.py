@@ -125,7 +125,7 @@ class _Track:
         d = np.asarray(c.delta_over_Delta) * ct.Delta
         self.delta = -2 * ct.Delta - d if side == "top" else d
         self.delta_work = ct.approach_work(self.P, self.delta)
-        self.stable = np.asarray(fw._stability(c, regime, pb.M)[list(fw.CONTROLS).index(control)])
+        self.stable = fw._stability(c, regime, pb.M)[control]
         self.feasible = np.asarray(c.feasible)
 
     def y(self):

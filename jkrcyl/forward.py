@@ -221,14 +221,14 @@ def single_patch_roots(pb: Problem, regime: str, key: str, target: float) -> Lis
     return sorted(out)
 
 
-def _stability(c, regime: str, M: float):
-    """(stable_load, stable_grip, stable_grip_work) arrays; M = 0 (no adhesion): the M -> 0+ limit of the sign
-    rules (the load rule, and the same rule on delta_work, whose fixed-arc compliance is positive)."""
+def _stability(c, regime: str, M: float) -> Dict[str, np.ndarray]:
+    """{control: stability array} along a Curve; M = 0 (no adhesion): the M -> 0+ limit of the sign rules (the
+    load rule, for the paper's grip too, and the same rule on delta_work, whose fixed-arc compliance is > 0)."""
     if M > 0:
-        return np.asarray(c.stable_load), np.asarray(c.stable_grip), np.asarray(c.stable_grip_work)
+        return {ctl: np.asarray(getattr(c, spec[2])) for ctl, spec in CONTROLS.items()}
     sign = 1.0 if regime == "sub-critical" else -1.0
     ok = sign * np.asarray(c.dP_star_da) > 0
-    return ok, ok, sign * np.asarray(c.ddelta_work_da) > 0
+    return {"load": ok, "grip": ok, "grip-work": sign * np.asarray(c.ddelta_work_da) > 0}
 
 
 def single_patch_states(pb: Problem, regime: str, a, control: str, side: str = "bottom") -> List[Equilibrium]:
@@ -239,7 +239,7 @@ def single_patch_states(pb: Problem, regime: str, a, control: str, side: str = "
     ct = pb.contact
     st = ct.state(a)
     c = _curve(pb, regime, a)
-    stab_load, stab_grip, stab_work = _stability(c, regime, pb.M)
+    stab = _stability(c, regime, pb.M)
     out = []
     for i in range(a.size):
         P, delta = float(np.ravel(st.P)[i]), float(np.ravel(st.delta)[i])
@@ -252,8 +252,8 @@ def single_patch_states(pb: Problem, regime: str, a, control: str, side: str = "
             branch=regime if side == "bottom" else regime + "-top", control=control, a=float(a[i]), eps=eps,
             contact_width=2 * ct.R * eps, P=P, delta=delta, delta_work=dw, h_pi=h_pi, K=float(np.ravel(st.K)[i]),
             P_star=P / ct.load_scale, delta_over_Delta=delta / ct.Delta, delta_work_over_Delta=dw / ct.Delta,
-            feasible=bool(h_pi >= 0), stable_load=bool(stab_load[i]), stable_grip=bool(stab_grip[i]),
-            stable_grip_work=bool(stab_work[i]), side=side))
+            feasible=bool(h_pi >= 0), stable_load=bool(stab["load"][i]), stable_grip=bool(stab["grip"][i]),
+            stable_grip_work=bool(stab["grip-work"][i]), side=side))
     return out
 
 
@@ -553,7 +553,7 @@ def walk_down(pb: Problem, regime: str, i: int, control: str):
     c = branch_curve(pb.key, regime)
     key = CONTROLS[control][0]
     y = np.asarray(getattr(c, key))
-    stable = _stability(c, regime, pb.M)[list(CONTROLS).index(control)]
+    stable = _stability(c, regime, pb.M)[control]
     feasible = np.asarray(c.feasible)
     step = -1 if i > 0 and y[i - 1] < y[i] else 1
     j = i
