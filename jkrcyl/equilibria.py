@@ -258,7 +258,7 @@ def curve(M: float, theta: float, regime: str = "sub-critical", n: int = 2000, g
     a : array_like, optional
         Contact parameters tan(eps/2) on the branch, instead of the grid.
     alpha_ratio : float
-        alpha*/beta* in (-1, 1] (0: the paper's closed forms).
+        alpha*/beta* in (-1, 1) (0: the paper's closed forms).
 
     Returns
     -------
