@@ -7,10 +7,18 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ._validate import PRESSURE_A_MAX, angle, contact_parameter, finite_scalar
-from .critical import a_crit
-from .numerics import kernels as _k
+from ._validate import PRESSURE_A_MAX, angle, contact_parameter, count, finite_scalar
+from .analysis import branches as _br
+from .analysis import confined as _confined
+from .analysis import cycle as _cycle
+from .analysis import forward as _fw
+from .analysis import pull_off as _pull_off
+from .analysis import tracing as _tr
 from .materials import Materials
+from .model import two_patch as _two
+from .model.problem import Problem
+from .model.single_patch import physical, solver
+from .numerics import kernels as _k
 
 PARALLEL_MIN = _k.PARALLEL_MIN   # state() uses the prange kernel from this many contact parameters on
 
@@ -57,7 +65,15 @@ class Contact:
 
     @property
     def a_crit(self):
-        return a_crit(self.theta)
+        """The receding contact a_crit (section 4: the pole of the load), for this material pair (alpha* != 0
+        included: the single-patch solver's pole); inf for a rigid cradle at alpha* = 0 (section 7.2)."""
+        m = self.materials
+        return solver(Problem(0.0, m.theta, m.inv_G_I / m.beta, m.alpha_ratio)).a_crit
+
+    @property
+    def problem(self):
+        """The normalised problem (section 6) of this contact (needs Delta > 0)."""
+        return Problem.of(self)
 
     @property
     def load_scale(self):
@@ -77,15 +93,12 @@ class Contact:
             raise ValueError(f"{what} is undefined for Delta = 0 (neat fit, section 7.3): "
                              "it normalises by Delta; use the dimensional values")
 
-    def _args(self):
-        return dict(Delta=self.Delta, beta=self.beta, inv_theta=self.materials.inv_theta, zeta=self.zeta)
-
     # --- states --------------------------------------------------------------------------------
     def state(self, a, method="auto"):
         """Equilibrium at contact parameter(s) a = tan(eps/2) > 0: see :class:`State`.
 
         method: "closed-form" (the paper's (4.4)-(5.10); ValueError unless alpha* = 0), "numeric" (collocation
-        solution of (2.1)/(5.2), jkrcyl.numerics.arcs, any alpha*) or "auto" (closed form where alpha* = 0).
+        solution of (2.1)/(5.2), jkrcyl.numerics.one_arc, any alpha*) or "auto" (closed form where alpha* = 0).
         """
         if method not in ("auto", "closed-form", "numeric"):
             raise ValueError(f"method must be 'auto', 'closed-form' or 'numeric', got {method!r}")
@@ -93,18 +106,9 @@ class Contact:
             self.materials.require_closed_form("method='closed-form'")
         arr = contact_parameter(a)
         flat = np.ascontiguousarray(arr.ravel())
-        if method == "numeric" or not self.materials.closed_form:
-            return self._numeric_state(arr, flat)
-        s = _k.full_state(flat, R=self.R, inv_G_I=self.materials.inv_G_I, **self._args())
-        fields = {k: _shaped(v, arr.shape) for k, v in s._asdict().items()}
+        sv = physical(self, method)
+        fields = {k: _shaped(v, arr.shape) for k, v in sv.states(flat).items()}
         return State(contact=self, a=_shaped(flat, arr.shape), **fields)
-
-    def _numeric_state(self, arr, flat):
-        from .numerics.arcs import single_arc_state
-        m = self.materials
-        out = single_arc_state(flat, R=self.R, Delta=self.Delta, w=self.w, beta=self.beta,
-                               inv_theta=m.inv_theta, inv_G_I=m.inv_G_I, alpha_star=m.alpha_star)
-        return State(contact=self, a=_shaped(flat, arr.shape), **{k: _shaped(v, arr.shape) for k, v in out.items()})
 
     def approach_work(self, P, delta):
         """Work-conjugate approach delta_work = delta + P/(8 pi G_I) [m] (derive/green.py) of a state with load P
@@ -114,54 +118,71 @@ class Contact:
         out = _k.approach_work(P, delta, inv_G_I=self.materials.inv_G_I)
         return _shaped(out, shape)
 
-    # --- sections 6 and 8 (jkrcyl.equilibria) -------------------------------------------------------
+    # --- sections 6 and 8 ----------------------------------------------------------------------------
     def curve(self, regime="sub-critical", n=2000):
-        """Equilibrium branch (M, P*, delta/Delta, ... and P [N/m], delta [m]): jkrcyl.equilibria.curve."""
-        from . import equilibria
-        M, th, gb = equilibria.from_contact(self)
-        cv = equilibria.curve(M, th, regime=regime, n=n, gb=gb, alpha_ratio=self.materials.alpha_ratio)
-        return replace(cv, P=cv.P_star * self.load_scale, delta=cv.delta_over_Delta * self.Delta,
-                       delta_work=cv.delta_work_over_Delta * self.Delta)
+        """Equilibrium branch with P [N/m], delta and delta_work [m]: jkrcyl.equilibria.curve."""
+        return _br.curve(self.problem, regime, count("n", n, low=2)).with_units(self.load_scale, self.Delta)
 
     def adherence(self, control="load", confined=True):
-        """Adherence points (P* minima for control='load', d delta/da = 0 for 'grip') with P [N/m], delta and
-        delta_work [m], and (load) what a further pull does, ``outcome``: jkrcyl.equilibria.adherence."""
+        """Adherence points (P* minima for control='load', stationary approach for 'grip', 'grip-work') with P
+        [N/m], delta and delta_work [m], and (load) what a further pull does, ``outcome``:
+        jkrcyl.equilibria.adherence."""
         from . import equilibria
-        M, th, gb = equilibria.from_contact(self)
-        pts = equilibria.adherence(M, th, control=control, gb=gb, alpha_ratio=self.materials.alpha_ratio,
-                                   confined=confined)
-        return [replace(p, P=p.P_star * self.load_scale, delta=p.delta_over_Delta * self.Delta,
-                        delta_work=p.delta_work_over_Delta * self.Delta) for p in pts]
+        pb = self.problem
+        pts = equilibria.adherence(pb.M, pb.theta, control, gb=pb.gb, alpha_ratio=pb.alpha_ratio, confined=confined)
+        return [p.with_units(self.load_scale, self.Delta) for p in pts]
 
     def two_patch(self, n=None):
-        """Two-patch branches (second contact at the top of the hole): jkrcyl.equilibria.two_patch."""
-        from . import equilibria
-        M, th, gb = equilibria.from_contact(self)
-        return equilibria.two_patch(M, th, n=n, gb=gb, alpha_ratio=self.materials.alpha_ratio)
+        """Two-patch branches (second contact at the top of the hole), with P [N/m], delta, delta_work [m]."""
+        pb = _two.require_finite_theta(self.problem)
+        return tuple(b.with_units(self.load_scale, self.Delta) for b in _tr.branches(pb, n))
 
     def confined_events(self):
-        """What follows when the gap closes at phi = pi under slow pulling: jkrcyl.twopatch.confined_events."""
-        from . import equilibria, twopatch
-        M, th, gb = equilibria.from_contact(self)
-        return twopatch.confined_events(M, th, gb=gb, alpha_ratio=self.materials.alpha_ratio)
+        """What follows when the gap closes at phi = pi under slow pulling: jkrcyl.analysis.confined."""
+        return _confined.confined_events(_two.require_finite_theta(self.problem))
 
-    # --- forward problems (jkrcyl.forward, jkrcyl.cycle) -------------------------------------------------
+    # --- forward problems and paths (jkrcyl.analysis) -----------------------------------------------------
     def solve(self, P=None, delta=None, branches=None, delta_work=None):
         """Every equilibrium at load P [N/m], the paper's approach delta [m] or the work-conjugate approach
-        delta_work [m] (exactly one; stability under that control): :func:`jkrcyl.forward.solve`."""
-        from .forward import solve
-        return solve(self, P=P, delta=delta, branches=branches, delta_work=delta_work)
+        delta_work [m] (exactly one; stability under that control): a list of jkrcyl.results.Equilibrium
+        sorted by contact size.  ``branches``: keys of jkrcyl.analysis.forward.BRANCH_SOLVERS to search (two-patch
+        states are traced by continuation: seconds the first time, cached per contact)."""
+        given = {k: v for k, v in (("P", P), ("delta", delta), ("delta_work", delta_work)) if v is not None}
+        if len(given) != 1:
+            raise ValueError("P: give exactly one of P [N/m], delta [m] and delta_work [m]")
+        self._require_clearance("solve")
+        (name, value), = given.items()
+        control = {"P": "load", "delta": "grip", "delta_work": "grip-work"}[name]
+        target = finite_scalar(name, value) / (self.load_scale if name == "P" else self.Delta)
+        names = _fw.check_branches(branches)
+        return _fw.solve_normalised(self.problem, _fw.Units.of(self), control, target, names)
 
     def pull_off(self, control="load"):
-        """Detachment along the stable path (force [N/m], width, approach) or why not, under control 'load',
-        'grip-work' (a machine holding delta_work) or 'grip' (the paper's delta): :func:`jkrcyl.forward.pull_off`."""
-        from .forward import pull_off
-        return pull_off(self, control)
+        """Detachment along the stable path from first contact (force [N/m], width, approach) or why not, under
+        control 'load', 'grip-work' (a machine holding delta_work) or 'grip' (the paper's delta):
+        jkrcyl.analysis.pull_off."""
+        _fw.check_control(control)
+        self._require_clearance("pull_off")
+        return _pull_off.pull_off(self.problem, _fw.Units.of(self), control)
 
     def cycle(self, P_max=None, P_min=None, control="load", n=2000, delta_max=None, delta_min=None):
-        """Quasi-static cycle from first contact (path, jumps, dissipated energy [J/m]): :func:`jkrcyl.cycle.cycle`."""
-        from .cycle import cycle
-        return cycle(self, P_max=P_max, P_min=P_min, control=control, n=n, delta_max=delta_max, delta_min=delta_min)
+        """Quasi-static cycle from first contact up to the maximum, down to the minimum and up again (path, jumps,
+        energy dissipated [J/m]): P_max, P_min [N/m] under control='load'; delta_max, delta_min [m] (limits of the
+        held approach: delta for 'grip', delta_work for 'grip-work') otherwise.  jkrcyl.analysis.cycle."""
+        _fw.check_control(control)
+        self._require_clearance("cycle")
+        n = count("n", n, low=10)
+        names = ("P_max", "P_min") if control == "load" else ("delta_max", "delta_min")
+        given = dict(P_max=P_max, P_min=P_min, delta_max=delta_max, delta_min=delta_min)
+        other = [k for k, v in given.items() if v is not None and k not in names]
+        if other:
+            raise ValueError(f"{other[0]} does not apply to control={control!r} (give {' and '.join(names)})")
+        if given[names[0]] is None or given[names[1]] is None:
+            raise ValueError(f"{names[0]}: control={control!r} needs {names[0]} and {names[1]}")
+        hi, lo = finite_scalar(names[0], given[names[0]]), finite_scalar(names[1], given[names[1]])
+        if not lo < hi:
+            raise ValueError(f"{names[1]} must be < {names[0]}, got {names[1]} = {lo!r}, {names[0]} = {hi!r}")
+        return _cycle.cycle(self.problem, _fw.Units.of(self), control, hi, lo, n, self.approach_work)
 
     def pressure(self, a, phi, parts=False):
         """Contact pressure N(phi) of (5.4) [Pa], compressive positive (section 6); 0 outside the contact.
@@ -183,62 +204,23 @@ class Contact:
         a_arr, phi_arr = _broadcast(contact_parameter(a), angle(phi))
         if np.max(a_arr) > PRESSURE_A_MAX:
             raise ValueError(f"a must be <= {PRESSURE_A_MAX:g} in pressure() (the bounded part of (5.4) loses its "
-                             f"digits beyond: atanh near 1), got {np.max(a_arr):g}")
+                             f"digits beyond: atanh near 1), got {np.max(a_arr)!r}")
         wrapped = np.mod(phi_arr + math.pi, 2 * math.pi) - math.pi
         wrapped = np.where(wrapped == -math.pi, math.pi, wrapped).ravel()
         flat_a = a_arr.ravel()
         nb, nu = np.zeros(flat_a.size), np.zeros(flat_a.size)
+        sv = physical(self)
         for ai in np.unique(flat_a):
             sel = flat_a == ai
-            nb[sel], nu[sel] = self._pressure_one(float(ai), wrapped[sel])
+            nb[sel], nu[sel] = sv.pressure(float(ai), wrapped[sel])
         if parts:
             return _shaped(nb, a_arr.shape), _shaped(nu, a_arr.shape)
         return _shaped(nb + nu, a_arr.shape)
 
-    def _pressure_one(self, a, phi):
-        """(bounded, unbounded) [Pa] at one contact parameter a, phi 1-D in (-pi, pi]."""
-        if not self.materials.closed_form:
-            return self._numeric_pressure(a, phi)
-        inside = np.abs(phi) < 2 * math.atan(a)
-        flat = np.ascontiguousarray(np.where(inside, phi, 0.0))
-        nb, nu = _k.pressure(a, flat, R=self.R, **self._args())
-        return np.where(inside, nb, 0.0), np.where(inside, nu, 0.0)
-
     def gap(self, a, phi):
         """Gap h(phi) of (5.9) [m]: numpy-broadcast over a and phi; 0 inside the contact."""
         a_arr, phi_arr = _broadcast(contact_parameter(a), angle(phi))
-        if not self.materials.closed_form:
-            return _shaped(self._numeric_gap(a_arr.ravel(), phi_arr.ravel()), a_arr.shape)
-        h = _k.gap(a_arr.ravel(), phi_arr.ravel(), **self._args())
-        return _shaped(h, a_arr.shape)
-
-
-    # --- alpha* != 0: the collocation solution (jkrcyl.numerics.arcs) -----------------------------------
-    def _griffith(self, a):
-        from .numerics.arcs import griffith_arc
-        m = self.materials
-        return griffith_arc(a, R=self.R, Delta=self.Delta, w=self.w, beta=self.beta, inv_theta=m.inv_theta,
-                            inv_G_I=m.inv_G_I, alpha_star=m.alpha_star)
-
-    def _numeric_pressure(self, a, phi):
-        """(bounded, unbounded) as for the closed form; unbounded = r0/sqrt(a^2 - x^2), x = tan(phi/2)."""
-        lin, f, delta = self._griffith(a)
-        flat = phi.ravel()
-        N = f * lin.pressure(flat, delta, clearance=self.Delta)
-        inside = np.abs(flat) < 2 * math.atan(a)
-        r0 = -f * (self.Delta * lin.q0[2] + delta * lin.q1[2]) * math.sqrt(a * (1 + a * a))
-        x = np.tan(np.where(inside, flat, 0.0) / 2)
-        unb = np.where(inside, r0 / np.sqrt(np.where(inside, a * a - x * x, 1.0)), 0.0)
-        return _shaped(N - unb, phi.shape), _shaped(unb, phi.shape)
-
-    def _numeric_gap(self, a, phi):
-        out = np.zeros(a.size)
-        for ai in np.unique(a):
-            sel = (a == ai) & (np.abs(phi) >= 2 * math.atan(ai))
-            if sel.any():
-                lin, f, delta = self._griffith(float(ai))
-                out[sel] = lin.gap(phi[sel], delta, clearance=self.Delta)
-        return out
+        return _shaped(physical(self).gap(a_arr.ravel(), phi_arr.ravel()), a_arr.shape)
 
 
 def _broadcast(*arrays):

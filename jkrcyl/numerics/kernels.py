@@ -144,7 +144,7 @@ def star(a, M, theta, gb):
 
 
 STAR_FIELDS = {"P_star": 0, "dP_star_da": 1, "delta_over_Delta": 2, "ddelta_da": 3, "delta_work_over_Delta": 4,
-               "ddelta_work_da": 5}
+               "ddelta_work_da": 5, "h_pi": 6}
 
 
 @njit(cache=True)
@@ -152,6 +152,8 @@ def star_residual_nb(a, args):
     """Field k of the normalised equilibrium minus a target: args = (inv_theta, m, gb, k, scale, target),
     k as :data:`STAR_FIELDS` (P* fields divide the kernel's p by scale, as :func:`star`)."""
     inv_theta, m, gb, k, scale, target = args
+    if k == 6:
+        return _gap.gap_pi(Delta=1.0, a=a, beta=1.0, inv_theta=inv_theta, zeta=4.0 * math.pi * m) - target
     r = _der.equilibrium_star(a=a, gb=gb, inv_theta=inv_theta, m=m)
     value = (r.p, r.dp_da, r.delta_over_Delta, r.ddelta_da, r.delta_work_over_Delta, r.ddelta_work_da)[k]
     return (value / scale if k < 2 else value) - target

@@ -1,4 +1,4 @@
-"""The one root-finding toolkit of jkrcyl: bracketing on a grid, Brent's method, Newton.
+"""The one root-finding toolkit of jkrcyl: bracketing on a grid, Brent's method, Newton, the secant.
 
 Each algorithm is written once, as plain Python taking the function ``f(x, args)``; the numba form is
 the same source compiled around one njit ``f`` (:func:`brent_solver`, :func:`newton_solver`), so the
@@ -114,6 +114,71 @@ def brent(f, lo, hi, args=(), flo=None, fhi=None):
     if (flo > 0.0) == (fhi > 0.0):
         raise ValueError(f"brent: no sign change in [{lo!r}, {hi!r}]")
     return _make_brent(f)(float(lo), float(hi), float(flo), float(fhi), args)
+
+
+def is_pole(fx, flo, fhi):
+    """A converged sign change is a pole, not a root, when |f| there exceeds |f| at both ends of the first
+    bracket (|f| grew as the bracket shrank); a root leaves |f| at the rounding level."""
+    return not abs(fx) <= max(abs(flo), abs(fhi))
+
+
+def brent_or_pole(f, lo, hi, args=(), flo=None, fhi=None):
+    """:func:`brent`, but None where the sign change is a pole of f (:func:`is_pole`)."""
+    flo = f(lo, args) if flo is None else flo
+    fhi = f(hi, args) if fhi is None else fhi
+    x = brent(f, lo, hi, args, flo, fhi)
+    return None if is_pole(f(x, args), flo, fhi) else x
+
+
+def brent_or_pole_nb(solve, f, lo, hi, flo, fhi, args):
+    """The numba pair (``solve = brent_solver(f)``, ``f``) with the pole check of :func:`brent_or_pole`."""
+    if flo == 0.0:
+        return lo
+    if fhi == 0.0:
+        return hi
+    x = solve(float(lo), float(hi), float(flo), float(fhi), args)
+    return None if is_pole(f(x, args), flo, fhi) else float(x)
+
+
+def sign_changes(values):
+    """Indices i with values[i] and values[i + 1] of opposite signs (both finite)."""
+    v = np.asarray(values, dtype=float)
+    ok = np.isfinite(v[:-1]) & np.isfinite(v[1:])
+    return np.nonzero(ok & (np.sign(v[:-1]) * np.sign(v[1:]) < 0))[0]
+
+
+def roots_on_grid(values, grid, refine):
+    """Roots of f from its values on the increasing grid: every sign change refined by ``refine(lo, hi, flo,
+    fhi)`` (a root, or None for a pole), exact zeros on the grid included.  Returns ``[(root, +1 or -1)]``, the
+    sign that of f right of the root (+1: f rises through it), sorted."""
+    v = np.asarray(values, dtype=float)
+    out = []
+    for i in sign_changes(v):
+        r = refine(float(grid[i]), float(grid[i + 1]), float(v[i]), float(v[i + 1]))
+        if r is not None:
+            out.append((r, 1 if v[i + 1] > 0 else -1))
+    for i in np.nonzero(v == 0)[0]:
+        right = v[i + 1] if i + 1 < v.size else -v[i - 1]
+        out.append((float(grid[i]), 1 if right > 0 else -1))
+    return sorted(out)
+
+
+def secant(f, x0, x1, lo, hi, tol=1e-13, maxit=40):
+    """Secant iterations for f(x) = 0 from x0, x1, kept in [lo, hi] (halving towards the previous iterate
+    when a step leaves it).  Returns (x, f(x)) of the last evaluated iterate; raises ValueError without
+    convergence."""
+    f0, f1 = f(x0), f(x1)
+    for _ in range(maxit):
+        if f1 == f0:
+            break
+        x2 = min(max(x1 - f1 * (x1 - x0) / (f1 - f0), 0.5 * (lo + x1)), 0.5 * (x1 + hi))
+        x0, f0, x1 = x1, f1, x2
+        if abs(x1 - x0) <= tol * abs(x1):
+            return x0, f0
+        f1 = f(x1)
+    else:
+        raise ValueError(f"secant: no convergence near {x1!r}")
+    return x1, f1
 
 
 def grid_roots(values, grid, solve):

@@ -1,0 +1,128 @@
+"""Single-patch branches: curves, their dense tables, and the roots and stationary points on them (sections 6, 8).
+
+A branch is the sub-critical (a < a_crit) or super-critical (a > a_crit) family of one bottom patch at its edge
+condition, from the problem's single-patch solver (jkrcyl.model.single_patch).  Every search on a branch starts
+from its dense table (cached per problem and regime: one grid uniform in eps* plus log-spaced small contacts)
+and refines each sign change with the solver's own root finder, which rejects sign changes through a pole.
+"""
+from __future__ import annotations
+
+import functools
+import math
+
+import numpy as np
+
+from .._validate import A_MAX, contact_parameter
+from ..model import stability as _stab
+from ..model.problem import Problem
+from ..model.single_patch import SLOPE_OF, solver
+from ..numerics import roots as _roots
+from ..results import Curve, Point
+
+REGIMES = ("sub-critical", "super-critical")
+RUBBERY_A_MAX = 3.0      # curve(): a branch without a_crit is drawn over 0 < a < 3 (Fig. 7)
+A_SMALLEST = 1e-15       # the dense tables reach down to this contact parameter (or below, for tiny M)
+SMALL_A_POINTS = 200     # log-spaced points below the uniform grid (closed form; a tenth for collocation)
+
+
+def check_regime(pb: Problem, regime: str) -> str:
+    if regime not in REGIMES:
+        raise ValueError(f"regime must be one of {', '.join(REGIMES)}, got {regime!r}")
+    if regime not in solver(pb).regimes():
+        raise ValueError("regime: no super-critical equilibria for this pair (a_crit = inf, section 7.2)")
+    return regime
+
+
+def grid(pb: Problem, regime: str, n: int, small=0, a_max=None) -> np.ndarray:
+    """n contact parameters uniform in eps* over a branch (midpoints; eps* <= that of a_max if given), with
+    ``small`` log-spaced ones below (sub-critical): down to A_SMALLEST or a hundredth of the half-plane contact
+    (vartheta M/2)^(2/3) (7.3b)."""
+    sv = solver(pb)
+    lo, hi = sv.eps_star_range(regime)
+    if a_max is not None:
+        hi = min(hi, float(sv.eps_star(a_max)))
+    a = sv.a_of(lo + (hi - lo) * (np.arange(n) + 0.5) / n)
+    if small and regime == "sub-critical":
+        bottom = max(min(A_SMALLEST, (pb.m / 2) ** (2 / 3) / 100), 1e-100)
+        if bottom < a[0]:
+            a = np.concatenate([np.geomspace(bottom, a[0], small, endpoint=False), a])
+    return a[a <= A_MAX]
+
+
+def _curve(pb: Problem, regime: str, a) -> Curve:
+    sv = solver(pb)
+    s = sv.states(a)
+    flags = _stab.single_patch_flags(s, pb.work_shift)
+    rates = _stab.release_rates(s, pb.m, pb.work_shift)
+    k = pb.scale
+    return Curve(M=pb.M, theta=pb.theta, gb=pb.gb, regime=regime, a=s.a, eps=2 * np.arctan(s.a),
+                 eps_star=sv.eps_star(s.a), P_star=s.p / k, delta_over_Delta=s.dn, h_pi_over_Delta=s.h,
+                 feasible=s.h >= 0, stable_load=flags["load"], stable_grip=flags["grip"], dP_star_da=s.dp_da / k,
+                 ddelta_da=s.ddn_da, dG_da_P=rates["load"], dG_da_delta=rates["grip"], delta_work_over_Delta=s.dw,
+                 ddelta_work_da=s.ddw_da, dG_da_delta_work=rates["grip-work"], stable_grip_work=flags["grip-work"],
+                 alpha_ratio=pb.alpha_ratio)
+
+
+def curve(pb: Problem, regime: str = "sub-critical", n: int = 2000, a=None) -> Curve:
+    """The branch ``regime``: n points uniform in eps*, or at the given contact parameters (on the branch)."""
+    check_regime(pb, regime)
+    if a is None:
+        a = grid(pb, regime, n, a_max=RUBBERY_A_MAX if math.isinf(solver(pb).a_crit) else None)
+        if a.size < 2:
+            raise ValueError(f"theta: the {regime} branch lies beyond a = {A_MAX:g} (the supported domain of a) "
+                             f"for theta = {pb.theta:g}")
+    else:
+        a = on_branch(pb, regime, a)
+    return _curve(pb, regime, np.ascontiguousarray(a))
+
+
+def on_branch(pb: Problem, regime: str, a):
+    a = contact_parameter(a)
+    ac = solver(pb).a_crit
+    off = a >= ac if regime == "sub-critical" else a <= ac
+    if off.any():
+        side = "<" if regime == "sub-critical" else ">"
+        raise ValueError(f"a must be {side} a_crit = {ac!r} on the {regime} branch, got {a[off].flat[0]!r}")
+    return a
+
+
+@functools.lru_cache(maxsize=64)
+def table(pb: Problem, regime: str) -> Curve:
+    """The dense branch (the search grid of every root on it), cached per problem."""
+    n = solver(pb).dense_points
+    return _curve(pb, regime, grid(pb, regime, n, small=SMALL_A_POINTS * n // 4000))
+
+
+SLICE_OF_CURVE = {"p": ("P_star", True), "dp_da": ("dP_star_da", True), "dn": ("delta_over_Delta", False),
+                  "ddn_da": ("ddelta_da", False), "dw": ("delta_work_over_Delta", False),
+                  "ddw_da": ("ddelta_work_da", False), "h": ("h_pi_over_Delta", False)}
+
+
+def roots(pb: Problem, regime: str, field: str, target: float = 0.0, n=None):
+    """[(a, sign)] where the solver field (single_patch.FIELDS, kernel scale) crosses target on the branch;
+    sign: of field - target right of the root.  Sign changes through a pole are not roots.  The search grid is
+    the dense table, or n points (with the small contacts) when n is given."""
+    name, scaled = SLICE_OF_CURVE[field]
+    c = table(pb, regime) if n is None else _curve(pb, regime, grid(pb, regime, n, small=SMALL_A_POINTS))
+    values = np.asarray(getattr(c, name)) * (pb.scale if scaled else 1.0) - target
+    sv = solver(pb)
+    return _roots.roots_on_grid(values, c.a, lambda lo, hi, flo, fhi: sv.root(field, lo, hi, flo, fhi, target))
+
+
+def values_at(pb: Problem, regime: str, a) -> Curve:
+    """The branch's states at given contact parameters (validated on the branch)."""
+    return curve(pb, regime, a=np.atleast_1d(np.asarray(a, dtype=float)))
+
+
+def stationary_points(pb: Problem, control: str, regime: str, n=None):
+    """Every point of a branch where the held quantity (P*, delta/Delta or delta_work/Delta) is stationary."""
+    held = _stab.HELD[control][0]
+    out = []
+    for r, sgn in roots(pb, regime, SLOPE_OF[held], n=n):
+        c = values_at(pb, regime, r)
+        out.append(Point(control=control, regime=regime, kind="min" if sgn > 0 else "max", M=pb.M, theta=pb.theta,
+                         a=r, eps=2 * math.atan(r), eps_star=float(c.eps_star[0]), P_star=float(c.P_star[0]),
+                         delta_over_Delta=float(c.delta_over_Delta[0]), h_pi_over_Delta=float(c.h_pi_over_Delta[0]),
+                         feasible=bool(c.feasible[0]), delta_work_over_Delta=float(c.delta_work_over_Delta[0]),
+                         gb=pb.gb, alpha_ratio=pb.alpha_ratio))
+    return out

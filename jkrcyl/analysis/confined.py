@@ -1,0 +1,84 @@
+"""The confined regime under load control: what slow pulling does to the pin in the hole.
+
+The load path is the one of pull-off (jkrcyl.analysis.path: first contact, then the walk down in P through
+stable, feasible single-patch states).  Its first event decides (results.paths.REGIMES):
+
+* a fold (P* minimum): a further pull opens the edge (G > w, the fixed-arc dp/dk < 0): ``detachment`` (in the
+  hole the pin lands on the top), or closes it (G < w): ``zip-full``;
+* h(pi) = 0 first: the top contact forms at that load, and what follows is where the total potential at fixed load
+  leads from the onset with a nascent top contact (jkrcyl.model.two_patch.descend): ``two-patch`` (a stable
+  two-patch state), ``snap-in-full`` (the arcs run into full contact) or ``snap-in-transfer`` (the bottom arc
+  vanishes: the pin ends on the top of the hole);
+* full contact at first touch (no zero-load contact): ``bonded``.
+"""
+from __future__ import annotations
+
+import functools
+import math
+
+from ..model import full_contact as _full
+from ..model import two_patch as _two
+from ..model.problem import Problem
+from ..results import ConfinedEvents
+from . import branches as _br
+from . import forward as _fw
+from . import path as _path
+from . import pull_off as _po
+from . import tracing as _tr
+
+_DESCENT = {"full": "snap-in-full", "transfer": "snap-in-transfer", "two-patch": "two-patch",
+            "single": "two-patch"}
+
+
+def _onsets(pb: Problem):
+    """(eps, P*, delta/Delta, stable under load) of every single-patch state with h(pi) = 0."""
+    out = []
+    for e in _tr.onset_angles(pb):
+        a = math.tan(e / 2)
+        c = _br.values_at(pb, _br.solver(pb).regime_of(a), a)
+        out.append((e, float(c.P_star[0]), float(c.delta_over_Delta[0]), bool(c.stable_load[0])))
+    return tuple(out)
+
+
+@functools.lru_cache(maxsize=32)
+def confined_events(pb: Problem) -> ConfinedEvents:
+    """Classify the confined regime of a problem (finite vartheta, M > 0): see the module docstring."""
+    _two.require_finite_theta(pb)
+    un = _fw.Units(1.0, 1.0, 1.0, 1.0)              # normalised: P = P*, delta = delta/Delta
+    bs = _tr.branches(pb)
+    grip = [p for r in _br.solver(pb).regimes() for p in _br.stationary_points(pb, "grip", r)
+            if p.kind == "min" and p.feasible]
+    common = dict(onsets=_onsets(pb), grip_detachment=bool(grip),
+                  two_patch_stable_load=any(b.stable_load.any() for b in bs),
+                  two_patch_stable_grip=any(b.stable_grip.any() for b in bs),
+                  full_contact=any("full" in b.ends for b in bs), branches=bs, gb=pb.gb, alpha_ratio=pb.alpha_ratio)
+    nan = math.nan
+    _, start, _ = _path.first_contact(pb, un, "load")
+    if start is None:
+        return ConfinedEvents(pb.M, pb.theta, "no-path", (nan, nan), nan, nan, **common)
+    if start.branch == "full-contact":
+        return ConfinedEvents(pb.M, pb.theta, "bonded", (math.inf, nan), nan, nan, **common)
+    track = _path.SingleTrack(pb, un, start.branch, "bottom", "load")
+    _, event, s = _path.walk(track, track.index(start.a), -math.inf)
+    begin = (float(start.a), float(start.P_star))
+    if event in ("fold", "end"):
+        zip_full = _po.grows_under_pull(pb, s.a, "load")
+        tension = _full.state(pb, P_star=s.P_star).tension_everywhere if zip_full else None
+        return ConfinedEvents(pb.M, pb.theta, "zip-full" if zip_full else "detachment", begin, s.P_star, nan,
+                              fold_in_tension=tension, **common)
+    e_on, P_on, _, _ = min(common["onsets"], key=lambda o: abs(o[0] - s.eps))   # the onset the walk met
+    outcome, _ = _two.descend(pb, P_on, e_on)
+    return ConfinedEvents(pb.M, pb.theta, _DESCENT[outcome], begin, nan, P_on, **common)
+
+
+def outcomes(pb: Problem, points):
+    """Point.outcome of fixed-load adherence points: what a further pull does there -- the fold rule where
+    feasible (the fixed-arc dp/dk: 'detachment' or 'zip-full'), the confined analysis where the gap closes
+    first ('gap-closes-first' where it does not apply: vartheta = inf or M = 0)."""
+    from dataclasses import replace
+    regime = None
+    if any(not p.feasible for p in points):
+        regime = "gap-closes-first" if pb.rigid_cradle or pb.M == 0 else confined_events(pb).regime
+    return [replace(p, outcome=(regime if not p.feasible else
+                                "zip-full" if _po.grows_under_pull(pb, p.a, "load") else "detachment"))
+            for p in points]

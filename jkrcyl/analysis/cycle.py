@@ -1,0 +1,193 @@
+"""Quasi-static load cycles: the path an experiment follows, its jumps and the energy it dissipates.
+
+The cycle starts at first contact -- the free pin touching the bottom of the hole (P = 0, delta = 0) snaps in
+(jkrcyl.analysis.path.first_contact) -- drives the held quantity up to the maximum, down to the minimum and up
+again, following stable, feasible branches (jkrcyl.analysis.path.walk), and jumps where a branch ends:
+
+* ``pull-off``: a sub-critical fold: the contact shrinks away; under load the pin lands on the top of the hole
+  (mirrored single patch at the same P), under grip it hangs free (P = 0) until it touches the other side;
+* ``snap-in``: the free pin touches a side (delta = 0 or -2 Delta) and the contact jumps open;
+* ``zip``: a super-critical fold: a further pull lowers G, the contact grows (two patches, full contact);
+* ``top-contact``: the gap at phi = pi closes (h(pi) = 0): the next stable state at the same load/approach.
+
+The energy dissipated per cycle is the area of the closed steady loop, int P d(delta) [J/m] (a closed loop has the
+same area in delta and in delta_work = delta + c P).  Along single-patch stretches the integral is Gauss-Legendre
+in the contact parameter; jumps, two-patch and full-contact stretches are straight segments or polylines
+(trapezoid rule, exact on straight segments).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..model.problem import Problem
+from ..results import Cycle, Jump
+from ..results.states import CONTROLS
+from . import branches as _br
+from . import forward as _fw
+from . import path as _path
+
+MAX_REPEATS = 3          # cycles driven until the loop closes (the state at the top of the cycle repeats)
+MAX_JUMPS = 20           # jumps per leg at most
+GAUSS_NODES = 8
+GAUSS_PANELS = 48
+
+
+class _Run:
+    """A cycle being driven: the recorded points (P, delta, branch, a, stable, leg), jumps and tracks."""
+
+    def __init__(self, pb: Problem, un: _fw.Units, control: str):
+        self.pb, self.un, self.control = pb, un, control
+        self.pts, self.jumps, self.tracks = [], [], {}
+
+    def track(self, s):
+        if s.branch not in self.tracks:
+            side = "top" if s.branch.endswith("-top") else "bottom"
+            self.tracks[s.branch] = _path.SingleTrack(self.pb, self.un, s.branch.replace("-top", ""), side,
+                                                      self.control)
+        return self.tracks[s.branch]
+
+    def add(self, s, leg):
+        self.pts.append((s.P, s.delta, s.branch, s.a, s.stable, leg))
+
+    def leg(self, s, target, leg):
+        """Drive from state s to target: (end state, '') or (None, why it stopped)."""
+        up = target > s.held()
+        self.add(s, leg)                                  # the leg starts where the last one ended
+        for _ in range(MAX_JUMPS):
+            s, event = self._follow(s, target, leg)
+            if event == "target":
+                return s, ""
+            value = s.held()
+            if s.branch == "separated" and self.control != "load":
+                value = 0.0 if up else -2 * self.un.Delta
+                s = _fw.separated_state(self.pb, self.un, value / self.un.Delta, self.control)
+                self.add(s, leg)
+            to, kind = _path.land(self.pb, self.un, s, event, self.control, value, up)
+            if to is None:
+                return None, f"leg {leg}: no stable state to jump to after the {kind} at {s!r}"
+            self.jumps.append(Jump(kind, leg, s, to))
+            s = to
+            self.add(s, leg)
+        return None, f"leg {leg}: more than {MAX_JUMPS} jumps"
+
+    def _follow(self, s, target, leg):
+        """Move along the current branch: (state, event)."""
+        pb, un, ctl = self.pb, self.un, self.control
+        if s.branch == "full-contact":
+            t = target / (un.load_scale if ctl == "load" else un.Delta)
+            e = _fw.full_contact_state(pb, un, CONTROLS[ctl][0], t, ctl)
+            self.add(e, leg)
+            return e, "target"
+        if s.branch == "separated":
+            if ctl != "load" and -2 * un.Delta < target < 0:
+                e = _fw.separated_state(pb, un, target / un.Delta, ctl)
+                self.add(e, leg)
+                return e, "target"
+            return s, "touch"
+        if s.branch == "two-patch":
+            seen, event, e = _path.walk_two_patch(pb, un, s, target, ctl)
+            self.pts += [p + (True, leg) for p in seen]
+            self.add(e, leg)
+            return e, event
+        tr = self.track(s)
+        passed, event, end = _path.walk(tr, tr.index(s.a), target)
+        self.pts += [(tr.P[k], tr.delta[k], tr.name, tr.a[k], True, leg) for k in passed[1:]]
+        self.add(end, leg)
+        return end, event
+
+
+def _same(s1, s2, rel=1e-6):
+    return s1.branch == s2.branch and abs(s1.a - s2.a) <= rel * max(abs(s1.a), 1e-300) + 1e-12 and \
+        abs(s1.P - s2.P) <= rel * max(abs(s1.P), 1e-300) + 1e-300
+
+
+def cycle(pb: Problem, un: _fw.Units, control: str, hi: float, lo: float, n: int, delta_work_of) -> Cycle:
+    """The cycle between the held limits lo < hi (P [N/m] or an approach [m]); delta_work_of(P, delta) the
+    work-conjugate approach [m] of the Contact (for the returned path)."""
+    run = _Run(pb, un, control)
+    sep, to, kind = _path.first_contact(pb, un, control)
+    run.add(sep, 0)
+    if to is None:
+        return _finish(run, n, None, "no stable contact at first touch", delta_work_of, (lo, hi))
+    run.jumps.append(Jump(kind, 0, sep, to))
+    run.add(to, 0)
+    s, note = run.leg(to, hi, 0)
+    tops, closed, leg = [s], None, 1
+    while s is not None and leg < 2 * MAX_REPEATS + 1:
+        s, note = run.leg(s, lo, leg)
+        if s is None:
+            break
+        s, note = run.leg(s, hi, leg + 1)
+        if s is None:
+            break
+        if _same(s, tops[-1]):
+            closed = leg
+            break
+        tops.append(s)
+        leg += 2
+    return _finish(run, n, closed, note, delta_work_of, (lo, hi))
+
+
+def _finish(run, n, closed, note, delta_work_of, limits):
+    P, d, br, a, st, lg = (np.array(v) for v in zip(*run.pts))
+    energy = None if closed is None else loop_energy(run, closed)
+    keep = _thin(len(P), n, run, lg)
+    P, d = P[keep].astype(float), d[keep].astype(float)
+    return Cycle(control=run.control, P=P, delta=d, branch=br[keep], a=a[keep].astype(float),
+                 stable=st[keep].astype(bool), leg=lg[keep].astype(int), jumps=run.jumps, dissipated=energy,
+                 closed_from_leg=closed, delta_work=delta_work_of(P, d), note=note, limits=limits)
+
+
+def _thin(m, n, run, legs):
+    """At most n of the m points, evenly, keeping both ends of every jump and every leg change."""
+    if m <= n:
+        return np.arange(m)
+    keep = set(np.linspace(0, m - 1, max(n - 2 * len(run.jumps) - 2, 2)).astype(int)) | {0, m - 1}
+    for i in range(1, m):
+        if legs[i] != legs[i - 1] or run.pts[i][2] != run.pts[i - 1][2]:
+            keep |= {i - 1, i}
+    return np.array(sorted(keep))
+
+
+def loop_energy(run, first_leg: int) -> float:
+    """int P d(delta) [J/m] around the steady loop (legs first_leg, first_leg + 1): Gauss-Legendre on single-patch
+    stretches, the trapezoid rule on jumps (exact: straight segments) and on two-patch, full-contact and separated
+    stretches."""
+    pts = [p for p in run.pts if p[5] in (first_leg, first_leg + 1)]
+    total, k = 0.0, 0
+    while k < len(pts) - 1:
+        p, q = pts[k], pts[k + 1]
+        if p[2] != q[2]:                                  # a jump between branches
+            total += 0.5 * (p[0] + q[0]) * (q[1] - p[1])
+            k += 1
+            continue
+        m = k + 1                                         # the monotone run of a on this branch
+        while m + 1 < len(pts) and pts[m + 1][2] == p[2] and \
+                (pts[m + 1][3] - pts[m][3]) * (pts[k + 1][3] - p[3]) > 0:
+            m += 1
+        if p[2] in run.tracks and p[3] != pts[m][3]:
+            total += _gauss(run, run.tracks[p[2]], p[3], pts[m][3])
+        elif p[2] not in run.tracks:
+            seg = pts[k:m + 1]
+            total += sum(0.5 * (u[0] + v[0]) * (v[1] - u[1]) for u, v in zip(seg[:-1], seg[1:]))
+        k = m
+    return float(total)
+
+
+def _gauss(run, tr, a0, a1):
+    """int_{a0}^{a1} P (d delta/da) da on a single-patch track (panels uniform in log a)."""
+    x, wts = np.polynomial.legendre.leggauss(GAUSS_NODES)
+    lo, hi = math.log(a0), math.log(a1)
+    edges = np.linspace(lo, hi, max(2, int(GAUSS_PANELS * min(1.0, abs(hi - lo))) + 1))
+    mid, half = 0.5 * (edges[1:] + edges[:-1]), 0.5 * (edges[1:] - edges[:-1])
+    a = np.exp((mid[:, None] + half[:, None] * x[None, :]).ravel())
+    order = np.argsort(a)
+    c = _br.values_at(run.pb, tr.regime, a[order])
+    sgn = -1.0 if tr.side == "top" else 1.0
+    P, dd = np.empty_like(a), np.empty_like(a)
+    P[order] = sgn * np.asarray(c.P_star) * run.un.load_scale
+    dd[order] = sgn * np.asarray(c.ddelta_da) * run.un.Delta          # top: delta = -2 Delta - delta_bottom
+    integrand = (P * dd * a).reshape(mid.size, -1)                    # da = a du
+    return float(np.sum(half[:, None] * wts[None, :] * integrand))

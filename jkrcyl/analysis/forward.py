@@ -1,0 +1,185 @@
+"""Forward problems: every equilibrium at a given load P [N/m] or approach [m].
+
+``solve`` searches the branches of an explicit registry, :data:`BRANCH_SOLVERS`, each entry a function
+``(problem, units, key, target, control) -> [Equilibrium]``:
+
+* ``sub-critical``, ``super-critical``: the single bottom patch of sections 4-6 (a below or above a_crit);
+* ``sub-critical-top``, ``super-critical-top``: the same patch at the top of the hole, the mirror image
+  phi -> phi + pi: P -> -P, delta -> -2 Delta - delta (either approach);
+* ``two-patch``: contact at the bottom and the top at once (jkrcyl.analysis.tracing), present when a single patch
+  can close the gap at phi = pi (the confined regime, :func:`confined`);
+* ``full-contact``: the pin bonded all round (no edge, always stable), confined regime only;
+* ``separated``: the free pin (no contact, P = 0), for a given approach -2 Delta < delta < 0 only.
+
+Stability is that of the control (jkrcyl.results.states.CONTROLS): fixed load for P, fixed paper's approach for
+delta ('grip'), fixed work-conjugate approach for delta_work ('grip-work').  Signs as in section 6: P and delta
+are positive downward (pushing the pin into the bottom of the hole).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Callable, Dict, List
+
+import numpy as np
+
+from ..model import full_contact as _full
+from ..model import two_patch as _two
+from ..model.problem import Problem
+from ..results import Equilibrium
+from ..results.states import CONTROLS
+from . import branches as _br
+from . import tracing as _tr
+
+#: normalised key of each control (results.states.CONTROLS) -> the single-patch solver field
+FIELD_OF_KEY = {"P_star": "p", "delta_over_Delta": "dn", "delta_work_over_Delta": "dw"}
+
+
+@dataclass(frozen=True)
+class Units:
+    """What turns a normalised state dimensional: R, Delta [m], P/P* [N/m] and K at an edge in equilibrium."""
+
+    R: float
+    Delta: float
+    load_scale: float
+    K_edge: float
+
+    @classmethod
+    def of(cls, contact) -> "Units":
+        return cls(contact.R, contact.Delta, contact.load_scale, math.sqrt(8 * contact.w / contact.beta))
+
+
+def check_control(control) -> str:
+    if not isinstance(control, str) or control not in CONTROLS:
+        raise ValueError(f"control must be one of {', '.join(repr(c) for c in CONTROLS)}, got {control!r}")
+    return control
+
+
+def _state(pb, un, branch, control, side, a, eps, P_star, dn, h, flags, a_top=0.0, eps_top=0.0, K=None,
+           extra=None) -> Equilibrium:
+    dw = dn + pb.work_shift * pb.scale * P_star
+    return Equilibrium(branch=branch, control=control, a=a, eps=eps, contact_width=2 * un.R * (eps + eps_top),
+                       P=P_star * un.load_scale, delta=dn * un.Delta, delta_work=dw * un.Delta, h_pi=h * un.Delta,
+                       K=un.K_edge if K is None else K, P_star=P_star, delta_over_Delta=dn,
+                       delta_work_over_Delta=dw, feasible=bool(flags[0]), stable_load=bool(flags[1]),
+                       stable_grip=bool(flags[2]), stable_grip_work=bool(flags[3]), side=side, a_top=a_top,
+                       eps_top=eps_top, extra=extra or {})
+
+
+def single_patch_states(pb: Problem, un: Units, regime: str, a, control: str, side="bottom") -> List[Equilibrium]:
+    """Equilibria of one single-patch branch at contact parameters a (mirrored when side == 'top')."""
+    a = np.atleast_1d(np.asarray(a, dtype=float))
+    if a.size == 0:
+        return []
+    c = _br.values_at(pb, regime, a)
+    sgn, name = (-1.0, regime + "-top") if side == "top" else (1.0, regime)
+    out = []
+    for i in range(a.size):
+        P, d = sgn * float(c.P_star[i]), float(c.delta_over_Delta[i])
+        d = -2.0 - d if side == "top" else d
+        flags = (c.feasible[i], c.stable_load[i], c.stable_grip[i], c.stable_grip_work[i])
+        out.append(_state(pb, un, name, control, side, float(a[i]), float(c.eps[i]), P, d,
+                          float(c.h_pi_over_Delta[i]), flags))
+    return out
+
+
+def _single(regime: str, side: str = "bottom"):
+    def solver(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
+        if regime not in _br.solver(pb).regimes():
+            return []
+        if side == "top":                        # mirror: P* -> -P*, either approach -> -2 - itself
+            target = -target if key == "P_star" else -2.0 - target
+        field = FIELD_OF_KEY[key]
+        t = target * (pb.scale if field == "p" else 1.0)
+        return single_patch_states(pb, un, regime, [r for r, _ in _br.roots(pb, regime, field, t)], control, side)
+    solver.__doc__ = f"{regime} single patch at the {side} of the hole."
+    return solver
+
+
+def confined(pb: Problem) -> bool:
+    """True when some single-patch state closes the gap at phi = pi (h(pi) = 0 of (5.10)): two-patch states
+    exist (finite vartheta, M > 0)."""
+    return bool(_tr.onset_angles(pb))
+
+
+def two_patch_state(pb: Problem, un: Units, s, control) -> Equilibrium:
+    """A jkrcyl.results.TwoPatchState as an Equilibrium (stability from the second variation)."""
+    stab = _two.stability(pb, s.eps, s.eps_top, s.delta_over_Delta, lin=s._lin)
+    return _state(pb, un, "two-patch", control, "both", s.a, s.eps, s.P_star, s.delta_over_Delta, 0.0,
+                  (s.feasible, *stab), a_top=s.a_top, eps_top=s.eps_top,
+                  extra={"gap_min_over_Delta": s.gap_min, "G_bot": s.G_bot, "G_top": s.G_top})
+
+
+def _two_patch_solver(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
+    if not confined(pb):
+        return []
+    return [two_patch_state(pb, un, s, control) for s in _tr.states_at(pb, key, target)]
+
+
+def full_contact_state(pb: Problem, un: Units, key: str, target: float, control: str):
+    """The bonded pin (eps + eps_top = pi) at P*, delta/Delta or delta_work/Delta = target; None when the
+    approach fixes no load."""
+    try:
+        fc = (_full.at_work(pb, target) if key == "delta_work_over_Delta"
+              else _full.state(pb, **{key: target}))
+    except ValueError:
+        return None
+    return _state(pb, un, "full-contact", control, "both", math.inf, math.pi, fc.P_star, fc.delta_over_Delta, 0.0,
+                  (True, True, True, True), a_top=math.inf, K=0.0,
+                  extra={"tension_everywhere": fc.tension_everywhere})
+
+
+def _full_contact_solver(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
+    if not confined(pb):
+        return []
+    s = full_contact_state(pb, un, key, target, control)
+    return [] if s is None else [s]
+
+
+def separated_state(pb: Problem, un: Units, delta_over_Delta: float, control: str) -> Equilibrium:
+    """The free pin at approach delta (no contact, P = 0): stable under grip, neutral under load."""
+    return _state(pb, un, "separated", control, "none", 0.0, 0.0, 0.0, delta_over_Delta, 2 + delta_over_Delta,
+                  (True, False, True, True), K=0.0)
+
+
+def _separated_solver(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
+    if key == "P_star" or not -2.0 < target < 0.0:       # P = 0: delta_work = delta
+        return []
+    return [separated_state(pb, un, target, control)]
+
+
+BranchSolver = Callable[[Problem, Units, str, float, str], List[Equilibrium]]
+
+#: The branches searched by :func:`solve`, in this order.
+BRANCH_SOLVERS: Dict[str, BranchSolver] = {
+    "sub-critical": _single("sub-critical"),
+    "super-critical": _single("super-critical"),
+    "sub-critical-top": _single("sub-critical", "top"),
+    "super-critical-top": _single("super-critical", "top"),
+    "two-patch": _two_patch_solver,
+    "full-contact": _full_contact_solver,
+    "separated": _separated_solver,
+}
+
+
+def check_branches(branches) -> list:
+    if branches is None:
+        return list(BRANCH_SOLVERS)
+    if isinstance(branches, str) or not hasattr(branches, "__iter__"):
+        raise ValueError(f"branches must be a list of branch names ({', '.join(BRANCH_SOLVERS)}), got {branches!r}")
+    names = list(branches)
+    for b in names:
+        if not isinstance(b, str) or b not in BRANCH_SOLVERS:
+            raise ValueError(f"branches: unknown branch {b!r} (choose from {', '.join(BRANCH_SOLVERS)})")
+    return names
+
+
+def solve_normalised(pb: Problem, un: Units, control: str, target: float, branches=None) -> List[Equilibrium]:
+    """Every equilibrium with the held quantity of ``control`` at the normalised target (P*, delta/Delta or
+    delta_work/Delta), sorted by contact size then branch order."""
+    key = CONTROLS[control][0]
+    out = []
+    for name in check_branches(branches):
+        out += BRANCH_SOLVERS[name](pb, un, key, target, control)
+    order = {n: i for i, n in enumerate(BRANCH_SOLVERS)}
+    return sorted(out, key=lambda s: (s.size, order[s.branch]))

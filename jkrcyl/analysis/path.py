@@ -1,0 +1,181 @@
+"""The one load-path walker: tracks (branches as polylines in the held quantity), the walk along a track, where a
+jump lands, and first contact.  Used by pull-off, the confined analysis and cycles (the atlas has a numba twin,
+tested equal to it).
+
+A walk follows a track from a state towards a target value of the held quantity (P under load control, delta or
+delta_work under grip) through stable, feasible states, and ends at an event:
+
+* ``target``: the held quantity reaches the target (refined between grid points);
+* ``fold``: the next state is unstable or the held quantity turns (refined to the stationary point);
+* ``gap``: the next state has h(pi) < 0 (the top of the hole closes first, the confined regime);
+* ``end``: the track ends (the contact grows towards a_crit or round the circle).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..model.problem import Problem
+from ..model.single_patch import SLOPE_OF, solver
+from ..model.stability import HELD
+from ..results.states import CONTROLS
+from . import branches as _br
+from . import forward as _fw
+from . import tracing as _tr
+
+
+class SingleTrack:
+    """A single-patch branch (bottom or top, the mirror) on its dense table, the held quantity physical."""
+
+    def __init__(self, pb: Problem, un: _fw.Units, regime: str, side: str, control: str):
+        c = _br.table(pb, regime)
+        self.pb, self.un, self.regime, self.side, self.control = pb, un, regime, side, control
+        self.name = regime + ("-top" if side == "top" else "")
+        self.a = np.asarray(c.a)
+        sgn = -1.0 if side == "top" else 1.0
+        self.P = sgn * np.asarray(c.P_star) * un.load_scale
+        d, dw = np.asarray(c.delta_over_Delta), np.asarray(c.delta_work_over_Delta)
+        self.delta = (-2 - d if side == "top" else d) * un.Delta
+        self.delta_work = (-2 - dw if side == "top" else dw) * un.Delta
+        self.stable = np.asarray(getattr(c, CONTROLS[control][2]))
+        self.feasible = np.asarray(c.feasible)
+
+    @property
+    def y(self):
+        return getattr(self, CONTROLS[self.control][3])
+
+    def state_at(self, a):
+        return _fw.single_patch_states(self.pb, self.un, self.regime, a, self.control, self.side)[0]
+
+    def _field_target(self, value):
+        """The solver field of the held quantity and the bottom branch's target for a physical value."""
+        field = HELD[self.control][0]
+        if self.control == "load":
+            return field, (-value if self.side == "top" else value) / self.un.load_scale * self.pb.scale
+        t = value / self.un.Delta
+        return field, (-2 - t if self.side == "top" else t)
+
+    def exact(self, j, k, target):
+        """The state between grid indices j, k where the held quantity equals target."""
+        field, t = self._field_target(target)
+        lo, hi = sorted((float(self.a[j]), float(self.a[k])))
+        sv = solver(self.pb)
+        flo, fhi = sv.value(field, lo) - t, sv.value(field, hi) - t
+        r = sv.root(field, lo, hi, flo, fhi, t) if flo * fhi < 0 else None
+        return self.state_at(float(self.a[k]) if r is None else r)
+
+    def fold_a(self, j):
+        """Contact parameter of the stationary point of the held quantity next to grid index j."""
+        field = SLOPE_OF[HELD[self.control][0]]
+        lo, hi = float(self.a[max(j - 1, 0)]), float(self.a[min(j + 1, self.a.size - 1)])
+        sv = solver(self.pb)
+        flo, fhi = sv.value(field, lo), sv.value(field, hi)
+        r = sv.root(field, lo, hi, flo, fhi) if flo * fhi < 0 else None
+        return float(self.a[j]) if r is None else r
+
+    def fold(self, j):
+        return self.state_at(self.fold_a(j))
+
+    def index(self, a):
+        return int(np.argmin(np.abs(np.log(self.a) - math.log(a))))
+
+
+def walk(track: SingleTrack, i: int, target: float):
+    """From grid index i towards target (the held quantity; -inf: down to the end): (indices passed, event,
+    end state), events as in the module docstring."""
+    y, stable, feas = track.y, track.stable, track.feasible
+    sgn = 1 if target > y[i] else -1
+    if sgn * (target - y[i]) <= 0:
+        return [i], "target", track.state_at(track.a[i])
+    nxt = [k for k in (i - 1, i + 1) if 0 <= k < y.size and sgn * (y[k] - y[i]) > 0 and stable[k] and feas[k]]
+    if not nxt:
+        return [i], "fold", track.fold(i)
+    step = nxt[0] - i
+    j, passed = i, [i]
+    while 0 <= j + step < y.size:
+        k = j + step
+        if sgn * (y[k] - target) >= 0:
+            return passed, "target", track.exact(j, k, target)
+        if not feas[k]:
+            return passed, "gap", track.state_at(track.a[j])
+        if not stable[k] or sgn * (y[k] - y[j]) <= 0:
+            return passed, "fold", track.fold(j)
+        j = k
+        passed.append(j)
+    return passed, "end", track.state_at(track.a[j])
+
+
+def walk_two_patch(pb: Problem, un: _fw.Units, s, target: float, control: str):
+    """On a traced two-patch branch from state s towards target: (visited states, event, end state); states
+    between branch points by linear interpolation of the half-angles, solved afresh."""
+    best = None
+    for b in _tr.branches(pb):
+        d = np.hypot(b.eps - s.eps, b.eps_top - s.eps_top)
+        if best is None or d.min() < best[0]:
+            best = (d.min(), b, int(np.argmin(d)))
+    _, b, i = best
+    key, _, stab, _ = CONTROLS[control]
+    y = np.asarray(getattr(b, key)) * (un.load_scale if control == "load" else un.Delta)
+    stable = getattr(b, stab)
+    state = lambda e, et: _fw.two_patch_state(pb, un, _tr._two.equilibrium_state(pb, e, et), control)
+    sgn = 1 if target > y[i] else -1
+    step = next((k - i for k in (i - 1, i + 1) if 0 <= k < y.size and sgn * (y[k] - y[i]) > 0), None)
+    if step is None:
+        return [], "fold", s
+    j, seen = i, []
+    while 0 <= j + step < y.size:
+        k = j + step
+        if sgn * (y[k] - target) >= 0:
+            t = (target - y[j]) / (y[k] - y[j])
+            return seen, "target", state(float(b.eps[j] + t * (b.eps[k] - b.eps[j])),
+                                         float(b.eps_top[j] + t * (b.eps_top[k] - b.eps_top[j])))
+        if not stable[k] or not b.feasible[k] or sgn * (y[k] - y[j]) <= 0:
+            return seen, "fold", state(float(b.eps[j]), float(b.eps_top[j]))
+        j = k
+        seen.append((b.P_star[j] * un.load_scale, b.delta_over_Delta[j] * un.Delta, "two-patch", b.a[j]))
+    return seen, "fold", state(float(b.eps[j]), float(b.eps_top[j]))
+
+
+def _other(side):
+    return {"bottom": "top", "top": "bottom"}.get(side, side)
+
+
+def land(pb: Problem, un: _fw.Units, s, event: str, control: str, value: float, up: bool):
+    """The state a jump from s lands on, at the same held value, and the jump's kind ('snap-in', 'pull-off',
+    'zip', 'top-contact'); (None, kind) when no stable, feasible state is there."""
+    # two-patch states are traced by continuation: only where the contact grows or the top closes
+    quick = event == "touch" or (event == "fold" and s.branch.startswith("sub-critical"))
+    names = [b for b in _fw.BRANCH_SOLVERS if not (quick and b == "two-patch")]
+    target = value / (un.load_scale if control == "load" else un.Delta)
+    cands = [x for x in _fw.solve_normalised(pb, un, control, target, names) if x.stable and x.feasible
+             and not (x.branch == s.branch and abs(x.a - s.a) <= 1e-6 * max(s.a, 1e-300))]
+    if s.branch == "separated":                          # free pin touching a side: snap-in there
+        side = ("bottom" if up else "top") if control == "load" else \
+            ("bottom" if value >= -un.Delta else "top")
+        on = [x for x in cands if x.side == side] or [x for x in cands if x.side == "both"]
+        return (min(on, key=lambda x: x.size), "snap-in") if on else (None, "snap-in")
+    if event == "fold" and s.branch.startswith("sub-critical"):
+        same = [x for x in cands if x.side == s.side and x.size < s.size]
+        if same:
+            return max(same, key=lambda x: x.size), "pull-off"
+        if control != "load":
+            sep = [x for x in cands if x.branch == "separated"]
+            if sep:
+                return sep[0], "pull-off"
+        other = [x for x in cands if x.side == _other(s.side)]
+        return (min(other, key=lambda x: x.size), "pull-off") if other else (None, "pull-off")
+    if event == "fold":
+        grow = [x for x in cands if x.size > s.size and x.side in (s.side, "both")]
+        return (min(grow, key=lambda x: x.size), "zip") if grow else (None, "zip")
+    key = (lambda x: abs(x.delta - s.delta)) if control == "load" else (lambda x: abs(x.P - s.P))
+    pool = [x for x in cands if x.side in ("both", _other(s.side))] or cands
+    return (min(pool, key=key), "top-contact") if pool else (None, "top-contact")
+
+
+def first_contact(pb: Problem, un: _fw.Units, control: str):
+    """(free pin touching the bottom, the state it snaps into, kind): at P = 0 under load control (the zero-load
+    contact (8.1); full contact when there is none, M > M_max), at the held approach 0 under grip."""
+    sep = _fw.separated_state(pb, un, 0.0, control)
+    to, kind = land(pb, un, sep, "touch", control, 0.0, True)
+    return sep, to, kind

@@ -1,0 +1,58 @@
+"""Pull-off: the path from first contact down to where the contact lets go, or why it does not.
+
+The free pin touches the bottom of the hole and snaps in (jkrcyl.analysis.path.first_contact: the zero-load
+contact (8.1) under load control, the contact at zero approach under grip); the walk then lowers the held
+quantity (P, delta or delta_work) through stable, feasible states to
+
+* a fold where a further pull opens the edge (the fixed-arc derivative of the held quantity with respect to the
+  edge coefficient is negative: G > w, the contact shrinks away): detachment, with its P, width and approach;
+* a fold where a further pull closes the edge (G < w): the contact grows round into full contact;
+* h(pi) = 0: the gap at the top closes first (confined; Contact.confined_events says what follows);
+* full contact at first touch (no zero-load contact): the pin is bonded all round and does not detach.
+"""
+from __future__ import annotations
+
+from ..model.problem import Problem
+from ..model.single_patch import solver
+from ..model.stability import fixed_arc_derivatives
+from ..results import PullOff
+from . import forward as _fw
+from . import path as _path
+
+
+def grows_under_pull(pb: Problem, a: float, control: str) -> bool:
+    """At the single patch a: does lowering the held quantity at fixed arc lower the edge coefficient (G < w),
+    so that the contact grows?  (dX/dk)|_a > 0 (jkrcyl.model.stability)."""
+    return bool(fixed_arc_derivatives(solver(pb).states([a]), pb.work_shift)[control][0] > 0)
+
+
+def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
+    """Detachment along the quasi-static path (module docstring) under ``control``."""
+    if pb.M == 0:
+        return PullOff(control, None, None, None, None, "no adhesion (w = 0): the contact vanishes at P = 0")
+    _, start, _ = _path.first_contact(pb, un, control)
+    if start is None:
+        return PullOff(control, None, None, None, None,
+                       "no stable, feasible state at first contact: no path to follow")
+    if start.branch == "full-contact":
+        return PullOff(control, None, None, None, start,
+                       "no zero-load contact (M is above the largest M with one, (8.1)): at first touch the contact "
+                       "zips round into full contact, and a pin bonded all round does not detach")
+    if start.side != "bottom":
+        return PullOff(control, None, None, None, start, f"first contact lands on the {start.branch} branch")
+    track = _path.SingleTrack(pb, un, start.branch, "bottom", control)
+    _, event, s = _path.walk(track, track.index(start.a), float("-inf"))
+    if event == "gap":
+        return PullOff(control, None, None, None, s,
+                       f"confined: the gap at phi = pi closes first (P = {s.P:.6g} N/m, delta = {s.delta:.4g} m); "
+                       "the top contact forms before detachment (see Contact.confined_events)")
+    if event == "end":
+        what = "load" if control == "load" else "approach"
+        return PullOff(control, None, None, None, s,
+                       f"no fold: along the stable branch the {what} decreases without bound (the contact grows "
+                       f"towards a_crit or the full circle), so the pin does not detach; last state a = {s.a:.6g}")
+    if grows_under_pull(pb, s.a, control):
+        return PullOff(control, None, None, None, s,
+                       f"fold at P = {s.P:.6g} N/m on the {s.branch} branch: a further pull lowers G, the contact "
+                       "grows round into full contact (no detachment)")
+    return PullOff(control, s.P, s.contact_width, s.delta, s, "detachment: the contact shrinks away (G > w)")

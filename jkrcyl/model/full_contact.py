@@ -1,0 +1,59 @@
+"""Full contact: the pin bonded all round (eps + eps_top = pi): no edge, no Griffith condition, always stable.
+
+n = N0 + N1 cos(phi) all round (the Fourier modes 0 and 1 of the kernel K of numerics.arcs, a convolution on the
+circle), N0 = -1/(pi (1 - 2 vartheta alpha*/beta*)) (-1/pi at alpha* = 0: the interface is in tension wherever
+|P*| < 1/(1 - 2 vartheta alpha*/beta*)).
+"""
+from __future__ import annotations
+
+import math
+
+from .._validate import finite_scalar
+from ..numerics import arcs as _arcs
+from ..results import FullContact
+from .problem import Problem
+
+
+def law(pb: Problem):
+    """(N0, c) with n = N0 + N1 cos(phi) and delta/Delta = -1 + c P* in full contact.
+
+    The modes 1 and cos(phi) of the right-hand side (delta/Delta) cos(phi) - (1 - cos(phi)) are answered mode by
+    mode (nu = vartheta n): int K dt = 2 pi (k0 - 1 + ar) (= -pi/vartheta + 2 pi ar) and
+    int K cos(t) dt = pi (k1 - 1/2 + ar/2), so N0 = 1/(vartheta int K dt) and
+    delta/Delta + 1 = -vartheta (k1 - 1/2 + ar/2) P* (k0, k1: the engine's derived constants, so the law follows
+    its definition of delta; at alpha* = 0, k1 = gb: c = 0 is the degeneracy gb = 1/2).  tests/test_twopatch.py
+    checks both integrals by quadrature and the law as the limit of closing gaps."""
+    kn = _arcs.Kernel(pb.theta, pb.gb, pb.alpha_ratio)
+    mode0 = 2 * math.pi * (kn.k0 - 1.0 + kn.ar)
+    mode1 = math.pi * (kn.k1 - 0.5 + 0.5 * kn.ar)
+    return 1.0 / (pb.theta * mode0), -pb.theta * mode1 / math.pi
+
+
+def state(pb: Problem, P_star=None, delta_over_Delta=None) -> FullContact:
+    """Full contact at a given load P* or approach delta/Delta (exactly one of them)."""
+    if pb.rigid_cradle:
+        raise ValueError("theta: full contact needs a finite vartheta (n and P* normalise by vartheta)")
+    if (P_star is None) == (delta_over_Delta is None):
+        raise ValueError("P_star: give exactly one of P_star and delta_over_Delta")
+    N0, c = law(pb)
+    if P_star is not None:
+        P = finite_scalar("P_star", P_star)
+        d = -1.0 + c * P
+    else:
+        d = finite_scalar("delta_over_Delta", delta_over_Delta)
+        if c == 0:
+            if d != -1.0:
+                raise ValueError("delta_over_Delta: full contact needs delta/Delta = -1 when gb = 1/2")
+            raise ValueError("P_star: undetermined by delta/Delta when gb = 1/2 (give P_star)")
+        P = (d + 1.0) / c
+    return FullContact(theta=pb.theta, gb=pb.gb, P_star=P, delta_over_Delta=d, N0=N0, N1=P / math.pi,
+                       alpha_ratio=pb.alpha_ratio)
+
+
+def at_work(pb: Problem, delta_work_over_Delta) -> FullContact:
+    """Full contact at a given delta_work/Delta = delta/Delta + c' P* (affine in P*: c' = work_shift vartheta)."""
+    N0, c = law(pb)
+    slope = c + pb.work_shift * pb.scale
+    if slope == 0:
+        raise ValueError("delta_work: full contact fixes no load at this delta_work (zero compliance)")
+    return state(pb, P_star=(finite_scalar("delta_work", delta_work_over_Delta) + 1.0) / slope)

@@ -1,0 +1,114 @@
+"""The normalised problem of section 6, validated once: (M, vartheta, gb, alpha*/beta*) and the edge law.
+
+Normalisation (section 6): M = sqrt(w A R)/(sqrt(2) Delta vartheta), P* = P beta*/(4 pi Delta vartheta); for the
+rigid cradle vartheta = inf (section 7.2) the same names carry M_R* = sqrt(w A R)/(sqrt(2) Delta) and
+P_R* = P beta*/(4 pi Delta) of (7.6).  The solvers work in the kernel scale, vartheta-free: m = M vartheta
+(M_R* for vartheta = inf) and p = P beta*/(4 pi Delta) = scale P*, scale = vartheta (1 for vartheta = inf).
+
+``gb = (1/G_I)/beta*`` enters the approach delta (and so the stability at fixed delta) only; it has no default:
+a material pair fixes it (identical nu = 0.3 bodies: 1/2.8; an incompressible pin: 1 - 1/(2 vartheta)).
+``alpha_ratio = alpha*/beta*`` (second Dundurs parameter over beta*, in (-1, 1)); 0 is the paper's closed form.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .._validate import finite_scalar, theta as _check_theta
+from ..numerics import kernels as _k
+
+
+@dataclass(frozen=True)
+class Griffith:
+    """JKR's edge law: the contact edge is a crack tip in equilibrium when G = w (3.5)-(3.6), i.e. the edge
+    coefficient of nu ~ -k/sqrt(eps - |phi|) is k = m/pi (m = M vartheta)."""
+
+    name: str = "JKR"
+
+    def edge_coefficient(self, m: float) -> float:
+        """k of nu = N R beta*/(4 pi Delta) at an edge in equilibrium (Griffith: (pi k/m)^2 = G/w = 1)."""
+        return m / math.pi
+
+
+GRIFFITH = Griffith()
+
+
+@dataclass(frozen=True)
+class Problem:
+    """A pin in a hole in the normalisation of section 6; frozen and hashable (the cache key of every solver).
+
+    Attributes
+    ----------
+    M : float
+        Normalised adhesion (section 6; M_R* of (7.6) when theta = inf), >= 0.
+    theta : float
+        vartheta = G beta*/(1 + kappa) >= 1/2 (section 4), or inf (rigid cradle).
+    gb : float
+        (1/G_I)/beta* in [0, 1]: enters the approach delta only.
+    alpha_ratio : float
+        alpha*/beta* in (-1, 1) (0: the paper's closed forms); below 1/(2 vartheta) for a finite vartheta (every
+        material pair: the uniform mode of the pin in the hole has a positive compliance).
+    edge : Griffith
+        The edge law (JKR's Griffith condition).
+    """
+
+    M: float
+    theta: float
+    gb: float
+    alpha_ratio: float = 0.0
+    edge: Griffith = GRIFFITH
+
+    def __post_init__(self):
+        object.__setattr__(self, "M", finite_scalar("M", self.M, low=0.0))
+        th = _check_theta(self.theta)
+        object.__setattr__(self, "theta", th)
+        if self.gb is None:
+            raise ValueError("gb must be given: (1/G_I)/beta* in [0, 1] (the approach delta and the stability at "
+                             "fixed delta depend on it; e.g. 1/2.8 for identical nu = 0.3 bodies, "
+                             "1 - 1/(2 theta) for an incompressible pin)")
+        object.__setattr__(self, "gb", finite_scalar("gb", self.gb, low=0.0, high=1.0))
+        ar = finite_scalar("alpha_ratio", self.alpha_ratio, low=-1.0, high=1.0, low_open=True)
+        top = 1.0 if math.isinf(th) else min(1.0, 0.5 / th)
+        if not ar < top:
+            raise ValueError(f"alpha_ratio must be in (-1, {top!r}) at theta = {th!r} (no material pair has more: "
+                             f"1/theta - 2 alpha*/beta* > 0), got {ar!r}")
+        object.__setattr__(self, "alpha_ratio", ar)
+
+    @classmethod
+    def of(cls, contact) -> "Problem":
+        """The normalised problem of a :class:`jkrcyl.Contact` with Delta > 0."""
+        m = contact.materials
+        return cls(M=contact.M, theta=contact.theta, gb=m.inv_G_I / m.beta, alpha_ratio=m.alpha_ratio)
+
+    @property
+    def rigid_cradle(self) -> bool:
+        """vartheta = inf (section 7.2): M and P* are M_R* and P_R*."""
+        return math.isinf(self.theta)
+
+    @property
+    def scale(self) -> float:
+        """p/P*: vartheta, or 1 for the rigid cradle."""
+        return 1.0 if self.rigid_cradle else self.theta
+
+    @property
+    def inv_theta(self) -> float:
+        return 0.0 if self.rigid_cradle else 1.0 / self.theta
+
+    @property
+    def m(self) -> float:
+        """M vartheta (M_R* for vartheta = inf): the adhesion in the kernel scale."""
+        return self.M * self.scale
+
+    @property
+    def work_shift(self) -> float:
+        """c in delta_work/Delta = delta/Delta + c p (p = scale P*): the derived k1_work - k1 = gb/2 of
+        derive/green.py, read off the emitted kernel (not retyped)."""
+        return _k.work_over_Delta(0.0, 1.0, theta=1.0, gb=self.gb).item()
+
+    def with_M(self, M: float) -> "Problem":
+        """The same pair at another adhesion M."""
+        return Problem(M, self.theta, self.gb, self.alpha_ratio, self.edge)
+
+    def __repr__(self):
+        return (f"Problem(M={self.M!r}, theta={self.theta!r}, gb={self.gb!r}, alpha_ratio={self.alpha_ratio!r}, "
+                f"edge={self.edge.name})")

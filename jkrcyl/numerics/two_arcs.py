@@ -1,0 +1,38 @@
+"""Two contact arcs (bottom |phi| < eps, top |phi - pi| < eps_top) at fixed half-angles: the unit cases of
+numerics.arcs.Linear with the engine's node policy, for jkrcyl.model.two_patch.
+
+Near-touching arcs: the density varies on the scale of the gap g = pi - eps - eps_top between them, so Chebyshev
+needs ~ sqrt(eps/g) times more nodes (Bernstein ellipse through the gap); 8 sqrt(eps/g) keeps the residual F of
+jkrcyl.model.two_patch to ~1e-11 (measured against 96 nodes down to g = 0.02).  alpha* != 0: the algebraic end
+terms need about twice as many, at least 32, in multiples of 8 (one enrichment table per node count).
+"""
+import functools
+import math
+
+from . import arcs as _arcs
+
+N_NODES = 24            # nodes per arc at alpha* = 0 (spectral: 1e-12 at moderate arcs)
+NODES_PER_GAP = 8
+N_NODES_ALPHA = 32      # alpha* != 0: at least this many (1e-12 at moderate arcs against 128 nodes)
+AR_NODES_FACTOR = 2     # alpha* != 0 near-touching arcs: 16 sqrt(eps/g) nodes (7e-10 at g = 0.24, eps = 2)
+
+
+def nodes(eps, eps_top, n, ar):
+    """Nodes per arc for the pair of half-angles (module docstring)."""
+    g = math.pi - eps - eps_top
+    need = NODES_PER_GAP * math.sqrt(max(eps, eps_top) / g) if g > 0 else 0.0
+    if ar == 0.0:
+        return max(n, int(need))
+    return min(8 * math.ceil(max(n, N_NODES_ALPHA, AR_NODES_FACTOR * need) / 8), 256)
+
+
+def linear(eps, eps_top, theta, gb, ar, n=N_NODES):
+    """numerics.arcs.Linear at the half-angles: q0, q1 = [P*, B*, k_bot, k_top] of the (Delta, unit delta) cases."""
+    return _arcs.two_patch_linear(eps, eps_top, theta, gb, nodes(eps, eps_top, n, ar), ar)
+
+
+@functools.lru_cache(maxsize=None)
+def reference_sign(n, theta, gb, ar):
+    """sign(det A) for two arcs of 1e-3 rad at n nodes (far from every singular configuration: the log term
+    dominates); with alpha* != 0 the enrichment columns flip the sign of det with n mod 3."""
+    return _arcs.two_patch_linear(1e-3, 1e-3, theta, gb, n, ar).sign_det

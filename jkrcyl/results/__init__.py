@@ -1,0 +1,11 @@
+"""What the library answers, one naming throughout: states (:mod:`.states`), branches (:mod:`.curves`) and paths
+(:mod:`.paths`).  Normalised fields (section 6) are always there -- a, eps [rad], eps_star, P_star,
+delta_over_Delta, delta_work_over_Delta, h_pi_over_Delta, feasible, stable_load, stable_grip, stable_grip_work --
+and the dimensional ones -- P [N/m], delta, delta_work, contact_width, h_pi [m] -- wherever a Contact made the
+result (None otherwise).  P_star and M are P_R* and M_R* of (7.6) for vartheta = inf."""
+from .curves import Curve, Point, TwoPatchCurve
+from .paths import ConfinedEvents, Cycle, Jump, PullOff
+from .states import Equilibrium, FullContact, TwoPatchState
+
+__all__ = ["ConfinedEvents", "Curve", "Cycle", "Equilibrium", "FullContact", "Jump", "Point", "PullOff",
+           "TwoPatchCurve", "TwoPatchState"]
