@@ -19,6 +19,7 @@ import numpy as np
 
 import jkrcyl
 from jkrcyl import equilibria as eq
+from jkrcyl.model.collocation import Collocation
 from jkrcyl.numerics import arcs
 
 
@@ -55,15 +56,16 @@ def main():
 
     print(f"time per {args.curve}-point curve (equilibria.curve, M = 0.4, vartheta = 1):")
     for ar in (0.0, 0.117):
-        eq.curve(0.4, 1.0, n=4, alpha_ratio=ar)
+        eq.curve(0.4, 1.0, n=4, alpha_ratio=ar, gb=0.5)
         t = time.perf_counter()
-        eq.curve(0.4, 1.0, n=args.curve, alpha_ratio=ar)
+        eq.curve(0.4, 1.0, n=args.curve, alpha_ratio=ar, gb=0.5)
         dt = time.perf_counter() - t
         label = "closed form" if ar == 0 else f"solver, alpha*/beta* = {ar}"
         print(f"  {label:34s} {dt:9.3f} s   (goal <= 0.5 s)")
-    M, th, gb = 0.4, 1.0, 0.5
+    pb = eq.problem(0.4, 1.0, 0.5)
+    grid = eq.curve(0.4, 1.0, n=args.curve, gb=0.5).a
     t = time.perf_counter()
-    arcs.star(eq._grid("sub-critical", th, args.curve), M * th, th, gb, 0.0)
+    Collocation(pb).states(grid)
     print(f"  {'solver, alpha* = 0':34s} {time.perf_counter() - t:9.3f} s")
 
     print("error vs nodes per arc (max over unit cases P*, B*, k and h(pi); reference n = 128; eps = 1.5):")

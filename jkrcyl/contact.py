@@ -67,8 +67,7 @@ class Contact:
     def a_crit(self):
         """The receding contact a_crit (section 4: the pole of the load), for this material pair (alpha* != 0
         included: the single-patch solver's pole); inf for a rigid cradle at alpha* = 0 (section 7.2)."""
-        m = self.materials
-        return solver(Problem(0.0, m.theta, m.inv_G_I / m.beta, m.alpha_ratio)).a_crit
+        return solver(Problem.of_materials(self.materials)).a_crit
 
     @property
     def problem(self):

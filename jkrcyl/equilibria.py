@@ -25,6 +25,7 @@ from .numerics.zero_load import zero_load_contact, zero_load_max_M   # noqa: F40
 from .results import ConfinedEvents, Curve, FullContact, Point, TwoPatchCurve, TwoPatchState
 
 REGIMES = _br.REGIMES
+RUBBERY_A_MAX = _br.RUBBERY_A_MAX      # curve(): a branch without a_crit is drawn over 0 < a < 3 (Fig. 7)
 CONTROLS = ("load", "grip", "grip-work")
 
 

@@ -1,4 +1,4 @@
-"""The numerical solver of (2.1)/(5.2) for any alpha* (jkrcyl.numerics.arcs, issue 10).
+"""The numerical solver of (2.1)/(5.2) for any alpha* (jkrcyl.numerics.arcs, one_arc; jkrcyl.model.collocation).
 
 References: the closed forms (4.4)-(5.10) at alpha* = 0 (generated kernels through Contact.state with
 method='closed-form'); the JKR superposition identities of a linear frictionless contact (derived below,
@@ -12,6 +12,10 @@ import pytest
 
 import jkrcyl
 from jkrcyl import equilibria as eq
+from jkrcyl.model import stability
+from jkrcyl.model.closed_form import ClosedForm
+from jkrcyl.model.collocation import Collocation, receding_contact
+from jkrcyl.model.problem import Problem
 from jkrcyl.numerics import arcs
 
 INF = math.inf
@@ -63,21 +67,31 @@ def test_auto_uses_closed_form_only_where_alpha_is_zero():
         cp.state(0.3, method="closed-form")
 
 
+def star(kind, a, m, theta, gb, ar=0.0):
+    """The normalised single-patch states of the closed-form or the collocation solver (m = M vartheta) as a
+    dict: p, dn, dw, h, their slopes dp, ddn, ddw, and the release rates gP, gd, gw = (1/w) dG/da at fixed P,
+    delta, delta_work (NaN at m = 0)."""
+    pb = Problem(m if math.isinf(theta) else m / theta, theta, gb, ar)
+    s = (ClosedForm if kind == "closed" else Collocation)(pb).states(np.atleast_1d(a))
+    r = stability.release_rates(s, pb.m, pb.work_shift)
+    return dict(p=s.p, dn=s.dn, dw=s.dw, h=s.h, dp=s.dp_da, ddn=s.ddn_da, ddw=s.ddw_da, p_k=s.p_k, dn_k=s.dn_k,
+                gP=r["load"], gd=r["grip"], gw=r["grip-work"])
+
+
 @pytest.mark.parametrize("theta, gb, M", [(1.0, 0.5, 0.4), (3.0, 0.2, 1.0), (INF, 1.0, 0.3)])
 def test_normalised_equilibria_match_closed_form(theta, gb, M):
-    """p, delta/Delta, h(pi) to 1e-10; slopes (central differences in a) to 1e-7."""
+    """p, delta/Delta, h(pi) and the fixed-arc derivatives to 1e-10; slopes (central differences in a) to 1e-7."""
     a = np.array([1e-3, 0.05, 0.3, 2.0])
-    inv = 0.0 if math.isinf(theta) else 1 / theta
     m = M if math.isinf(theta) else M * theta
-    ref, num = eq._star(a, m, inv, gb), arcs.star(a, m, theta, gb, 0.0)
-    for k, tol in dict(p=1e-10, dn=1e-10, h=1e-10, dw=1e-10, dp=1e-7, ddn=1e-7, ddw=1e-7, gP=1e-7,
-                       gd=1e-7).items():
+    ref, num = star("closed", a, m, theta, gb), star("numeric", a, m, theta, gb)
+    for k, tol in dict(p=1e-10, dn=1e-10, h=1e-10, dw=1e-10, p_k=1e-10, dn_k=1e-10, dp=1e-7, ddn=1e-7, ddw=1e-7,
+                       gP=1e-7, gd=1e-7).items():
         assert np.max(np.abs(num[k] - ref[k]) / np.abs(ref[k])) < tol, k
 
 
 def test_a_crit_of_the_solver_is_the_closed_form_pole():
     for th in (0.7, 1.0, 3.0):
-        assert abs(arcs.a_crit(th, 0.3, 0.0) / jkrcyl.a_crit(th) - 1) < 1e-12
+        assert abs(receding_contact(th, 0.3, 0.0) / jkrcyl.a_crit(th) - 1) < 1e-12
 
 
 # --- spectral convergence ----------------------------------------------------------------------------------
@@ -123,7 +137,7 @@ def _identities(star, a, m, approach="dn"):
 @pytest.mark.parametrize("approach", ["dn", "dw"])
 @pytest.mark.parametrize("a", [0.05, 0.3, 0.7])
 def test_superposition_identities_hold_for_the_closed_forms(a, approach):
-    i1, i2 = _identities(lambda x, m: eq._star(x, m, 1.0, 0.5), a, 0.3, approach)
+    i1, i2 = _identities(lambda x, m: star("closed", x, m, 1.0, 0.5), a, 0.3, approach)
     assert abs(i1) < 1e-12 and abs(i2) < 1e-6
 
 
@@ -131,7 +145,7 @@ def test_superposition_identities_hold_for_the_closed_forms(a, approach):
 @pytest.mark.parametrize("theta, a", [(1.0, 0.05), (0.67, 0.3), (2.0, 0.7)])
 def test_superposition_identities_hold_for_alpha_nonzero(ar, theta, a):
     """The solver's Griffith step (edge coefficient) against the compliance route (no edge coefficient)."""
-    i1, i2 = _identities(lambda x, m: arcs.star(x, m, theta, 0.3, ar), a, 0.3, "dw")
+    i1, i2 = _identities(lambda x, m: star("numeric", x, m, theta, 0.3, ar), a, 0.3, "dw")
     assert abs(i1) < 1e-9 and abs(i2) < 1e-6
 
 
@@ -227,32 +241,32 @@ def test_cli_physical_inputs_use_the_solver(capsys):
     P_ref = c.state(a).P_star
     assert np.all(np.abs(P - P_ref) <= 6e-10 * (np.abs(P_ref) + np.abs(slope)))
     # ... a bound far tighter than the difference to the closed form as if alpha* = 0 (so the test can fail)
-    as_if_0 = eq.curve(c.M, c.theta, a=a, alpha_ratio=0.0).P_star
+    as_if_0 = eq.curve(c.M, c.theta, a=a, alpha_ratio=0.0, gb=eq.incompressible_gb(c.theta)).P_star
     assert np.all(np.abs(as_if_0 - P_ref) > 1e-3 * np.abs(P_ref))
 
 
 def test_alpha_ratio_range_is_validated():
     with pytest.raises(ValueError, match="alpha_ratio"):
-        eq.curve(0.3, 1.0, alpha_ratio=1.5)
+        eq.curve(0.3, 1.0, alpha_ratio=1.5, gb=eq.incompressible_gb(1.0))
 
 
 def test_two_patch_answers_for_the_pair_not_for_alpha_zero(monkeypatch):
     """Contact.two_patch/confined_events pass the pair's alpha*/beta* on (the alpha* != 0 physics itself is
     checked in tests/test_twopatch.py); the tracer is replaced by a recorder to keep this test fast."""
-    from jkrcyl import twopatch
+    from jkrcyl.analysis import confined, tracing
     c = pair("steel pin in aluminium", Delta=1e-5, w=0.5)
     seen = []
-    monkeypatch.setattr(twopatch, "branches", lambda *a, **k: seen.append(k["alpha_ratio"]) or [])
-    monkeypatch.setattr(twopatch, "confined_events", lambda *a, **k: seen.append(k["alpha_ratio"]))
+    monkeypatch.setattr(tracing, "branches", lambda pb, *a, **k: seen.append(pb.alpha_ratio) or [])
+    monkeypatch.setattr(confined, "confined_events", lambda pb, *a, **k: seen.append(pb.alpha_ratio))
     c.two_patch()
     c.confined_events()
     assert seen == [c.materials.alpha_ratio] * 2 and seen[0] != 0
 
 
 def test_curve_slopes_along_a_long_grid_match_closed_form():
-    """star() on a 2000-point grid takes slopes from differences in log a (no extra solves): 1e-5 there."""
-    a = eq._grid("sub-critical", 1.0, 2000)
-    ref, num = eq._star(a, 0.4, 1.0, 0.5), arcs.star(a, 0.4, 1.0, 0.5, 0.0)
+    """The collocation solver on a 2000-point grid (slopes per point, never across grid points): 1e-5 there."""
+    a = eq.curve(0.4, 1.0, n=2000, gb=0.5).a
+    ref, num = star("closed", a, 0.4, 1.0, 0.5), star("numeric", a, 0.4, 1.0, 0.5)
     for k, tol in dict(p=1e-10, dn=1e-10, h=1e-10, dp=1e-5, ddn=1e-5, gP=1e-5, gd=1e-5).items():
         scale = np.abs(ref[k]) + np.median(np.abs(ref[k]))      # slopes cross zero (stationary points)
         assert np.max(np.abs(num[k] - ref[k]) / scale) < tol, k

@@ -54,7 +54,7 @@ def _dense_minima(M, th, regime):
         s = np.concatenate([np.geomspace(1e-8, 0.5, 20000, endpoint=False), 1 - np.geomspace(0.5, 1e-9, 20000)])
         a = ac * s if regime == "sub-critical" else ac * (1 + np.concatenate(
             [np.geomspace(1e-9, 1, 20000, endpoint=False), np.geomspace(2, 1e4, 20000) - 1]))
-    P = eq.curve(M, th, regime, a=a).P_star
+    P = eq.curve(M, th, regime, a=a, gb=eq.incompressible_gb(th)).P_star
     i = np.nonzero((P[1:-1] < P[:-2]) & (P[1:-1] < P[2:]))[0] + 1
     return [(a[k], P[k]) for k in i]
 
@@ -63,7 +63,7 @@ def _dense_minima(M, th, regime):
 def test_atlas_agrees_with_equilibria(atlas_rows, M, th):
     r = atlas_rows[(M, th)]
     regs = ("sub-critical",) if math.isinf(th) else eq.REGIMES
-    ref = {p.regime: p for p in eq.adherence(M, th, "load", regimes=regs)}
+    ref = {p.regime: p for p in eq.adherence(M, th, "load", regimes=regs, gb=eq.incompressible_gb(th))}
     # (1) sub-critical detachment: existence, location, P*, feasibility
     sub = ref.get("sub-critical")
     dense = _dense_minima(M, th, "sub-critical")
@@ -153,18 +153,22 @@ def test_cli_atlas_end_to_end(tmp_path):
 
 # --- confined classes (issue 12 item 4) ----------------------------------------------------------
 def _load_path_class(M, th):
-    """Reference class from jkrcyl.twopatch's load path: dense closed-form curves (3000 points per branch)
-    and, at the fold, the two-arc engine's sign of dG/dP* at fixed arc (not the branch rule the atlas uses)."""
-    from jkrcyl import twopatch as tp
-    gb = eq.default_gb(th)
-    path = tp._load_path(M, th, gb)
-    if path is None:
+    """Reference class from the library's one load-path walker (jkrcyl.analysis.path: first contact, then the
+    walk down the dense closed-form table, 4000 points per branch) and, at the fold, the sign of the fixed-arc
+    dp/dk (jkrcyl.analysis.pull_off.grows_under_pull; not the branch rule the atlas uses)."""
+    from jkrcyl.analysis import forward, path, pull_off
+    pb = eq.problem(M, th, eq.incompressible_gb(th))
+    un = forward.Units(1.0, 1.0, 1.0, 1.0)
+    _, start, _ = path.first_contact(pb, un, "load")
+    if start is None:
         return A.CONF_NONE, None
-    c, _, event, j = path
-    if event == "top":
-        return A.CONF_TOP, c
-    grows = tp._grows_under_pull(float(c.eps[j]), th, gb, tp.N_NODES)
-    return (A.CONF_ZIP if grows else A.CONF_TRANSFER), c
+    if start.branch == "full-contact":
+        return A.CONF_BONDED, None
+    track = path.SingleTrack(pb, un, start.branch, "bottom", "load")
+    _, event, s = path.walk(track, track.index(start.a), -math.inf)
+    if event == "gap":
+        return A.CONF_TOP, s
+    return (A.CONF_ZIP if pull_off.grows_under_pull(pb, s.a, "load") else A.CONF_TRANSFER), s
 
 
 def test_confined_classes_agree_with_the_twopatch_load_path():
@@ -180,10 +184,10 @@ def test_confined_classes_agree_with_the_twopatch_load_path():
             assert res["confined"][i, j] == ref, (M, th)
             seen.add(ref)
             if ref in (A.CONF_TRANSFER, A.CONF_ZIP):
-                pts = [p for p in eq.stationary_points(M, th, "load", c.regime) if p.kind == "min"]
+                pts = [p for p in eq.stationary_points(M, th, "load", c.branch, gb=eq.incompressible_gb(th)) if p.kind == "min"]
                 P = min(pts, key=lambda p: abs(p.a - res["event_a"][i, j])).P_star
                 assert res["event_P"][i, j] == pytest.approx(P, rel=1e-10, abs=1e-12), (M, th)
-    assert seen == {A.CONF_TRANSFER, A.CONF_ZIP}          # both classes sampled (no top-first pair: erratum)
+    assert seen == {A.CONF_TRANSFER, A.CONF_ZIP, A.CONF_BONDED}   # sampled (no top-first pair: erratum)
 
 
 # M = 0.3 ... 0.8 at vartheta = 1 are issue 12's findings; the others sample both classes elsewhere
@@ -193,21 +197,23 @@ CONFINED_SAMPLES = [(0.3, 1.0), (0.4, 1.0), (0.5, 1.0), (0.8, 1.0), (0.2, 2.0), 
 @pytest.mark.slow
 @pytest.mark.parametrize("M, th", CONFINED_SAMPLES)
 def test_confined_classes_agree_with_the_full_two_patch_analysis(M, th):
-    """jkrcyl.twopatch.confined_events (load path + every two-patch branch, ~1-2 s) against the atlas pair."""
-    from jkrcyl import twopatch as tp
-    ev = tp.confined_events(M, th)
+    """jkrcyl.equilibria.confined_events (load path + every two-patch branch, ~1-2 s) against the atlas pair."""
+    ev = eq.confined_events(M, th, gb=eq.incompressible_gb(th))
     res = A.classify(np.array([M]), np.array([th]))
     assert res["confined"][0, 0] == A.FROM_TWOPATCH[ev.regime]
-    assert res["event_P"][0, 0] == pytest.approx(ev.P_fold, rel=1e-10)
+    if ev.regime == "bonded":           # no zero-load contact (M > M_max, issue 18 item 9): no event, 0 in the atlas
+        assert res["event_P"][0, 0] == 0 and math.isnan(ev.P_fold)
+    else:
+        assert res["event_P"][0, 0] == pytest.approx(ev.P_fold, rel=1e-10)
 
 
 @pytest.mark.slow
 def test_two_patch_refinement_of_top_first_pairs():
     """classify(two_patch=True) replaces CONF_TOP by the two-patch analysis' answer (none on the default grid,
     so the refinement is exercised on a pair marked by hand)."""
-    from jkrcyl import twopatch as tp
     C = sys.modules["jkrcyl.atlas.classify"]           # the module (jkrcyl.atlas.classify is the function)
     out = A.classify(np.array([0.4]), np.array([1.0]))
     out["confined"][0, 0] = A.CONF_TOP
     C._refine_top(out, progress=False)
-    assert out["confined"][0, 0] == A.FROM_TWOPATCH[tp.confined_events(0.4, 1.0).regime] == A.CONF_ZIP
+    ev = eq.confined_events(0.4, 1.0, gb=eq.incompressible_gb(1.0))
+    assert out["confined"][0, 0] == A.FROM_TWOPATCH[ev.regime] == A.CONF_ZIP

@@ -36,7 +36,7 @@ def test_rigid_pin_in_incompressible_plate_has_theta_one_half():
 
 @pytest.mark.parametrize("M", [1e-6, 1e-9, 1e-12])
 def test_adherence_found_for_tiny_M(M):
-    (p,) = eq.adherence(M, 1.0, "load", regimes=("sub-critical",))
+    (p,) = eq.adherence(M, 1.0, "load", regimes=("sub-critical",), gb=eq.incompressible_gb(1.0))
     a_h = (M / 2) ** (2 / 3)                           # half-plane limit (7.3b), vartheta = 1
     assert p.a == pytest.approx(a_h, rel=1e-3) and p.kind == "min"
     assert p.P_star == pytest.approx(-1.5 * (M ** 4 / 2) ** (1 / 3), rel=1e-3)
@@ -82,15 +82,15 @@ API_CASES = [
     ("a_crit 1e110", lambda: jkrcyl.a_crit(1e110), "theta"),
     ("a_crit 1e160", lambda: jkrcyl.a_crit(1e160), "theta"),
     ("a_crit 0.49", lambda: jkrcyl.a_crit(0.49), "theta"),
-    ("adherence M = 1e-200", lambda: eq.adherence(1e-200, 1.0), "M"),
-    ("adherence M = 1e-300", lambda: eq.adherence(1e-300, 1.0), "M"),
-    ("curve M = 1e-300", lambda: eq.curve(1e-300, 1.0, n=10), "M"),
+    ("adherence M = 1e-200", lambda: eq.adherence(1e-200, 1.0, gb=eq.incompressible_gb(1.0)), "M"),
+    ("adherence M = 1e-300", lambda: eq.adherence(1e-300, 1.0, gb=eq.incompressible_gb(1.0)), "M"),
+    ("curve M = 1e-300", lambda: eq.curve(1e-300, 1.0, n=10, gb=eq.incompressible_gb(1.0)), "M"),
     ("zero load M = 1e-200", lambda: jkrcyl.zero_load_contact(1e-200, 1.0), "M"),
-    ("curve M = -1", lambda: eq.curve(-1.0, 1.0), "M"),
+    ("curve M = -1", lambda: eq.curve(-1.0, 1.0, gb=eq.incompressible_gb(1.0)), "M"),
     ("curve gb = 2", lambda: eq.curve(0.3, 1.0, gb=2.0), "gb"),
-    ("curve a bad", lambda: eq.curve(0.3, 1.0, a=[-1, 0, math.nan]), "a"),
-    ("curve a off the regime", lambda: eq.curve(0.3, 1.0, regime="super-critical", a=[0.1]), "a"),
-    ("curve n = 1e7", lambda: eq.curve(0.3, 1.0, n=1e7), "n"),
+    ("curve a bad", lambda: eq.curve(0.3, 1.0, a=[-1, 0, math.nan], gb=eq.incompressible_gb(1.0)), "a"),
+    ("curve a off the regime", lambda: eq.curve(0.3, 1.0, regime="super-critical", a=[0.1], gb=eq.incompressible_gb(1.0)), "a"),
+    ("curve n = 1e7", lambda: eq.curve(0.3, 1.0, n=1e7, gb=eq.incompressible_gb(1.0)), "n"),
     ("Delta = R", lambda: jkrcyl.Contact(R=1.0, Delta=1.0, w=1e-4, materials=MAT), "Delta"),
     ("Delta > R", lambda: jkrcyl.Contact(R=1.0, Delta=2.0, w=1e-4, materials=MAT), "Delta"),
     ("G = 1e-320", lambda: materials(G=1e-320), "G"),
@@ -133,10 +133,10 @@ API_CASES = [
     ("cycle control", lambda: C.cycle(P_max=1.0, P_min=-1.0, control="force"), "control"),
     ("cycle grip without delta", lambda: C.cycle(control="grip", delta_max=1e-3), "delta_max"),
     ("cycle delta_min >= delta_max", lambda: C.cycle(control="grip", delta_max=0.0, delta_min=1e-3), "delta_min"),
-    ("curve regime", lambda: eq.curve(0.3, 1.0, regime="middle"), "regime"),
-    ("curve super-critical rigid", lambda: eq.curve(0.3, math.inf, regime="super-critical"), "regime"),
-    ("adherence control", lambda: eq.adherence(0.3, 1.0, control="force"), "control"),
-    ("alpha_ratio = 1.5", lambda: eq.curve(0.3, 1.0, alpha_ratio=1.5), "alpha_ratio"),
+    ("curve regime", lambda: eq.curve(0.3, 1.0, regime="middle", gb=eq.incompressible_gb(1.0)), "regime"),
+    ("curve super-critical rigid", lambda: eq.curve(0.3, math.inf, regime="super-critical", gb=eq.incompressible_gb(math.inf)), "regime"),
+    ("adherence control", lambda: eq.adherence(0.3, 1.0, control="force", gb=eq.incompressible_gb(1.0)), "control"),
+    ("alpha_ratio = 1.5", lambda: eq.curve(0.3, 1.0, alpha_ratio=1.5, gb=eq.incompressible_gb(1.0)), "alpha_ratio"),
     ("closed form refused for alpha* != 0",
      lambda: jkrcyl.Contact(R=0.01, Delta=1e-5, w=0.05, materials=jkrcyl.Materials.from_young(
          2.6e9, 0.3, math.inf, 0.3)).state(0.3, method="closed-form"), "alpha*"),
@@ -252,11 +252,11 @@ def test_counts_alpha_ratio_and_huge_theta():
     for every elastic pair), and a curve at huge vartheta complained about an 'a' the caller never gave."""
     from jkrcyl import equilibria as eq
     with pytest.raises(ValueError, match="n must be an integer"):
-        eq.curve(0.3, 1.0, n=5.5)
+        eq.curve(0.3, 1.0, n=5.5, gb=eq.incompressible_gb(1.0))
     with pytest.raises(ValueError, match="alpha_ratio"):
-        eq.curve(0.3, 1.0, n=5, alpha_ratio=1.0)
+        eq.curve(0.3, 1.0, n=5, alpha_ratio=1.0, gb=eq.incompressible_gb(1.0))
     with pytest.raises(ValueError, match="theta"):
-        eq.curve(0.3, 1e100, regime="super-critical", n=5)
+        eq.curve(0.3, 1e100, regime="super-critical", n=5, gb=eq.incompressible_gb(1e100))
     c = jkrcyl.Contact(R=1.0, Delta=0.01, w=1e-4, materials=jkrcyl.Materials(G=1.0, kappa=2.0, G_I=1.0, kappa_I=2.0))
     with pytest.raises(ValueError, match="n must be an integer"):
         c.cycle(P_max=1.0, P_min=-1.0, n=10.5)

@@ -17,6 +17,9 @@ from jkrcyl import equilibria as eq
 from reference import paper as pp
 from jkrcyl import special
 from jkrcyl.generated import derivatives as der
+from jkrcyl.model import stability
+from jkrcyl.model.closed_form import ClosedForm
+from jkrcyl.model.problem import Problem
 from jkrcyl.numerics import kernels as _k
 
 mp.mp.dps = 30
@@ -27,6 +30,14 @@ PAIRS = [(mp.mpf(3), mp.mpf(1), mp.mpf(1)),
          (mp.mpf(3) / 20 + mp.mpf("2.1") / 2, (10 * (mp.mpf(3) / 20 + mp.mpf("2.1") / 2)) / 3, mp.mpf(1))]
 A_VALUES = ("0.05", "0.4", "0.8", "1.3", "3")
 
+
+
+def _release_rates(a, th, m, gb):
+    """(1/w) dG/da at fixed P, delta, delta_work of the library (closed-form solver, chain rule of
+    jkrcyl.model.stability) at one a; m = M vartheta."""
+    pb = Problem(m / th, th, gb)
+    r = stability.release_rates(ClosedForm(pb).states([a]), pb.m, pb.work_shift)
+    return {k: float(v[0]) for k, v in r.items()}
 
 def _delta_work(a, beta, th, GI, z):
     """Work-conjugate approach delta + P/(8 pi G_I) (DERIVATION.md, 'The work-conjugate approach') of the print."""
@@ -69,16 +80,16 @@ def test_slope_kernels_vs_mpmath_differences(pair, a_txt):
     _close(dP, mp.diff(lambda s: pp.P_44(s, DELTA, beta, th, zeta, mp), a))
     _close(dd, mp.diff(lambda s: pp.delta_58(s, DELTA, R, beta, th, GI, zeta, mp), a))
     m = float(zeta * beta / (4 * mp.pi * DELTA))                      # M vartheta = zeta* beta*/(4 pi Delta)
-    r = _k.star_m(np.array([float(a)]), inv_theta=float(1 / th), m=m, gb=float(1 / GI / beta))
+    r = _release_rates(float(a), float(th), m, float(1 / GI / beta))
     P_eq = pp.P_44(a, DELTA, beta, th, zeta, mp)
     d_eq = pp.delta_58(a, DELTA, R, beta, th, GI, zeta, mp)
     dw_eq = _delta_work(a, beta, th, GI, zeta)
     ref_P = mp.diff(lambda s: _G(s, beta, th, _zeta_for(s, beta, th, P=P_eq)), a) / w
     ref_d = mp.diff(lambda s: _G(s, beta, th, _zeta_for(s, beta, th, delta=d_eq, GI=GI)), a) / w
     ref_w = mp.diff(lambda s: _G(s, beta, th, _zeta_for(s, beta, th, GI=GI, delta_work=dw_eq)), a) / w
-    _close(r.dG_da_P[0], ref_P, 1e-8)
-    _close(r.dG_da_delta[0], ref_d, 1e-8)
-    _close(r.dG_da_delta_work[0], ref_w, 1e-8)
+    _close(r["load"], ref_P, 1e-8)
+    _close(r["grip"], ref_d, 1e-8)
+    _close(r["grip-work"], ref_w, 1e-8)
     # on the equilibrium G = w
     _close(_G(a, beta, th, zeta) / w, 1, 1e-13)
 
@@ -102,7 +113,8 @@ def test_dimensionless_kernel_vs_mpmath(a_txt):
     _close(r.delta_work_over_Delta, dwf(a))
     _close(r.ddelta_work_da, mp.diff(dwf, a))
     P_eq = pp.P_44(a, DELTA, beta, th, zeta, mp)
-    _close(r.dG_da_P, mp.diff(lambda s: _G(s, beta, th, _zeta_for(s, beta, th, P=P_eq)), a) / w, 1e-8)
+    rate = _release_rates(float(a), float(th), float(M * th), float(1 / GI / beta))["load"]
+    _close(rate, mp.diff(lambda s: _G(s, beta, th, _zeta_for(s, beta, th, P=P_eq)), a) / w, 1e-8)
 
 
 @pytest.mark.parametrize("a_txt", ("0.3", "0.8", "1.5", "3"))
@@ -130,7 +142,7 @@ def test_fixed_load_stability_is_sign_of_slope_times_regime():
     fixed load where dP*/da > 0 below a_crit and where dP*/da < 0 above it."""
     for M in (0.3, 0.5, 0.8):
         for regime, sign in (("sub-critical", 1), ("super-critical", -1)):
-            cv = eq.curve(M, 1.0, regime, n=300)
+            cv = eq.curve(M, 1.0, regime, n=300, gb=eq.incompressible_gb(1.0))
             ok = np.abs(cv.dP_star_da) > 1e-9
             assert np.array_equal(cv.stable_load[ok], (sign * cv.dP_star_da > 0)[ok])
 
@@ -151,7 +163,7 @@ def test_zero_load_contact():
             assert abs(pp.zero_load_81(x, M, 1.0)) < 1e-12 * max(1, x * x)
             # P* vanishes there (the same equation times M)
             assert abs(eq.curve(M, 1.0, "sub-critical" if x < jkrcyl.a_crit(1) else "super-critical",
-                                a=[x]).P_star[0]) < 1e-12
+                                a=[x], gb=eq.incompressible_gb(1.0)).P_star[0]) < 1e-12
     M_max, a_at = eq.zero_load_max_M(1.0)
     assert 0.64 < M_max < 0.65 and a_at > jkrcyl.a_crit(1.0)
     assert len(eq.zero_load_contact(M_max * 0.999, 1.0)) == 2
@@ -162,46 +174,46 @@ def test_zero_load_contact():
 
 def test_fig11_claims():
     # sub-critical: a P* minimum at M = 0.3 (stable and unstable branches), none at M = 0.5
-    sub3 = eq.stationary_points(0.3, 1.0, "load", "sub-critical")
+    sub3 = eq.stationary_points(0.3, 1.0, "load", "sub-critical", gb=eq.incompressible_gb(1.0))
     assert [p.kind for p in sub3] == ["min"] and sub3[0].P_star < 0
-    assert eq.stationary_points(0.5, 1.0, "load", "sub-critical") == []
-    cv = eq.curve(0.3, 1.0, "sub-critical", n=400)
+    assert eq.stationary_points(0.5, 1.0, "load", "sub-critical", gb=eq.incompressible_gb(1.0)) == []
+    cv = eq.curve(0.3, 1.0, "sub-critical", n=400, gb=eq.incompressible_gb(1.0))
     assert cv.stable_load.any() and (~cv.stable_load).any()
-    assert not eq.curve(0.5, 1.0, "sub-critical", n=400).stable_load.any()
+    assert not eq.curve(0.5, 1.0, "sub-critical", n=400, gb=eq.incompressible_gb(1.0)).stable_load.any()
     # super-critical: detachment minimum below zero at M = 0.5, above zero at M = 0.8
-    (s5,) = eq.adherence(0.5, 1.0, "load", regimes=("super-critical",))
-    (s8,) = eq.adherence(0.8, 1.0, "load", regimes=("super-critical",))
+    (s5,) = eq.adherence(0.5, 1.0, "load", regimes=("super-critical",), gb=eq.incompressible_gb(1.0))
+    (s8,) = eq.adherence(0.8, 1.0, "load", regimes=("super-critical",), gb=eq.incompressible_gb(1.0))
     assert s5.P_star < 0 < s8.P_star
     for M in (0.5, 0.8):
-        cv = eq.curve(M, 1.0, "super-critical", n=400)
+        cv = eq.curve(M, 1.0, "super-critical", n=400, gb=eq.incompressible_gb(1.0))
         assert cv.stable_load.any()
         # what holds (paper: 'unstable branch at smaller contact angles'): the stable branch is the
         # one at SMALLER angles, below the P* minimum, where dP*/da < 0
-        (amin,) = [p.a for p in eq.adherence(M, 1.0, "load", regimes=("super-critical",))]
+        (amin,) = [p.a for p in eq.adherence(M, 1.0, "load", regimes=("super-critical",), gb=eq.incompressible_gb(1.0))]
         assert cv.stable_load[cv.a < amin * 0.99].all() and not cv.stable_load[cv.a > amin * 1.01].any()
     # paper: 'at M = 0.3 there are stable super-critical states' -- P* increases monotonically there,
     # so no super-critical state is stable at fixed load
-    cv = eq.curve(0.3, 1.0, "super-critical", n=1000)
+    cv = eq.curve(0.3, 1.0, "super-critical", n=1000, gb=eq.incompressible_gb(1.0))
     assert (cv.dP_star_da > 0).all() and not cv.stable_load.any()
 
 
 def test_adherence_to_full_precision():
     for M, th in ((0.1, 1.0), (0.3, 0.5), (0.5, 1.0), (0.5, math.inf)):
-        for p in eq.adherence(M, th, "load"):
+        for p in eq.adherence(M, th, "load", gb=eq.incompressible_gb(th)):
             reg = p.regime
-            here = eq.curve(M, th, reg, a=[p.a]).P_star[0]
+            here = eq.curve(M, th, reg, a=[p.a], gb=eq.incompressible_gb(th)).P_star[0]
             for f in (1 - 1e-7, 1 + 1e-7):
-                assert eq.curve(M, th, reg, a=[p.a * f]).P_star[0] >= here
-            assert abs(eq.curve(M, th, reg, a=[p.a]).dP_star_da[0]) < 1e-12 * max(1, abs(here) * 1e3)
-        for p in eq.adherence(M, th, "grip"):
-            assert abs(eq.curve(M, th, p.regime, a=[p.a]).ddelta_da[0]) < 1e-10
+                assert eq.curve(M, th, reg, a=[p.a * f], gb=eq.incompressible_gb(th)).P_star[0] >= here
+            assert abs(eq.curve(M, th, reg, a=[p.a], gb=eq.incompressible_gb(th)).dP_star_da[0]) < 1e-12 * max(1, abs(here) * 1e3)
+        for p in eq.adherence(M, th, "grip", gb=eq.incompressible_gb(th)):
+            assert abs(eq.curve(M, th, p.regime, a=[p.a], gb=eq.incompressible_gb(th)).ddelta_da[0]) < 1e-10
 
 
 def test_no_point_gives_empty_results():
-    assert eq.adherence(0.5, 1.0, "load", regimes=("sub-critical",)) == []
-    assert eq.adherence(0.0, 1.0, "load") == []
-    assert eq.solve_load(0.3, 1.0, -5.0, "sub-critical") == [] or all(
-        eq.curve(0.3, 1.0, "sub-critical", a=[x]).P_star[0] < -4 for x in eq.solve_load(0.3, 1.0, -5.0))
+    assert eq.adherence(0.5, 1.0, "load", regimes=("sub-critical",), gb=eq.incompressible_gb(1.0)) == []
+    assert eq.adherence(0.0, 1.0, "load", gb=eq.incompressible_gb(1.0)) == []
+    assert eq.solve_load(0.3, 1.0, -5.0, "sub-critical", gb=eq.incompressible_gb(1.0)) == [] or all(
+        eq.curve(0.3, 1.0, "sub-critical", a=[x], gb=eq.incompressible_gb(1.0)).P_star[0] < -4 for x in eq.solve_load(0.3, 1.0, -5.0, gb=eq.incompressible_gb(1.0)))
 
 
 def test_delta_zero_at_M1_has_positive_load():
@@ -222,7 +234,7 @@ def test_half_plane_adherence_vs_cylinder_fig10():
     for th, Ms_below, Ms_above in ((1.0, (0.05, 0.1, 0.2, 0.3, 0.4), (0.5, 0.6)),
                                    (0.5, (0.05, 0.2, 0.4, 0.55, 0.6), (0.65, 0.7))):
         for M in Ms_below + Ms_above:
-            cyl = min(p.P_star for p in eq.adherence(M, th, "load"))
+            cyl = min(p.P_star for p in eq.adherence(M, th, "load", gb=eq.incompressible_gb(th)))
             half = special.half_plane_adherence(M, th)[1]
             assert (cyl < half) == (M in Ms_below), (th, M, cyl, half)
 
@@ -245,15 +257,15 @@ def test_contact_delegations():
 
 def test_bad_inputs_name_the_parameter():
     with pytest.raises(ValueError, match="regime"):
-        eq.curve(0.3, 1.0, "hyper")
+        eq.curve(0.3, 1.0, "hyper", gb=eq.incompressible_gb(1.0))
     with pytest.raises(ValueError, match="regime"):
-        eq.curve(0.3, math.inf, "super-critical")
+        eq.curve(0.3, math.inf, "super-critical", gb=eq.incompressible_gb(math.inf))
     with pytest.raises(ValueError, match="control"):
-        eq.adherence(0.3, 1.0, "torque")
+        eq.adherence(0.3, 1.0, "torque", gb=eq.incompressible_gb(1.0))
     with pytest.raises(ValueError, match="^M "):
         eq.zero_load_contact(-1, 1.0)
     with pytest.raises(ValueError, match="theta"):
-        eq.curve(0.3, 0.2)
+        eq.curve(0.3, 0.2, gb=eq.incompressible_gb(0.2))
 
 
 @pytest.mark.parametrize("a_txt", ("1e-8", "1e-5", "1e-2", "10", "1e3", "1e4"))

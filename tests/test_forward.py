@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import jkrcyl
-from jkrcyl import forward
+from jkrcyl.analysis import forward
 from reference import paper
 
 MAT = jkrcyl.Materials(G=1.0, kappa=2.0, G_I=1.0, kappa_I=2.0)           # vartheta = 1, alpha* = 0
@@ -121,7 +121,7 @@ def test_mirror_branches():
 def test_confined_branches_two_patch_and_full_contact():
     """M = 0.4, vartheta = 1 (confined): two-patch states at the request, Griffith at both ends (G = w)."""
     c = contact(0.4)
-    assert forward.confined(forward.Problem.of(c))
+    assert forward.confined(c.problem)
     P = -1.0 * c.load_scale
     states = c.solve(P=P)
     tp = [s for s in states if s.branch == "two-patch"]

@@ -78,24 +78,25 @@ def test_the_check_sees_a_violation(tmp_path):
 
 # --- the layer's normalisation, against the definitions of section 6 -------------------------------
 def test_normalise_theta_inf_and_finite():
-    from jkrcyl.numerics import kernels
-    assert kernels.normalise(0.3, math.inf) == (0.0, 0.3, 1.0)           # M is M_R*, P* is P_R* (7.6)
-    n = kernels.normalise(0.3, 2.0)
-    assert n.inv_theta == 0.5 and n.m == pytest.approx(0.6) and n.scale == 2.0
+    from jkrcyl.model.problem import Problem
+    pb = Problem(0.3, math.inf, 1.0)
+    assert (pb.inv_theta, pb.m, pb.scale) == (0.0, 0.3, 1.0)           # M is M_R*, P* is P_R* (7.6)
+    pb = Problem(0.3, 2.0, 0.5)
+    assert pb.inv_theta == 0.5 and pb.m == pytest.approx(0.6) and pb.scale == 2.0
 
 
 def test_star_matches_contact_state():
     """P* and delta/Delta of the normalised kernels equal the dimensional state divided by its scales."""
     import jkrcyl
-    from jkrcyl.numerics import kernels
+    from jkrcyl.model.closed_form import ClosedForm
     mats = jkrcyl.Materials(G=1.0, kappa=2.0, G_I=1.0, kappa_I=2.0)
     c = jkrcyl.Contact(R=1.5, Delta=0.01, w=1e-4, materials=mats)
     a = np.array([0.05, 0.3, 0.8, 2.0])
     s = c.state(a)
-    st = kernels.star(a, c.M, c.theta, mats.inv_G_I / c.beta)
-    np.testing.assert_allclose(st.P_star, s.P / c.load_scale, rtol=1e-12)
-    np.testing.assert_allclose(st.delta_over_Delta, s.delta / c.Delta, rtol=1e-12)
-    np.testing.assert_allclose(st.h_pi_over_Delta, s.h_pi / c.Delta, rtol=1e-12)
+    st = ClosedForm(c.problem).states(a)
+    np.testing.assert_allclose(st.p / c.problem.scale, s.P / c.load_scale, rtol=1e-12)
+    np.testing.assert_allclose(st.dn, s.delta / c.Delta, rtol=1e-12)
+    np.testing.assert_allclose(st.h, s.h_pi / c.Delta, rtol=1e-12)
 
 
 def test_roots_toolkit_python_and_numba_agree():

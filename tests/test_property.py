@@ -197,7 +197,7 @@ def test_curve_finite(M, theta, gb, regime, n):
        control=st.sampled_from(eq.CONTROLS))
 def test_adherence_finite(M, theta, control):
     """M >= 1e-12 (the issue's bound for the adherence search); below, see the xfail test."""
-    for p in eq.adherence(M, theta, control):
+    for p in eq.adherence(M, theta, control, gb=eq.incompressible_gb(theta)):
         for name in ("a", "eps", "eps_star", "P_star", "delta_over_Delta", "h_pi_over_Delta"):
             assert finite(getattr(p, name)), name
 
@@ -296,7 +296,7 @@ def test_star_kernel_huge_theta_gb_one():
 def test_release_rate_fields_without_adhesion_are_documented_nan():
     """(1/w) dG/da has no value when w = 0 (M = 0): NaN by definition, said in the Curve docstring; the stability
     flags stay booleans (the M -> 0+ rules of jkrcyl.forward judge states)."""
-    cv = eq.curve(0.0, 1.0, n=5)
+    cv = eq.curve(0.0, 1.0, n=5, gb=eq.incompressible_gb(1.0))
     assert np.all(np.isnan(cv.dG_da_P)) and np.all(np.isnan(cv.dG_da_delta))
     assert "NaN" in eq.Curve.__doc__ and cv.stable_load.dtype == bool
 
@@ -326,5 +326,5 @@ def test_rubber_pin_in_rigid_cradle_pull_off():
 
 def test_grip_adherence_tiny_M():
     """Was a ZeroDivisionError (the direct dG/da|_delta cancelled to 0 at a ~ 1e-13); now the chain rule."""
-    pts = eq.adherence(1e-20, 5.0, "grip")
+    pts = eq.adherence(1e-20, 5.0, "grip", gb=eq.incompressible_gb(5.0))
     assert pts and all(finite(p.P_star) and finite(p.delta_over_Delta) for p in pts)

@@ -50,7 +50,7 @@ def test_half_plane_74_and_small_a_limit():
     # normalised: the general P* tends to P_h* with a relative error O(a^2)
     for th in (0.5, 1.0, 3.0):
         M = 0.2
-        cyl = eq.curve(M, th, "sub-critical", a=a).P_star
+        cyl = eq.curve(M, th, "sub-critical", a=a, gb=eq.incompressible_gb(th)).P_star
         half = special.half_plane_P_star(a, M, th)
         assert np.all(np.abs(cyl / half - 1) < 5 * a**2 / th + 5 * a**1.5 * 0)
 
@@ -65,7 +65,7 @@ def test_half_plane_adherence_formula():
     # the cylindrical adherence tends to the half-plane one as M -> 0 (small contact)
     for th in (0.5, 1.0):
         for M in (1e-3, 1e-2):
-            (p,) = eq.adherence(M, th, "load", regimes=("sub-critical",))
+            (p,) = eq.adherence(M, th, "load", regimes=("sub-critical",), gb=eq.incompressible_gb(th))
             a_m, P_m = special.half_plane_adherence(M, th)
             assert abs(p.P_star / P_m - 1) < 3 * a_m
             assert abs(p.a / a_m - 1) < 3 * a_m
@@ -77,10 +77,10 @@ def test_rubbery_75_76_77_and_general_kernels():
     P_R = special.rubbery_P_star(a, M_R)
     np.testing.assert_allclose(P_R, [_mp(pp.P_R_star_76, x, M_R) for x in a], rtol=1e-14)
     # vartheta = inf in the general kernels (inv_theta = 0)
-    np.testing.assert_allclose(eq.curve(M_R, math.inf, a=a).P_star, P_R, rtol=1e-12, atol=1e-15)
+    np.testing.assert_allclose(eq.curve(M_R, math.inf, a=a, gb=eq.incompressible_gb(math.inf)).P_star, P_R, rtol=1e-12, atol=1e-15)
     # vartheta -> inf: vartheta P* at M = M_R/vartheta tends to P_R*
     th = 1e9    # the correction is O(a^4/vartheta)
-    np.testing.assert_allclose(eq.curve(M_R / th, th, a=a).P_star * th, P_R, rtol=1e-6)
+    np.testing.assert_allclose(eq.curve(M_R / th, th, a=a, gb=eq.incompressible_gb(th)).P_star * th, P_R, rtol=1e-6)
     # (7.5) in physical units vs a Contact with a rigid cradle
     m = jkrcyl.Materials(G=math.inf, kappa=2.0, G_I=1.0, kappa_I=1.0)
     c = jkrcyl.Contact(R=1.5, Delta=0.01, w=1e-4, materials=m)
@@ -93,7 +93,7 @@ def test_rubbery_75_76_77_and_general_kernels():
         slope = 2 * a_l * (a_l**2 - 2 * M * math.sqrt(a_l)) + (1 + a_l**2) * (2 * a_l - M / math.sqrt(a_l))
         assert abs(math.sqrt(a_l) * slope) < 1e-13 * max(1, M)
         assert abs(pp.lift_off_77(a_l, M)) < 1e-13 * max(1, M)
-        (p,) = eq.adherence(M, math.inf, "load")
+        (p,) = eq.adherence(M, math.inf, "load", gb=eq.incompressible_gb(math.inf))
         assert abs(p.a - a_l) < 1e-12 * a_l and abs(p.P_star - P_l) < 1e-13 * abs(P_l)
     assert math.isnan(special.rubbery_lift_off(0.0)[0])
 

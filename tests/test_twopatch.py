@@ -1,4 +1,4 @@
-"""Two contact arcs and full contact (issue 12): jkrcyl.twopatch on the arc engine.
+"""Two contact arcs and full contact (issue 12): jkrcyl.model.two_patch, jkrcyl.analysis.tracing, confined.
 
 References, all independent of the two-arc solve under test:
 * the closed-form single patch (4.4), (5.8), (5.10) through jkrcyl.equilibria (kernels checked against
@@ -19,23 +19,79 @@ from scipy.optimize import brentq
 
 from jkrcyl import Contact, Materials, cli
 from jkrcyl import equilibria as eq
-from jkrcyl import twopatch as tp
+from jkrcyl.analysis import pull_off, tracing
+from jkrcyl.model import two_patch
+from jkrcyl.model.problem import Problem
+from jkrcyl.numerics import two_arcs
+from jkrcyl.results import ConfinedEvents, TwoPatchCurve
+from jkrcyl.results.paths import REGIMES
 
 THETA = 1.0
-GB = eq.default_gb(THETA)
+GB = eq.incompressible_gb(THETA)
+
+
+def _pb(M, theta, gb=None, alpha_ratio=0.0):
+    return Problem(M, theta, eq.incompressible_gb(theta) if gb is None else gb, alpha_ratio)
+
+
+class tp:
+    """The calls of these tests in the normalised form (M, theta, gb, alpha_ratio; gb defaults to the
+    incompressible pin the tests were written for), on jkrcyl.model.two_patch and jkrcyl.analysis."""
+
+    N_NODES, EPS_AXIS, GAP_FULL = two_patch.N_NODES, tracing.EPS_AXIS, tracing.GAP_FULL
+    REGIMES, TwoPatchCurve = REGIMES, TwoPatchCurve
+    _near, _domain, _clipper = staticmethod(tracing._near), staticmethod(tracing._domain), \
+        staticmethod(tracing._clipper)
+
+    @staticmethod
+    def _linear(eps, eps_top, theta, gb, n, alpha_ratio=0.0):
+        return two_arcs.linear(eps, eps_top, theta, gb, alpha_ratio, n)
+
+    @staticmethod
+    def solve(M, theta, eps_top=None, eps=None, gb=None, guess=None, alpha_ratio=0.0):
+        return two_patch.solve(_pb(M, theta, gb, alpha_ratio), eps_top=eps_top, eps=eps, guess=guess)
+
+    @staticmethod
+    def equilibrium_state(eps, eps_top, M, theta, gb, alpha_ratio=0.0):
+        return two_patch.equilibrium_state(_pb(M, theta, gb, alpha_ratio), eps, eps_top)
+
+    @staticmethod
+    def residual(eps, eps_top, M, theta, gb, alpha_ratio=0.0):
+        return two_patch.residual(_pb(M, theta, gb, alpha_ratio), eps, eps_top)
+
+    @staticmethod
+    def fixed_arcs(eps, eps_top, d, M, theta, gb, n=two_patch.N_NODES, alpha_ratio=0.0):
+        return two_patch.fixed_arcs(_pb(M, theta, gb, alpha_ratio), eps, eps_top, d, n)
+
+    @staticmethod
+    def hessian(eps, eps_top, d, M, theta, gb, alpha_ratio=0.0):
+        return two_patch.hessian(_pb(M, theta, gb, alpha_ratio), eps, eps_top, d)
+
+    @staticmethod
+    def full_contact(theta, P_star=None, delta_over_Delta=None, gb=None, alpha_ratio=0.0):
+        return eq.full_contact(theta, P_star, delta_over_Delta, gb=eq.incompressible_gb(theta) if gb is None else gb,
+                               alpha_ratio=alpha_ratio)
+
+    @staticmethod
+    def onset_angles(M, theta, gb, alpha_ratio=0.0):
+        return list(tracing.onset_angles(_pb(M, theta, gb, alpha_ratio)))
+
+    @staticmethod
+    def confined_events(M, theta):
+        return eq.confined_events(M, theta, gb=eq.incompressible_gb(theta))
 
 
 def onset(M, theta=THETA, regime="sub-critical", bracket=(0.5, 0.91)):
     """Closed-form single patch with h(pi) = 0: (a, P*, delta/Delta) from (4.4), (5.8), (5.10)."""
-    h = lambda a: float(eq.curve(M, theta, regime, a=np.array([a])).h_pi_over_Delta[0])
+    h = lambda a: float(eq.curve(M, theta, regime, a=np.array([a]), gb=eq.incompressible_gb(theta)).h_pi_over_Delta[0])
     a = brentq(h, *bracket, xtol=1e-16, rtol=1e-15)
-    c = eq.curve(M, theta, regime, a=np.array([a]))
+    c = eq.curve(M, theta, regime, a=np.array([a]), gb=eq.incompressible_gb(theta))
     return a, float(c.P_star[0]), float(c.delta_over_Delta[0])
 
 
 @pytest.fixture(scope="module")
 def branches_04():
-    return eq.two_patch(0.4, THETA)
+    return eq.two_patch(0.4, THETA, gb=eq.incompressible_gb(THETA))
 
 
 # --- the engine against the closed form --------------------------------------------------------------
@@ -43,7 +99,7 @@ def branches_04():
 @pytest.mark.parametrize("a", [0.2, 0.6, 1.3])
 def test_single_arc_engine_matches_closed_form(theta, gb, a):
     M = 0.35
-    regime = "sub-critical" if a < eq._a_crit(theta) else "super-critical"
+    regime = "sub-critical" if a < eq.a_crit(M, theta, gb) else "super-critical"
     ref = eq.curve(M, theta, regime, a=np.array([a]), gb=gb)
     lin = tp._linear(2 * math.atan(a), 0.0, theta, gb, 32)
     d = (M / math.pi - lin.q0[2]) / lin.q1[2]        # Griffith k = M/pi
@@ -253,7 +309,7 @@ def test_spectral_convergence_in_the_nodes():
 def test_hessian_stability_of_a_single_arc_matches_closed_form(M, regime, a):
     """With no top arc the grip block is 1x1 and the load block (eps, delta) 2x2: compare with the signs of
     dG/da|_delta and dG/da|_P of the closed form (jkrcyl.equilibria)."""
-    ref = eq.curve(M, THETA, regime, a=np.array([a]))
+    ref = eq.curve(M, THETA, regime, a=np.array([a]), gb=eq.incompressible_gb(THETA))
     e = 2 * math.atan(a)
     H, _, _ = tp.hessian(e, 0.0, float(ref.delta_over_Delta[0]), M, THETA, GB)
     sub = H[np.ix_([0, 2], [0, 2])]
@@ -271,7 +327,7 @@ def test_hessian_is_symmetric(state):
 @pytest.mark.parametrize("M", [0.3, 0.4, 0.5, 0.8])
 def test_no_two_patch_state_is_stable_under_load_at_theta_1(M):
     """Finding of issue 12 (re-verified): at vartheta = 1 every two-patch equilibrium is unstable at fixed load."""
-    for b in eq.two_patch(M, THETA):
+    for b in eq.two_patch(M, THETA, gb=eq.incompressible_gb(THETA)):
         assert not b.stable_load.any()
 
 
@@ -281,13 +337,15 @@ def test_contact_two_patch_and_validation():
     bs = c.two_patch(n=20)
     for b in bs:
         assert b.a.size == 20 and b.a_top.size == 20
-        assert set(b.table()) == set(tp.TwoPatchCurve.COLUMNS)
+        assert set(b.table()) == set(tp.TwoPatchCurve.COLUMNS) | {"P", "delta", "delta_work"}   # dimensional
+        np.testing.assert_allclose(b.P, b.P_star * c.load_scale, rtol=1e-15)
+        np.testing.assert_allclose(b.delta_work, b.delta + b.P * c.materials.inv_G_I / (8 * math.pi), rtol=1e-12)
     with pytest.raises(ValueError, match="M"):
-        eq.two_patch(-1, 1.0)
+        eq.two_patch(-1, 1.0, gb=eq.incompressible_gb(1.0))
     with pytest.raises(ValueError, match="theta"):
-        eq.two_patch(0.4, 0.2)
+        eq.two_patch(0.4, 0.2, gb=eq.incompressible_gb(0.2))
     with pytest.raises(ValueError, match="n"):
-        eq.two_patch(0.4, 1.0, n=1)
+        eq.two_patch(0.4, 1.0, n=1, gb=eq.incompressible_gb(1.0))
 
 
 def test_cli_two_patch_json(capsys):
@@ -319,11 +377,11 @@ def test_cli_confined_figure(tmp_path):
 def test_direction_of_the_jump_at_the_fold(M, regime, expect_growth):
     """At fixed a, G/w = (M'/M)^2 along the closed-form family P*(a; M'), so a pull lowers G (the contact
     grows: zip) exactly when P* rises with M' -- the closed form's answer, against the engine's k1/P1."""
-    p = [q for q in eq.stationary_points(M, THETA, "load", regime) if q.kind == "min"][0]
-    P = lambda m: float(eq.curve(m, THETA, regime, a=np.array([p.a])).P_star[0])
+    p = [q for q in eq.stationary_points(M, THETA, "load", regime, gb=eq.incompressible_gb(THETA)) if q.kind == "min"][0]
+    P = lambda m: float(eq.curve(m, THETA, regime, a=np.array([p.a]), gb=eq.incompressible_gb(THETA)).P_star[0])
     grows_closed_form = P(M * 1.001) > P(M * 0.999)
     assert grows_closed_form == expect_growth
-    assert tp._grows_under_pull(p.eps, THETA, GB, tp.N_NODES) == grows_closed_form
+    assert pull_off.grows_under_pull(Problem(M, THETA, GB), p.a, "load") == grows_closed_form
 
 
 @pytest.mark.slow
@@ -331,7 +389,7 @@ def test_direction_of_the_jump_at_the_fold(M, regime, expect_growth):
 def test_confined_events(M, regime):
     ev = tp.confined_events(M, THETA)
     assert ev.regime == regime and ev.regime in tp.REGIMES
-    ref = min((q for r in eq.REGIMES for q in eq.stationary_points(M, THETA, "load", r) if q.kind == "min"),
+    ref = min((q for r in eq.REGIMES for q in eq.stationary_points(M, THETA, "load", r, gb=eq.incompressible_gb(THETA)) if q.kind == "min"),
               key=lambda q: abs(q.P_star - ev.P_fold))
     assert ev.P_fold == ref.P_star
     assert math.isnan(ev.P_top_contact)
@@ -340,9 +398,11 @@ def test_confined_events(M, regime):
 
 def test_zip_summary_uses_the_full_contact_law_of_the_pair():
     """Full contact is entirely in tension for |P*| < -pi N0 = 1/(1 - 2 vartheta alpha*/beta*) (N0 checked by quad
-    of the kernel in test_alpha_full_contact_law): 1 at alpha* = 0, 1.25 at vartheta = 0.9, alpha*/beta* = 1/9."""
-    ev = lambda ar: tp.ConfinedEvents(0.5, 0.9, "zip-full", (0.3, 0.0), -1.1, math.nan, (), False, False, False,
-                                      False, (), 0.37, ar)
+    of the kernel in test_alpha_full_contact_law): 1 at alpha* = 0, 1.25 at vartheta = 0.9, alpha*/beta* = 1/9;
+    the confined analysis stores that law's answer at the fold, and the summary says it."""
+    tension = lambda ar: eq.full_contact(0.9, P_star=-1.1, gb=0.37, alpha_ratio=ar).tension_everywhere
+    ev = lambda ar: ConfinedEvents(0.5, 0.9, "zip-full", (0.3, 0.0), -1.1, math.nan, (), False, False, False,
+                                   False, (), 0.37, ar, fold_in_tension=tension(ar))
     assert "entirely in tension" in ev(1 / 9).summary
     assert "partly compressed" in ev(0.0).summary
 
@@ -352,7 +412,7 @@ def test_fixed_load_stability_flips_with_the_branch(M):
     """dG/dP* at fixed a is < 0 sub-critically and > 0 super-critically, so the emitted dG/da|_P kernel
     (stable_load) agrees with dP*/da > 0 on the sub-critical branch and with dP*/da < 0 on the other."""
     for regime, sign in (("sub-critical", 1), ("super-critical", -1)):
-        c = eq.curve(M, THETA, regime, n=2000)
+        c = eq.curve(M, THETA, regime, n=2000, gb=eq.incompressible_gb(THETA))
         assert np.array_equal(c.stable_load, sign * c.dP_star_da > 0)
 
 
@@ -519,7 +579,7 @@ def test_alpha_ratio_validation():
     with pytest.raises(ValueError, match="alpha_ratio"):
         tp.solve(0.4, 1.0, eps_top=0.5, alpha_ratio=0.5)            # >= 1/(2 vartheta)
     with pytest.raises(ValueError, match="alpha_ratio"):
-        eq.two_patch(0.4, 1.0, alpha_ratio=-1.0)
+        eq.two_patch(0.4, 1.0, alpha_ratio=-1.0, gb=eq.incompressible_gb(1.0))
     with pytest.raises(ValueError, match="alpha_ratio"):
         tp.full_contact(2.0, P_star=0.0, alpha_ratio=0.3)
 
@@ -563,7 +623,7 @@ def test_cli_two_patch_and_confined_report_for_a_pair_with_alpha(capsys):
         lin = tp._linear(eps, 0.0, th, gb, 64, ar)
         d = (M / math.pi - lin.q0[2]) / lin.q1[2]
         return lin.q0[0] + d * lin.q1[0]
-    e_c = 2 * math.atan(eq._ac(th, gb, ar))
+    e_c = 2 * math.atan(eq.a_crit(M, th, gb, ar))
     r = minimize_scalar(P, bounds=(e_c + 0.2, 2.6), method="bounded", options={"xatol": 1e-9})
     assert e_c + 0.21 < r.x < 2.59                # an interior minimum (the super-critical fold)
     assert conf["P_fold"] == pytest.approx(r.fun, rel=1e-8)
@@ -583,9 +643,10 @@ def test_adherence_outcome_replaces_overclosure():
     from dataclasses import replace
     from jkrcyl import a_crit
     for M in (0.1, 0.3, 0.5, 0.8):
-        for p in eq.adherence(M, 1.0, "load"):
+        for p in eq.adherence(M, 1.0, "load", gb=eq.incompressible_gb(1.0)):
             assert p.feasible and p.outcome == ("detachment" if p.a < a_crit(1.0) else "zip-full")
-    p = eq.adherence(0.3, 1.0, "load")[0]
-    closed = eq._outcomes([replace(p, feasible=False)], 0.3, 1.0, eq.default_gb(1.0), 0.0)[0]
+    p = eq.adherence(0.3, 1.0, "load", gb=eq.incompressible_gb(1.0))[0]
+    from jkrcyl.analysis import confined
+    closed = confined.outcomes(Problem(0.3, 1.0, eq.incompressible_gb(1.0)), [replace(p, feasible=False)])[0]
     assert closed.outcome == tp.confined_events(0.3, 1.0).regime and closed.outcome in tp.REGIMES
-    assert eq.adherence(0.3, 1.0, "grip")[0].outcome is None
+    assert eq.adherence(0.3, 1.0, "grip", gb=eq.incompressible_gb(1.0))[0].outcome is None

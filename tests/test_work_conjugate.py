@@ -66,7 +66,7 @@ def test_stable_grip_work_is_the_load_rule_with_delta_work(M, theta, gb):
     inv_t = 0.0 if math.isinf(theta) else 1 / theta
     m = M if math.isinf(theta) else M * theta
     for regime in (("sub-critical",) if math.isinf(theta) else ("sub-critical", "super-critical")):
-        ac = eq._ac(theta, gb, 0.0)
+        ac = 1.0 if math.isinf(theta) else eq.a_crit(M, theta, gb)    # vartheta = inf: 0 < a < 0.97 checked
         lo, hi = (1e-12, 0.97 * min(ac, 1e3)) if regime == "sub-critical" else (1.03 * ac, 1e3)
         a = np.geomspace(lo, hi, 400)
         s = _k.star_m(a, inv_theta=inv_t, m=m, gb=gb)
@@ -92,12 +92,13 @@ def test_stable_grip_work_lies_between_grip_and_load():
 
 @pytest.mark.parametrize("M, theta, gb", [(0.3, 1.0, 0.5), (0.5, 1.0, 0.5), (0.2, 0.5, 1.0), (0.6, 0.6, 1.0)])
 def test_hessian_stability_of_one_arc_matches_the_release_rates(M, theta, gb):
-    """jkrcyl.twopatch.stability (second variation of the energy with the pin's n = 1 term, finite differences of
+    """jkrcyl.model.two_patch.stability (second variation of the energy with the pin's n = 1 term, finite differences of
     the collocation solution) with no top arc against Curve.stable_load / stable_grip / stable_grip_work (closed
     form, chain rule): two routes that share no code for all three controls."""
-    from jkrcyl import twopatch as tp
+    from jkrcyl.model import two_patch
+    pb = eq.problem(M, theta, gb)
     for regime in ("sub-critical", "super-critical"):
         cv = eq.curve(M, theta, regime=regime, n=40, gb=gb)
         for i in range(1, 40, 4):
-            got = tp.stability(float(cv.eps[i]), 0.0, float(cv.delta_over_Delta[i]), M, theta, gb)
+            got = two_patch.stability(pb, float(cv.eps[i]), 0.0, float(cv.delta_over_Delta[i]))
             assert got == (cv.stable_load[i], cv.stable_grip[i], cv.stable_grip_work[i]), (regime, cv.a[i])

@@ -66,13 +66,19 @@ class SingleTrack:
         return self.state_at(float(self.a[k]) if r is None else r)
 
     def fold_a(self, j):
-        """Contact parameter of the stationary point of the held quantity next to grid index j."""
+        """Contact parameter of the stationary point of the held quantity next to grid index j: the sign change
+        of its slope in the table cell on either side of j, refined exactly as branches.roots refines it (the
+        same bracket, so the same double as jkrcyl.analysis.branches.stationary_points)."""
         field = SLOPE_OF[HELD[self.control][0]]
-        lo, hi = float(self.a[max(j - 1, 0)]), float(self.a[min(j + 1, self.a.size - 1)])
+        name, scaled = _br.SLICE_OF_CURVE[field]
+        v = np.asarray(getattr(_br.table(self.pb, self.regime), name)) * (self.pb.scale if scaled else 1.0)
         sv = solver(self.pb)
-        flo, fhi = sv.value(field, lo), sv.value(field, hi)
-        r = sv.root(field, lo, hi, flo, fhi) if flo * fhi < 0 else None
-        return float(self.a[j]) if r is None else r
+        for i in (j - 1, j):
+            if 0 <= i < v.size - 1 and np.sign(v[i]) * np.sign(v[i + 1]) < 0:
+                r = sv.root(field, float(self.a[i]), float(self.a[i + 1]), float(v[i]), float(v[i + 1]))
+                if r is not None:
+                    return r
+        return float(self.a[j])
 
     def fold(self, j):
         return self.state_at(self.fold_a(j))

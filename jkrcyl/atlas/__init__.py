@@ -2,7 +2,7 @@
 
 classify (numba kernels, one per pair, through jkrcyl.numerics), files (npz, CSV), draw (the map).
 """
-from .classify import (CONF_NONE, CONF_TOP, CONF_TOP_FULL, CONF_TOP_TRANSFER, CONF_TRANSFER, CONF_TWO_PATCH,
+from .classify import (CONF_BONDED, CONF_NONE, CONF_TOP, CONF_TOP_FULL, CONF_TOP_TRANSFER, CONF_TRANSFER, CONF_TWO_PATCH,
                        CONF_ZIP, CONFINED, FIELDS_BOOL, FIELDS_FLOAT, FIELDS_INT, FROM_TWOPATCH, classify,
                        classify_parallel, classify_serial, default_grid)
 from .draw import draw

@@ -54,7 +54,7 @@ _N_FAR = 28              # super-critical: a/a_crit = 2 ... 1e5, geometric
 RUBBERY_A_MAX = 3.0      # vartheta = inf: branch 0 < a < 3 as jkrcyl.equilibria (a_crit = inf)
 
 # the load path's outcome (``confined`` field)
-CONF_NONE, CONF_TRANSFER, CONF_ZIP, CONF_TOP, CONF_TOP_TRANSFER, CONF_TOP_FULL, CONF_TWO_PATCH = range(7)
+CONF_NONE, CONF_TRANSFER, CONF_ZIP, CONF_TOP, CONF_TOP_TRANSFER, CONF_TOP_FULL, CONF_TWO_PATCH, CONF_BONDED = range(8)
 CONFINED = {
     CONF_NONE: "no load path (M = 0: no adhesion)",
     CONF_TRANSFER: "pull-off at the sub-critical fold: the pin detaches and lands on the top of the hole",
@@ -63,11 +63,12 @@ CONFINED = {
     CONF_TOP_TRANSFER: "top contact snaps in, the pin transfers to the top of the hole",
     CONF_TOP_FULL: "top contact snaps in and the contact runs into full contact",
     CONF_TWO_PATCH: "top contact forms and a two-patch state stable under load follows",
+    CONF_BONDED: "no stable, feasible zero-load contact: at first touch the pin zips into full contact (bonded)",
 }
 # jkrcyl.twopatch.REGIMES -> code (the refinement of CONF_TOP and the tests' reference)
 FROM_TWOPATCH = {"no-path": CONF_NONE, "detachment": CONF_TRANSFER, "zip-full": CONF_ZIP,
                  "snap-in-transfer": CONF_TOP_TRANSFER, "snap-in-full": CONF_TOP_FULL,
-                 "two-patch": CONF_TWO_PATCH}
+                 "two-patch": CONF_TWO_PATCH, "bonded": CONF_BONDED}
 
 FIELDS_BOOL = ("sub_min", "sub_feasible", "sup_min", "sup_detach", "sup_feasible", "zero_load", "adherence")
 FIELDS_INT = ("sub_nmin", "sup_nmin", "n_a0", "adh_branch", "confined")
@@ -128,27 +129,15 @@ def _stable(a, sub, args):
 
 
 @njit(cache=True)
-def _start(args, n0, a0s, a0l, ac, sub_nodes, sup_nodes):
-    """Start of the load path: (a, sub?) -- the largest stable, feasible zero-load contact, else the stable
-    feasible node of largest P*; a = 0 when there is none."""
-    best, best_sub = 0.0, True
+def _start(args, n0, a0s, a0l, ac):
+    """Start of the load path at first contact (jkrcyl.analysis.path.first_contact): (a, sub?) of the smallest
+    stable, feasible zero-load contact; a = 0 when there is none (the pin zips into full contact: bonded)."""
     for k in range(n0):
         a0 = a0s if k == 0 else a0l
         sub = not a0 > ac
-        if _stable(a0, sub, args) and _h(a0, args) >= 0.0 and a0 > best:
-            best, best_sub = a0, sub
-    if best > 0.0:
-        return best, best_sub
-    best_p = -math.inf
-    for sub in (True, False):
-        nodes = sub_nodes if sub else sup_nodes
-        for k in range(nodes.shape[0]):
-            x = nodes[k]
-            if _stable(x, sub, args) and _h(x, args) >= 0.0:
-                p = kernels.p_nb(x, args[0], args[1])
-                if p > best_p:
-                    best, best_sub, best_p = x, sub, p
-    return best, best_sub
+        if _stable(a0, sub, args) and _h(a0, args) >= 0.0:
+            return a0, sub
+    return 0.0, True
 
 
 @njit(cache=True)
@@ -186,9 +175,9 @@ def _confined(args, n0, a0s, a0l, ac, sub_nodes, sup_nodes):
     """(code, a, p) of the load path's first event; see the module docstring."""
     if not args[1] > 0.0:
         return CONF_NONE, 0.0, 0.0
-    a_start, sub = _start(args, n0, a0s, a0l, ac, sub_nodes, sup_nodes)
+    a_start, sub = _start(args, n0, a0s, a0l, ac)
     if a_start == 0.0:
-        return CONF_NONE, 0.0, 0.0
+        return (CONF_NONE if math.isinf(ac) else CONF_BONDED), 0.0, 0.0
     kind, a = _first_event(args, a_start, sub, sub_nodes if sub else sup_nodes)
     p = kernels.p_nb(a, args[0], args[1])
     if kind == 2:
@@ -285,7 +274,7 @@ def classify(Ms, thetas, parallel=True, chunk_rows=None, progress=False, two_pat
     Returns a dict: M (n_M,), theta (n_theta,), a_crit, zero_load_M_max (per theta; inf for inf),
     and every field of FIELDS_BOOL/INT/FLOAT as an (n_theta, n_M) array.  progress: a tqdm bar (stderr)
     over the chunks of rows (the chunks are independent: the unit to distribute, e.g. with Dask).
-    two_patch: refine every CONF_TOP pair by :func:`jkrcyl.twopatch.confined_events` (~1 s each).
+    two_patch: refine every CONF_TOP pair by :func:`jkrcyl.equilibria.confined_events` (~1 s each).
     """
     from tqdm import tqdm
     Ms, thetas = _check_grid(Ms, thetas)
@@ -318,14 +307,16 @@ def classify(Ms, thetas, parallel=True, chunk_rows=None, progress=False, two_pat
 
 
 def _refine_top(out, progress):
-    """CONF_TOP pairs -> the two-patch analysis' answer (jkrcyl.twopatch.confined_events)."""
+    """CONF_TOP pairs -> the two-patch analysis' answer (jkrcyl.analysis.confined; gb of an incompressible pin:
+    the class depends on the fixed-load path only)."""
     from tqdm import tqdm
-    from .. import twopatch
+    from .. import equilibria
     rows, cols = np.nonzero(out["confined"] == CONF_TOP)
     for i, j in tqdm(list(zip(rows, cols)), unit="pairs", disable=not progress, file=sys.stderr):
         th, M = out["theta"][i], out["M"][j]
         if math.isfinite(th) and M > 0:
-            out["confined"][i, j] = FROM_TWOPATCH[twopatch.confined_events(M, th).regime]
+            ev = equilibria.confined_events(M, th, gb=equilibria.incompressible_gb(th))
+            out["confined"][i, j] = FROM_TWOPATCH[ev.regime]
 
 
 def default_grid(n_M=1000, n_theta=1000, M_max=2.0, theta_min=0.5, theta_max=5.0, with_inf=True):

@@ -5,7 +5,8 @@ import numpy as np
 from .classify import CONFINED
 
 # one colour per class, distinct in greyscale too (luminance falls with the code)
-PALETTE = {0: "#f0f0f0", 1: "#a6cee3", 2: "#fdbf6f", 3: "#fb9a99", 4: "#b2df8a", 5: "#cab2d6", 6: "#6a3d9a"}
+PALETTE = {0: "#f0f0f0", 1: "#a6cee3", 2: "#fdbf6f", 3: "#fb9a99", 4: "#b2df8a", 5: "#cab2d6", 6: "#6a3d9a",
+           7: "#b15928"}
 LEVELS = (-5, -3, -2, -1.5, -1, -0.75, -0.5, -0.3, -0.2, -0.1, -0.05, 0.05, 0.1, 0.2, 0.3, 0.5)
 
 

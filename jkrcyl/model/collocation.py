@@ -23,7 +23,8 @@ class Collocation(SinglePatch):
     def states(self, a) -> Slice:
         pb = self.problem
         a = np.atleast_1d(np.asarray(a, dtype=float))
-        st, sl = _one.arc_states(a, pb.edge.edge_coefficient(pb.m), pb.theta, pb.gb, pb.alpha_ratio)
+        st, sl = _one.arc_states(a, pb.edge.edge_coefficient(pb.m), pb.theta, pb.gb, pb.alpha_ratio,
+                                 pole=self.a_crit)
         c = pb.work_shift
         return Slice(a=a, p=st["p"], dp_da=sl["dp_da"], dn=st["d"], ddn_da=sl["dd_da"], dw=st["d"] + c * st["p"],
                      ddw_da=sl["dd_da"] + c * sl["dp_da"], h=st["h_pi"], p_k=st["p_k"], dn_k=st["d_k"])
@@ -76,8 +77,7 @@ class CollocationPhysical:
         self.f = 4 * math.pi * self.L / (contact.R * contact.beta)          # N = f nu
         K_w = math.sqrt(8 * contact.w / contact.beta)                        # (3.5)-(3.6): (pi/4) A K^2 = w
         self.k = K_w / math.sqrt(2 * math.pi * contact.R) / self.f           # edge coefficient in nu
-        self.kernel = (math.inf if m.inv_theta == 0 else 1.0 / m.inv_theta, m.inv_G_I / contact.beta,
-                       m.alpha_star / contact.beta)
+        self.kernel = (m.theta, m.inv_G_I / contact.beta, m.alpha_ratio)
 
     def _arc(self, a):
         eps = 2 * math.atan(a)

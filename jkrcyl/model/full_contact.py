@@ -35,7 +35,7 @@ def state(pb: Problem, P_star=None, delta_over_Delta=None) -> FullContact:
         raise ValueError("theta: full contact needs a finite vartheta (n and P* normalise by vartheta)")
     if (P_star is None) == (delta_over_Delta is None):
         raise ValueError("P_star: give exactly one of P_star and delta_over_Delta")
-    N0, c = law(pb)
+    N0, c = law(pb.require_material_pair())
     if P_star is not None:
         P = finite_scalar("P_star", P_star)
         d = -1.0 + c * P

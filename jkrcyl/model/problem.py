@@ -12,7 +12,7 @@ a material pair fixes it (identical nu = 0.3 bodies: 1/2.8; an incompressible pi
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import InitVar, dataclass
 
 from .._validate import finite_scalar, theta as _check_theta
 from ..numerics import kernels as _k
@@ -46,8 +46,8 @@ class Problem:
     gb : float
         (1/G_I)/beta* in [0, 1]: enters the approach delta only.
     alpha_ratio : float
-        alpha*/beta* in (-1, 1) (0: the paper's closed forms); below 1/(2 vartheta) for a finite vartheta (every
-        material pair: the uniform mode of the pin in the hole has a positive compliance).
+        alpha*/beta* in (-1, 1) (0: the paper's closed forms); every material pair has it below 1/(2 vartheta)
+        (:meth:`require_material_pair`, which full contact and two patches need).
     edge : Griffith
         The edge law (JKR's Griffith condition).
     """
@@ -57,28 +57,42 @@ class Problem:
     gb: float
     alpha_ratio: float = 0.0
     edge: Griffith = GRIFFITH
+    strict: InitVar[bool] = True     # False: derived from a validated Contact (no magnitude floor on M, gb)
 
-    def __post_init__(self):
-        object.__setattr__(self, "M", finite_scalar("M", self.M, low=0.0))
+    def __post_init__(self, strict):
+        tiny = {} if strict else {"tiny": 0.0}
+        object.__setattr__(self, "M", finite_scalar("M", self.M, low=0.0, **tiny))
         th = _check_theta(self.theta)
         object.__setattr__(self, "theta", th)
         if self.gb is None:
             raise ValueError("gb must be given: (1/G_I)/beta* in [0, 1] (the approach delta and the stability at "
                              "fixed delta depend on it; e.g. 1/2.8 for identical nu = 0.3 bodies, "
                              "1 - 1/(2 theta) for an incompressible pin)")
-        object.__setattr__(self, "gb", finite_scalar("gb", self.gb, low=0.0, high=1.0))
+        object.__setattr__(self, "gb", finite_scalar("gb", self.gb, low=0.0, high=1.0, **tiny))
         ar = finite_scalar("alpha_ratio", self.alpha_ratio, low=-1.0, high=1.0, low_open=True)
-        top = 1.0 if math.isinf(th) else min(1.0, 0.5 / th)
-        if not ar < top:
-            raise ValueError(f"alpha_ratio must be in (-1, {top!r}) at theta = {th!r} (no material pair has more: "
-                             f"1/theta - 2 alpha*/beta* > 0), got {ar!r}")
+        if ar == 1.0:
+            raise ValueError("alpha_ratio must be in (-1, 1) (|alpha*| < beta* for every elastic pair), got 1")
         object.__setattr__(self, "alpha_ratio", ar)
+
+    def require_material_pair(self):
+        """alpha*/beta* < 1/(2 vartheta), which every material pair has (1/vartheta - 2 alpha*/beta* =
+        (2/G + (kappa_I - 1)/G_I)/beta* > 0: the uniform mode of the pin in the hole has a positive compliance);
+        full contact and two patches need it.  Returns the problem."""
+        if not self.rigid_cradle and not self.alpha_ratio < 0.5 / self.theta:
+            raise ValueError(f"alpha_ratio must be in (-1, 1/(2 theta)) = (-1, {0.5 / self.theta!r}) at theta = "
+                             f"{self.theta!r} (no material pair has more), got {self.alpha_ratio!r}")
+        return self
 
     @classmethod
     def of(cls, contact) -> "Problem":
         """The normalised problem of a :class:`jkrcyl.Contact` with Delta > 0."""
-        m = contact.materials
-        return cls(M=contact.M, theta=contact.theta, gb=m.inv_G_I / m.beta, alpha_ratio=m.alpha_ratio)
+        return cls.of_materials(contact.materials, contact.M)
+
+    @classmethod
+    def of_materials(cls, materials, M: float = 0.0) -> "Problem":
+        """The problem of a :class:`jkrcyl.Materials` pair at adhesion M (M = 0: what does not depend on it)."""
+        m = materials
+        return cls(M, m.theta, m.inv_G_I / m.beta, m.alpha_ratio, GRIFFITH, False)
 
     @property
     def rigid_cradle(self) -> bool:
@@ -103,11 +117,8 @@ class Problem:
     def work_shift(self) -> float:
         """c in delta_work/Delta = delta/Delta + c p (p = scale P*): the derived k1_work - k1 = gb/2 of
         derive/green.py, read off the emitted kernel (not retyped)."""
-        return _k.work_over_Delta(0.0, 1.0, theta=1.0, gb=self.gb).item()
+        return _k.work_shift(self.gb)
 
-    def with_M(self, M: float) -> "Problem":
-        """The same pair at another adhesion M."""
-        return Problem(M, self.theta, self.gb, self.alpha_ratio, self.edge)
 
     def __repr__(self):
         return (f"Problem(M={self.M!r}, theta={self.theta!r}, gb={self.gb!r}, alpha_ratio={self.alpha_ratio!r}, "

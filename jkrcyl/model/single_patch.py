@@ -36,9 +36,10 @@ def solver(problem: Problem) -> SinglePatch:
     return ClosedForm(problem) if closed_form(problem.alpha_ratio) else Collocation(problem)
 
 
+@functools.lru_cache(maxsize=64)
 def physical(contact, method="auto"):
     """The dimensional single-patch solver of a jkrcyl.Contact (any clearance, Delta = 0 included): states,
     pressure and gap in physical units, closed form where alpha* = 0 (method 'auto'), the collocation solver
     always with method 'numeric'."""
-    closed = method == "auto" and closed_form(contact.materials.alpha_ratio)
+    closed = method == "closed-form" or (method == "auto" and closed_form(contact.materials.alpha_ratio))
     return (ClosedFormPhysical if closed else CollocationPhysical)(contact)

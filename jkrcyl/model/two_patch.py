@@ -52,7 +52,7 @@ def require_finite_theta(pb: Problem):
         raise ValueError("theta: two-patch states need a finite vartheta (M, P* normalise by vartheta)")
     if pb.M <= 0:
         raise ValueError(f"M must be in (0, inf) for two-patch states (Griffith at both ends), got {pb.M!r}")
-    return pb
+    return pb.require_material_pair()
 
 
 def linear(pb: Problem, eps, eps_top, n=N_NODES):

@@ -1,11 +1,12 @@
 """The one bridge between the generated kernels (jkrcyl.generated) and the library.
 
-Only this module imports jkrcyl.generated (tests/test_layer.py enforces it).  It owns the conversion of
-the paper's parameters to kernel arguments -- vartheta = inf is ``inv_theta = 0``; the normalised
-kernels of section 6 take ``m = M vartheta`` (M_R* when vartheta = inf) with Delta = beta* = 1, and
-P* = p/scale with scale = vartheta (1 when vartheta = inf) -- calls every kernel by keyword and hands
-back named results, so that a new kernel argument or output cannot silently shift positions.
+Only this module imports jkrcyl.generated (tests/test_layer.py enforces it).  It calls every kernel by keyword
+and hands back named results, so that a new kernel argument or output cannot silently shift positions.  The
+kernels take ``inv_theta = 1/vartheta`` (0 for the rigid cradle); the normalised ones of section 6 work in the
+kernel scale ``m = M vartheta``, ``p = vartheta P*`` with Delta = beta* = 1 (jkrcyl.model.problem.Problem
+converts, once).
 """
+import functools
 import math
 from collections import namedtuple
 
@@ -24,26 +25,8 @@ from . import roots
 PARALLEL_MIN = 20000   # full_state uses the prange kernel from this many contact parameters on
 
 FullState = _state.FullState      # P, B, C, c0, c1, r0, K, G_release, delta, h_pi
-Normalised = namedtuple("Normalised", ["inv_theta", "m", "scale"])
 Pressure = namedtuple("Pressure", ["bounded", "unbounded"])
-RELEASE_SLOPES = ("dG_da_P", "dG_da_delta", "dG_da_delta_work")   # (1/w) dG/da: undefined when w = 0
-StarM = namedtuple("StarM", _der.EquilibriumStar._fields + RELEASE_SLOPES + ("h_pi_over_Delta",))
-Star = namedtuple("Star", ["P_star", "dP_star_da", "delta_over_Delta", "ddelta_da", "dG_da_P",
-                           "dG_da_delta", "h_pi_over_Delta", "delta_work_over_Delta", "ddelta_work_da",
-                           "dG_da_delta_work"])
-
-
-# --- parameters -----------------------------------------------------------------------------------
-def inv_theta_of(theta):
-    """1/vartheta, 0 for the rigid cradle vartheta = inf (section 7.2)."""
-    return 0.0 if math.isinf(theta) else 1.0 / theta
-
-
-def normalise(M, theta):
-    """Arguments of the normalised kernels: inv_theta, m = M vartheta (M_R* if inf), scale (P* = p/scale)."""
-    if math.isinf(theta):
-        return Normalised(0.0, M, 1.0)
-    return Normalised(1.0 / theta, M * theta, theta)
+StarM = namedtuple("StarM", _der.EquilibriumStar._fields + ("h_pi_over_Delta",))
 
 
 def _empty(result, n):
@@ -74,13 +57,13 @@ def approach_work(P, delta, *, inv_G_I):
     return out.reshape(P.shape)
 
 
-def work_over_Delta(delta_over_Delta, P_star, *, theta, gb):
-    """Normalised work-conjugate approach delta_work/Delta from delta/Delta and P* (p = vartheta P*, P_R* if inf)."""
-    d, P = np.broadcast_arrays(np.asarray(delta_over_Delta, dtype=float), np.asarray(P_star, dtype=float))
-    scale = 1.0 if math.isinf(theta) else theta
-    out = np.empty(d.size)
-    _green.approach_work_star_into(out, delta_over_Delta=_array(d.ravel()), gb=gb, p=_array(P.ravel()) * scale)
-    return out.reshape(d.shape)
+@functools.lru_cache(maxsize=1024)
+def work_shift(gb):
+    """c in delta_work/Delta = delta/Delta + c p (p = P beta*/(4 pi Delta)): the derived k1_work - k1 of
+    derive/green.py, read off the emitted kernel (approach_work_star at delta = 0, p = 1), never retyped."""
+    out = np.empty(1)
+    _green.approach_work_star_into(out, delta_over_Delta=np.zeros(1), gb=gb, p=np.ones(1))
+    return float(out[0])
 
 
 def pressure(a, phi, *, R, Delta, beta, inv_theta, zeta):
@@ -110,37 +93,14 @@ def gap_pi(a, *, Delta, beta, inv_theta, zeta):
 
 # --- normalised kernels (section 6: equilibria, atlas) ----------------------------------------------
 def star_m(a, *, inv_theta, m, gb):
-    """Normalised equilibrium in the kernel's own scale (p = vartheta P*, m = M vartheta): a :data:`StarM`.
-
-    (1/w) dG/da is undefined without adhesion (G = w = 0): NaN there; m = 1e-150 leaves p and delta exact.
-    """
+    """Normalised equilibrium in the kernel's own scale (p = P beta*/(4 pi Delta), m = M vartheta; M_R* and
+    P_R* for vartheta = inf) at the contact parameters a (1-D): a :data:`StarM` -- the emitted EquilibriumStar
+    (p, delta/Delta, delta_work/Delta, their slopes; at fixed a: (1/w) dG/dp and d(delta/Delta)/dp) and
+    h(pi)/Delta (5.10).  m must be > 0 ((1/w) dG/dp ~ 1/m; p and delta are exact for any tiny m)."""
     a = _array(a)
     out = _empty(_der.EquilibriumStar, a.size)
-    _der.equilibrium_star_into(out, a=a, gb=gb, inv_theta=inv_theta, m=m if m > 0 else 1e-150)
-    fields = {f: getattr(out, f) for f in _der.EquilibriumStar._fields}
-    fields.update(release_rates(out, gb) if m > 0 else {f: np.full(a.size, np.nan) for f in RELEASE_SLOPES})
-    return StarM(**fields, h_pi_over_Delta=gap_pi(a, Delta=1.0, beta=1.0, inv_theta=inv_theta,
-                                                    zeta=4 * math.pi * m))
-
-
-def release_rates(s, gb):
-    """(1/w) dG/da at fixed p, delta and delta_work on the equilibrium, by the chain rule the derivation checks
-    (derive/derivatives.py): dG/da|_X = -(dG/dp)|_a (dX/da)/(dX/dp)|_a with (dX/dp)|_a the fixed-arc compliance,
-    d(delta/Delta)/dp (+ gb/2 for delta_work).  Well conditioned where the direct derivatives cancel."""
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return {"dG_da_P": -s.dG_dp * s.dp_da,
-                "dG_da_delta": -s.dG_dp * s.ddelta_da / s.ddelta_dp,
-                "dG_da_delta_work": -s.dG_dp * s.ddelta_work_da / (s.ddelta_dp + 0.5 * gb)}
-
-
-def star(a, M, theta, gb):
-    """Normalised equilibrium of section 6 at the contact parameters a (1-D): a :data:`Star` of arrays."""
-    n = normalise(M, theta)
-    s = star_m(a, inv_theta=n.inv_theta, m=n.m, gb=gb)
-    return Star(P_star=s.p / n.scale, dP_star_da=s.dp_da / n.scale, delta_over_Delta=s.delta_over_Delta,
-                ddelta_da=s.ddelta_da, dG_da_P=s.dG_da_P, dG_da_delta=s.dG_da_delta,
-                h_pi_over_Delta=s.h_pi_over_Delta, delta_work_over_Delta=s.delta_work_over_Delta,
-                ddelta_work_da=s.ddelta_work_da, dG_da_delta_work=s.dG_da_delta_work)
+    _der.equilibrium_star_into(out, a=a, gb=gb, inv_theta=inv_theta, m=m)
+    return StarM(*out, h_pi_over_Delta=gap_pi(a, Delta=1.0, beta=1.0, inv_theta=inv_theta, zeta=4 * math.pi * m))
 
 
 STAR_FIELDS = {"P_star": 0, "dP_star_da": 1, "delta_over_Delta": 2, "ddelta_da": 3, "delta_work_over_Delta": 4,

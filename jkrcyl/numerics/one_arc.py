@@ -115,12 +115,13 @@ def nodes(eps, ar):
     return _arcs.nodes_for(eps, ar)
 
 
-def arc_states(a, k, theta, gb, ar, clearance=1.0, rel_step=3e-6):
-    """ArcStates at the contact parameters a (1-D) and slopes d/da of p, d and h_pi, per point.
+def arc_states(a, k, theta, gb, ar, clearance=1.0, pole=math.inf, rel_step=5e-6):
+    """ArcStates at the contact parameters a (1-D) and slopes d/da of p and d, per point.
 
-    Slopes are central differences of the PHYSICAL state (bordered solves at a (1 +- rel_step) with the same
-    node count): smooth in a where the unit cases are not (the det A poles), truncation ~ rel_step^2 and
-    rounding ~ 1e-16/rel_step relative.  Returns (states: dict of arrays of ArcState fields, slopes: dict of
+    Slopes are central differences of the PHYSICAL state (bordered solves at a +- h with the same node count):
+    smooth in a where the unit cases are not (the det A poles).  The step h = rel_step min(a, |a - pole|) scales
+    with the distance to the nearest singularity (a = 0, the receding-contact pole a_crit), so truncation
+    ~ rel_step^2 and rounding ~ 1e-16/rel_step stay relative errors there too.  Returns (states: dict of arrays of ArcState fields, slopes: dict of
     arrays dp_da, dd_da, dh_da)."""
     a = np.atleast_1d(np.asarray(a, dtype=float))
     keys = ArcState._fields
@@ -132,7 +133,7 @@ def arc_states(a, k, theta, gb, ar, clearance=1.0, rel_step=3e-6):
         s, _ = OneArc(eps, theta, gb, ar, n).state(k, clearance)
         for f in keys:
             out[f][i] = getattr(s, f)
-        h = rel_step * ai
+        h = rel_step * min(ai, abs(ai - pole))
         sp, _ = OneArc(2 * math.atan(ai + h), theta, gb, ar, n).state(k, clearance)
         sm, _ = OneArc(2 * math.atan(ai - h), theta, gb, ar, n).state(k, clearance)
         slopes["dp_da"][i] = (sp.p - sm.p) / (2 * h)
