@@ -24,8 +24,10 @@ from typing import Callable, Dict, List
 import numpy as np
 
 from ..model import full_contact as _full
+from ..model import stability as _stab
 from ..model import two_patch as _two
 from ..model.problem import Problem
+from ..model.single_patch import solver
 from ..results import Equilibrium
 from ..results.states import CONTROLS
 from . import branches as _br
@@ -37,16 +39,19 @@ FIELD_OF_KEY = {"P_star": "p", "delta_over_Delta": "dn", "delta_work_over_Delta"
 
 @dataclass(frozen=True)
 class Units:
-    """What turns a normalised state dimensional: R, Delta [m], P/P* [N/m] and K at an edge in equilibrium."""
+    """What turns a normalised state dimensional: R, Delta [m], P/P* [N/m], K at an edge in equilibrium
+    [Pa m^1/2] and the energy unit 4 pi Delta^2/beta* [J/m] of the kernel scale."""
 
     R: float
     Delta: float
     load_scale: float
     K_edge: float
+    energy_scale: float = 1.0
 
     @classmethod
     def of(cls, contact) -> "Units":
-        return cls(contact.R, contact.Delta, contact.load_scale, math.sqrt(8 * contact.w / contact.beta))
+        return cls(contact.R, contact.Delta, contact.load_scale, math.sqrt(8 * contact.w / contact.beta),
+                   4 * math.pi * contact.Delta ** 2 / contact.beta)
 
 
 def check_control(control) -> str:
@@ -55,31 +60,37 @@ def check_control(control) -> str:
     return control
 
 
-def _state(pb, un, branch, control, side, a, eps, P_star, dn, h, flags, a_top=0.0, eps_top=0.0, K=None,
+def _state(pb, un, branch, control, side, a, eps, P_star, dn, h, flags, U, a_top=0.0, eps_top=0.0, K=None,
            extra=None) -> Equilibrium:
+    """U: the elastic energy in the kernel scale (units 4 pi Delta^2/beta*); the state's total potential is
+    U - 2 m^2 (eps + eps_top) there (the work of adhesion over the contact length 2 R (eps + eps_top))."""
     dw = dn + pb.work_shift * pb.scale * P_star
+    energy = un.energy_scale * (U - 2 * pb.m ** 2 * (eps + eps_top))
     return Equilibrium(branch=branch, control=control, a=a, eps=eps, contact_width=2 * un.R * (eps + eps_top),
                        P=P_star * un.load_scale, delta=dn * un.Delta, delta_work=dw * un.Delta, h_pi=h * un.Delta,
                        K=un.K_edge if K is None else K, P_star=P_star, delta_over_Delta=dn,
                        delta_work_over_Delta=dw, feasible=bool(flags[0]), stable_load=bool(flags[1]),
                        stable_grip=bool(flags[2]), stable_grip_work=bool(flags[3]), side=side, a_top=a_top,
-                       eps_top=eps_top, extra=extra or {})
+                       eps_top=eps_top, energy=energy, extra=extra or {})
 
 
 def single_patch_states(pb: Problem, un: Units, regime: str, a, control: str, side="bottom") -> List[Equilibrium]:
-    """Equilibria of one single-patch branch at contact parameters a (mirrored when side == 'top')."""
-    a = np.atleast_1d(np.asarray(a, dtype=float))
+    """Equilibria of one single-patch branch at contact parameters a (mirrored when side == 'top': the elastic
+    energy is the same, [(1 + delta/Delta) P* - B*]/2 being invariant under the mirror)."""
+    a = _br.on_branch(pb, regime, np.atleast_1d(np.asarray(a, dtype=float))) if np.size(a) else np.zeros(0)
     if a.size == 0:
         return []
-    c = _br.values_at(pb, regime, a)
+    s = solver(pb).states(a)
+    flags = _stab.single_patch_flags(s, pb.work_shift)
+    U = s.energy
     sgn, name = (-1.0, regime + "-top") if side == "top" else (1.0, regime)
     out = []
     for i in range(a.size):
-        P, d = sgn * float(c.P_star[i]), float(c.delta_over_Delta[i])
+        P, d = sgn * float(s.p[i]) / pb.scale, float(s.dn[i])
         d = -2.0 - d if side == "top" else d
-        flags = (c.feasible[i], c.stable_load[i], c.stable_grip[i], c.stable_grip_work[i])
-        out.append(_state(pb, un, name, control, side, float(a[i]), float(c.eps[i]), P, d,
-                          float(c.h_pi_over_Delta[i]), flags))
+        fl = (s.h[i] >= 0, flags["load"][i], flags["grip"][i], flags["grip-work"][i])
+        out.append(_state(pb, un, name, control, side, float(a[i]), 2 * math.atan(a[i]), P, d, float(s.h[i]), fl,
+                          float(U[i])))
     return out
 
 
@@ -106,7 +117,7 @@ def two_patch_state(pb: Problem, un: Units, s, control) -> Equilibrium:
     """A jkrcyl.results.TwoPatchState as an Equilibrium (stability from the second variation)."""
     stab = _two.stability(pb, s.eps, s.eps_top, s.delta_over_Delta, lin=s._lin)
     return _state(pb, un, "two-patch", control, "both", s.a, s.eps, s.P_star, s.delta_over_Delta, 0.0,
-                  (s.feasible, *stab), a_top=s.a_top, eps_top=s.eps_top,
+                  (s.feasible, *stab), pb.scale * s.energy, a_top=s.a_top, eps_top=s.eps_top,
                   extra={"gap_min_over_Delta": s.gap_min, "G_bot": s.G_bot, "G_top": s.G_top})
 
 
@@ -125,7 +136,7 @@ def full_contact_state(pb: Problem, un: Units, key: str, target: float, control:
     except ValueError:
         return None
     return _state(pb, un, "full-contact", control, "both", math.inf, math.pi, fc.P_star, fc.delta_over_Delta, 0.0,
-                  (True, True, True, True), a_top=math.inf, K=0.0,
+                  (True, True, True, True), pb.scale * fc.energy, a_top=math.inf, K=0.0,
                   extra={"tension_everywhere": fc.tension_everywhere})
 
 
@@ -139,7 +150,7 @@ def _full_contact_solver(pb: Problem, un: Units, key: str, target: float, contro
 def separated_state(pb: Problem, un: Units, delta_over_Delta: float, control: str) -> Equilibrium:
     """The free pin at approach delta (no contact, P = 0): stable under grip, neutral under load."""
     return _state(pb, un, "separated", control, "none", 0.0, 0.0, 0.0, delta_over_Delta, 2 + delta_over_Delta,
-                  (True, False, True, True), K=0.0)
+                  (True, False, True, True), 0.0, K=0.0)
 
 
 def _separated_solver(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:

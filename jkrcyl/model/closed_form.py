@@ -42,7 +42,7 @@ class ClosedForm(SinglePatch):
         p_k = 2 * math.pi / (m * s.dG_dp)              # (1/w) dG/dp = 2 pi/(m p_k) at k = m/pi
         return Slice(a=a, p=s.p, dp_da=s.dp_da, dn=s.delta_over_Delta, ddn_da=s.ddelta_da,
                      dw=s.delta_work_over_Delta, ddw_da=s.ddelta_work_da, h=s.h_pi_over_Delta,
-                     p_k=p_k, dn_k=s.ddelta_dp * p_k)
+                     p_k=p_k, dn_k=s.ddelta_dp * p_k, B=_k.bond_star(a, inv_theta=pb.inv_theta, m=m))
 
     def root(self, field, lo, hi, flo, fhi, target=0.0):
         pb = self.problem

@@ -27,7 +27,7 @@ class Collocation(SinglePatch):
                                  pole=self.a_crit)
         c = pb.work_shift
         return Slice(a=a, p=st["p"], dp_da=sl["dp_da"], dn=st["d"], ddn_da=sl["dd_da"], dw=st["d"] + c * st["p"],
-                     ddw_da=sl["dd_da"] + c * sl["dp_da"], h=st["h_pi"], p_k=st["p_k"], dn_k=st["d_k"])
+                     ddw_da=sl["dd_da"] + c * sl["dp_da"], h=st["h_pi"], p_k=st["p_k"], dn_k=st["d_k"], B=st["B"])
 
     def _one(self, field, a):
         """p, dn, dw or h at one contact parameter (one bordered solve, no slopes)."""

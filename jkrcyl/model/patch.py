@@ -28,6 +28,13 @@ class Slice(NamedTuple):
     h: np.ndarray
     p_k: np.ndarray
     dn_k: np.ndarray
+    B: np.ndarray
+
+    @property
+    def energy(self):
+        """Elastic energy [(1 + delta/Delta) p - B]/2 (units 4 pi Delta^2/beta*: the pressure's work on the rigid
+        overlap (5.1)); the total potential subtracts 2 m^2 eps (jkrcyl.analysis.forward)."""
+        return 0.5 * ((1 + self.dn) * self.p - self.B)
 
 
 class SinglePatch:

@@ -67,6 +67,7 @@ def trace(f, x0, t0, inside, clip, h0=0.02, h_min=1e-7, h_max=0.08, tol=1e-11, m
     """
     x = np.asarray(x0, dtype=float)
     t = _tangent(gradient(f, x), t0)
+    t0_unit = t.copy()
     pts, h, travelled = [x.copy()], h0, 0.0
     for _ in range(max_steps):
         y, ok, g_last = _correct(f, x, t, h, tol, inside)
@@ -84,7 +85,7 @@ def trace(f, x0, t0, inside, clip, h0=0.02, h_min=1e-7, h_max=0.08, tol=1e-11, m
                 pts.append(yb)
             return Path(np.array(pts), "boundary", label)
         travelled += np.linalg.norm(y - x)
-        if travelled > 4 * h and np.linalg.norm(y - pts[0]) < 0.6 * h and len(pts) > 4:
+        if _closes(pts[0], t0_unit, x, y, h, travelled):
             pts.append(pts[0].copy())
             return Path(np.array(pts), "loop")
         t_new = _tangent(g_last, t)             # gradient at the last Newton iterate (|y - iterate| <= tol)
@@ -98,6 +99,16 @@ def trace(f, x0, t0, inside, clip, h0=0.02, h_min=1e-7, h_max=0.08, tol=1e-11, m
         pts.append(x.copy())
         h = min(h * 1.5, h_max)
     return Path(np.array(pts), "steps")
+
+
+def _closes(start, t_start, x, y, h, travelled):
+    """The step x -> y closes a loop: after going some way round, it crosses the plane through the start point
+    normal to the start tangent, forwards, within a step of the start.  (Nearness alone is not enough: a large
+    step passing close by another part of the curve would cut a chord across the loop.)"""
+    if travelled <= 3 * h:
+        return False
+    before, after = (x - start) @ t_start, (y - start) @ t_start
+    return before < 0 <= after and np.linalg.norm(x - start) < 2 * h
 
 
 def _correct(f, x, t, h, tol, inside, maxit=8):

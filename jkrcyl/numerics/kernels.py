@@ -92,6 +92,15 @@ def gap_pi(a, *, Delta, beta, inv_theta, zeta):
 
 
 # --- normalised kernels (section 6: equilibria, atlas) ----------------------------------------------
+def bond_star(a, *, inv_theta, m):
+    """B of (4.5a) in the kernel scale, int nu dphi = B R beta*/(4 pi Delta) (Delta = beta* = R = 1), at the 1-D a:
+    with p it gives the elastic energy [(1 + delta/Delta) p - B]/2 of a state (jkrcyl.model.patch.Slice)."""
+    a = _array(a)
+    out = _empty(_load.LoadState, a.size)
+    _load.load_state_into(out, Delta=1.0, R=1.0, a=a, beta=1.0, inv_theta=inv_theta, zeta=4.0 * math.pi * m)
+    return out.B / (4 * math.pi)
+
+
 def star_m(a, *, inv_theta, m, gb):
     """Normalised equilibrium in the kernel's own scale (p = P beta*/(4 pi Delta), m = M vartheta; M_R* and
     P_R* for vartheta = inf) at the contact parameters a (1-D): a :data:`StarM` -- the emitted EquilibriumStar

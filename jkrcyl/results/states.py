@@ -28,7 +28,9 @@ class Equilibrium:
     approach (5.8); delta_work = delta + P/(8 pi G_I) [m] the work-conjugate approach; h_pi [m] the gap at
     phi = pi (5.10) (0 when the top is in contact); K [Pa m^1/2] the stress intensity at the bottom edge (3.4);
     P_star, delta_over_Delta, delta_work_over_Delta normalised (section 6); feasible: gap inequality h >= 0
-    outside the contact; stable_load, stable_grip, stable_grip_work; side: 'bottom', 'top', 'both' or 'none'.
+    outside the contact; stable_load, stable_grip, stable_grip_work; side: 'bottom', 'top', 'both' or 'none';
+    energy [J/m]: the total potential U - w 2 R (eps + eps_top) (elastic energy of the paper's approach delta, less
+    the work of adhesion over the contact), so that dE = P d(delta) along every equilibrium branch.
     """
 
     branch: str
@@ -51,6 +53,7 @@ class Equilibrium:
     side: str = "bottom"
     a_top: float = 0.0
     eps_top: float = 0.0
+    energy: float = 0.0
     extra: dict = field(default_factory=dict, compare=False)
 
     @property

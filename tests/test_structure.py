@@ -1,0 +1,138 @@
+"""Issue 18: one model core.  The library's import graph has no cycle, every module is at most 350 lines, and only
+the single-patch solver interface (jkrcyl.model.single_patch, with the engine it drives in jkrcyl/numerics and the
+definition in jkrcyl/materials.py) branches on alpha*.  Each check is shown to fail on a planted violation."""
+import ast
+import pathlib
+
+import pytest
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+LIBRARY = ROOT / "jkrcyl"
+MAX_LINES = 350
+# where alpha* may decide what happens: the solver factory, the engine, the materials' own definition
+ALPHA_ALLOWED = {"jkrcyl/model/single_patch.py", "jkrcyl/materials.py", "jkrcyl/model/problem.py"}   # + validation
+ALPHA_NAMES = {"alpha_ratio", "alpha_star", "ar", "closed_form", "ALPHA_TOLERANCE", "require_closed_form"}
+
+
+def _files(root=ROOT):
+    return sorted(p for p in (root / "jkrcyl").rglob("*.py") if "__pycache__" not in p.parts)
+
+
+def _module(path, root=ROOT):
+    parts = list(path.relative_to(root).with_suffix("").parts)
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def _imported(path, root=ROOT, modules=()):
+    """The jkrcyl modules a file imports (anywhere in it: lazy imports count), relative imports resolved;
+    ``from package import submodule`` is an import of the submodule (not of the package's __init__)."""
+    tree = ast.parse(path.read_text())
+    package = _module(path, root).split(".")
+    if path.name != "__init__.py":
+        package = package[:-1]
+    out = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            out |= {a.name for a in node.names}
+        elif isinstance(node, ast.ImportFrom):
+            base = package[: len(package) - node.level + 1] if node.level else []
+            mod = ".".join(base + ([node.module] if node.module else []))
+            subs = {f"{mod}.{a.name}" for a in node.names} & set(modules)
+            out |= subs if len(subs) == len(node.names) else subs | {mod}
+    return out
+
+
+def _graph(root=ROOT):
+    mods = {_module(p, root): p for p in _files(root)}
+    return {m: {n for n in _imported(p, root, mods) if n in mods and n != m} for m, p in mods.items()}
+
+
+def _cycle(graph):
+    """One import cycle as a list of modules, or None (depth-first search)."""
+    state, stack = {}, []
+
+    def visit(m):
+        state[m] = 1
+        stack.append(m)
+        for n in sorted(graph[m]):
+            if state.get(n) == 1:
+                return stack[stack.index(n):] + [n]
+            if n not in state:
+                found = visit(n)
+                if found:
+                    return found
+        state[m] = 2
+        stack.pop()
+        return None
+    for m in sorted(graph):
+        if m not in state:
+            found = visit(m)
+            if found:
+                return found
+    return None
+
+
+def test_no_import_cycle():
+    assert _cycle(_graph()) is None, " -> ".join(_cycle(_graph()))
+
+
+def test_every_module_is_short():
+    long = {p.relative_to(ROOT).as_posix(): n for p in _files()
+            if (n := len(p.read_text().splitlines())) > MAX_LINES}
+    assert not long, f"modules over {MAX_LINES} lines: {long}"
+
+
+def _alpha_branches(path):
+    """Lines where a condition (if, while, conditional expression, comprehension filter, assert) reads alpha*."""
+    tree = ast.parse(path.read_text())
+    tests = []
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.If, ast.While, ast.IfExp, ast.Assert)):
+            tests.append(node.test)
+        elif isinstance(node, ast.comprehension):
+            tests += node.ifs
+    hits = []
+    for t in tests:
+        names = {n.id for n in ast.walk(t) if isinstance(n, ast.Name)}
+        names |= {n.attr for n in ast.walk(t) if isinstance(n, ast.Attribute)}
+        if names & ALPHA_NAMES:
+            hits.append(t.lineno)
+    return hits
+
+
+def test_only_the_solver_interface_branches_on_alpha():
+    offenders = {}
+    for p in _files():
+        rel = p.relative_to(ROOT).as_posix()
+        if rel in ALPHA_ALLOWED or rel.startswith("jkrcyl/numerics/"):
+            continue
+        if hits := _alpha_branches(p):
+            offenders[rel] = hits
+    assert not offenders, f"branch on alpha* outside jkrcyl.model.single_patch (file: lines): {offenders}"
+
+
+def test_the_checks_see_planted_violations(tmp_path):
+    pkg = tmp_path / "jkrcyl"
+    (pkg / "sub").mkdir(parents=True)
+    (pkg / "__init__.py").write_text("")
+    (pkg / "sub" / "__init__.py").write_text("")
+    (pkg / "sub" / "one.py").write_text("from . import two\n")
+    (pkg / "sub" / "two.py").write_text("def f():\n    from .one import g\n")
+    assert _cycle(_graph(tmp_path)) == ["jkrcyl.sub.one", "jkrcyl.sub.two", "jkrcyl.sub.one"]
+    (pkg / "sub" / "two.py").write_text("x = 1\n")
+    assert _cycle(_graph(tmp_path)) is None
+    probe = pkg / "sub" / "three.py"
+    probe.write_text("def f(pb):\n    return 1 if pb.alpha_ratio == 0 else 2\n")
+    assert _alpha_branches(probe) == [2]
+    probe.write_text("def f(pb):\n    return pb.alpha_ratio * 2\n")
+    assert _alpha_branches(probe) == []
+    (pkg / "sub" / "four.py").write_text("from .. import sub\nfrom . import one\n")
+    g = _graph(tmp_path)
+    assert g["jkrcyl.sub.four"] == {"jkrcyl.sub", "jkrcyl.sub.one"}
+
+
+@pytest.mark.parametrize("name", ["jkrcyl.model.single_patch", "jkrcyl.analysis.path", "jkrcyl.results"])
+def test_the_graph_is_read(name):
+    """The graph sees the core's imports (a check that reads nothing would pass vacuously)."""
+    g = _graph()
+    assert name in g and g[name]
