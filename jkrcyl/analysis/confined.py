@@ -67,7 +67,7 @@ def confined_events(pb: Problem) -> ConfinedEvents:
         return ConfinedEvents(pb.M, pb.theta, "zip-full" if zip_full else "detachment", begin, s.P_star, nan,
                               fold_in_tension=tension, **common)
     e_on, P_on, _, _ = min(common["onsets"], key=lambda o: abs(o[0] - s.eps))   # the onset the walk met
-    outcome, _ = _two.descend(pb, P_on, e_on)
+    outcome, _ = _two.descend(pb, P_on, e_on, control="load")
     return ConfinedEvents(pb.M, pb.theta, _DESCENT[outcome], begin, nan, P_on, **common)
 
 

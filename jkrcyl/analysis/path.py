@@ -16,6 +16,7 @@ import math
 
 import numpy as np
 
+from ..model import two_patch as _two
 from ..model.problem import Problem
 from ..model.single_patch import SLOPE_OF, solver
 from ..model.stability import HELD
@@ -174,9 +175,29 @@ def land(pb: Problem, un: _fw.Units, s, event: str, control: str, value: float, 
     if event == "fold":
         grow = [x for x in cands if x.size > s.size and x.side in (s.side, "both")]
         return (min(grow, key=lambda x: x.size), "zip") if grow else (None, "zip")
-    key = (lambda x: abs(x.delta - s.delta)) if control == "load" else (lambda x: abs(x.P - s.P))
-    pool = [x for x in cands if x.side in ("both", _other(s.side))] or cands
-    return (min(pool, key=key), "top-contact") if pool else (None, "top-contact")
+    return _land_on_top_contact(pb, s, cands, control, target), "top-contact"
+
+
+def _land_on_top_contact(pb, s, cands, control, target):
+    """The gap at phi = pi closes (h(pi) = 0, the walk's 'gap'): a nascent top contact appears and the edges relax
+    at the held value (jkrcyl.model.two_patch.descend); the landing is the candidate where that relaxation ends
+    -- full contact, the patch on the other side (the bottom arc vanished), or the two-patch state nearest to
+    the end point."""
+    if s.side == "top":            # the mirror (P* -> -P*, approach -> -2 - approach): solve it at the bottom
+        mirrored = -target if control == "load" else -2.0 - target
+        outcome, end = _two.descend(pb, mirrored, s.eps, control=control)
+        end = end[::-1]
+        outcome = {"transfer": "single", "single": "transfer"}.get(outcome, outcome)
+    else:
+        outcome, end = _two.descend(pb, target, s.eps, control=control)
+    pools = {"full": [x for x in cands if x.branch == "full-contact"],
+             "transfer": [x for x in cands if x.side == _other(s.side)],
+             "single": [x for x in cands if x.side == s.side and x.size < s.size],
+             "two-patch": [x for x in cands if x.branch == "two-patch"]}
+    pool = pools[outcome] or [x for x in cands if x.side in ("both", _other(s.side))]
+    if not pool:
+        return None
+    return min(pool, key=lambda x: math.hypot(x.eps - end[0], x.eps_top - end[1]))
 
 
 def first_contact(pb: Problem, un: _fw.Units, control: str):

@@ -32,9 +32,7 @@ class Collocation(SinglePatch):
     def _one(self, field, a):
         """p, dn, dw or h at one contact parameter (one bordered solve, no slopes)."""
         pb = self.problem
-        eps = 2 * math.atan(a)
-        k = pb.edge.edge_coefficient(pb.m)
-        s, _ = _one.OneArc(eps, pb.theta, pb.gb, pb.alpha_ratio, _one.nodes(eps, pb.alpha_ratio)).state(k)
+        s = _one.arc_state(a, pb.edge.edge_coefficient(pb.m), pb.theta, pb.gb, pb.alpha_ratio)
         return {"p": s.p, "dn": s.d, "dw": s.d + pb.work_shift * s.p, "h": s.h_pi}[field]
 
     def value(self, field, a):
@@ -54,8 +52,7 @@ def receding_contact(theta, gb, ar, search=(0.05, 1e4)):
     1/p through a pole (p = 0) is not a root.  inf when none lies in the search range (beyond 1e4: a contact
     within 2e-4 rad of the full circle).  Independent of M and Delta."""
     def f(x, _):
-        eps = 2 * math.atan(x)
-        return 1.0 / _one.OneArc(eps, theta, gb, ar, _one.nodes(eps, ar)).state(0.0)[0].p
+        return 1.0 / _one.arc_state(x, 0.0, theta, gb, ar).p
     grid = np.geomspace(*search, 60)
     vals = np.array([f(x, ()) for x in grid])
     for i in np.nonzero((vals[:-1] > 0) & (vals[1:] <= 0))[0]:
@@ -92,7 +89,7 @@ class CollocationPhysical:
         keys = ("P", "B", "C", "c0", "c1", "r0", "K", "G_release", "delta", "h_pi")
         out = {k: np.empty(a.size) for k in keys}
         for i, ai in enumerate(a.tolist()):
-            _, s, _ = self._arc(ai)
+            s = _one.arc_state(ai, self.k, *self.kernel, self.clearance)
             P, B = 4 * math.pi * L / c.beta * s.p, f * s.B
             kN = f * s.k
             K = math.sqrt(2 * math.pi * c.R) * kN

@@ -187,26 +187,36 @@ DESCENT_START = 1e-7    # the nascent top arc of descend
 DESCENT_STEP = 0.02     # longest descent step [rad]
 
 
-def descend(pb: Problem, P_star: float, eps: float, eps_top: float = DESCENT_START, max_steps: int = 4000):
-    """Where slow relaxation at fixed load leads from the arcs (eps, eps_top): the edges move down the total
-    potential, d eps_i/dt ~ -(G_i - w) (equal edge mobilities; dPi*/d eps_i = 2 vartheta (pi^2 k_i |k_i| - M^2) at
-    the delta that carries the load, a compressive edge k < 0 counting as G > w... growing).  Returns (outcome,
-    (eps, eps_top)): 'full' (the arcs meet), 'transfer' (the bottom arc vanishes), 'single' (the top arc vanishes)
-    or 'two-patch' (a stationary point: a stable two-patch state)."""
+def _held_delta(pb, lin, control, value):
+    """delta/Delta of the fixed arcs with the held quantity at value (P*, delta/Delta or delta_work/Delta)."""
+    if control == "load":
+        return (value - lin.q0[0]) / lin.q1[0]
+    if control == "grip":
+        return value
+    c = pb.work_shift * pb.scale                       # delta_work/Delta = delta/Delta + c P*
+    return (value - c * lin.q0[0]) / (1 + c * lin.q1[0])
+
+
+def descend(pb: Problem, value: float, eps: float, eps_top: float = DESCENT_START, control: str = "load",
+            max_steps: int = 4000):
+    """Where slow relaxation with the held quantity at value (P*, delta/Delta or delta_work/Delta) leads from the
+    arcs (eps, eps_top): the edges move down the total potential, d eps_i/dt ~ -(G_i - w) (equal edge
+    mobilities; dPi*/d eps_i = 2 vartheta (pi^2 k_i |k_i| - M^2) at the approach the control fixes, a
+    compressive edge k < 0 counting as G > w... growing).  Returns (outcome, (eps, eps_top)): 'full' (the arcs
+    meet), 'transfer' (the bottom arc vanishes), 'single' (the top arc vanishes) or 'two-patch' (a stationary
+    point: a two-patch state stable under the control)."""
     x = np.array([eps, eps_top], dtype=float)
     h, g_old = DESCENT_STEP, None
     for _ in range(max_steps):
         lin = linear(pb, x[0], x[1])
-        d = (P_star - lin.q0[0]) / lin.q1[0]
-        k = lin.q0[2:4] + d * lin.q1[2:4]
+        k = lin.q0[2:4] + _held_delta(pb, lin, control, value) * lin.q1[2:4]
         g = -(math.pi ** 2 * k * np.abs(k) - pb.M ** 2)      # the descent direction of the potential
         turned = g_old is not None and g @ g_old < 0
         if turned:
             h /= 2                                           # overshot a stationary point
         if h < 1e-10 or np.linalg.norm(g) < 1e-12 * pb.M ** 2:
             return "two-patch", tuple(x)
-        step = min(h, 0.5 * min(x)) * g / np.linalg.norm(g)
-        x, g_old = x + step, g
+        x, g_old = x + min(h, 0.5 * min(x)) * g / np.linalg.norm(g), g
         if x.sum() >= math.pi - 0.02:
             return "full", tuple(x)
         if x[0] < DESCENT_TINY:

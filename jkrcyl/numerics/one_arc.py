@@ -23,6 +23,7 @@ from scipy.linalg.lapack import dgesv as _dgesv
 
 from . import arcs as _arcs
 from . import arcs_enrich as _en
+from . import one_arc_kernels as _ok
 
 #: Per arc: load p = int nu cos, B* = int nu, d = delta/L, h_pi = h(pi)/L, k (edge coefficient, = the target),
 #: C* = int nu (dx/dphi) dphi, and the fixed-arc derivatives p_k = dp/dk, d_k = dd/dk.
@@ -115,27 +116,39 @@ def nodes(eps, ar):
     return _arcs.nodes_for(eps, ar)
 
 
+def _engine(n, theta, gb, ar):
+    """The arguments of the numba kernels (numerics.one_arc_kernels) at n nodes: tables and kernel constants."""
+    enriched = ar != 0.0
+    _, _, xt, _, Lam, Sig, omega, _, LD0, SD0 = _arcs._tables(n, enriched)
+    sf, gf = _arcs._fine_grid()
+    k0, k1 = _arcs.Kernel(theta, gb, ar).k0, _arcs.Kernel(theta, gb, ar).k1
+    return (_arcs._nodes(n), _arcs._cheb_matrix(n), xt, LD0, SD0, Lam, Sig, omega, _G_END[:omega.shape[0]], sf, gf,
+            k0, k1, float(ar), _en.K_TRIG)
+
+
+def arc_state(a, k, theta, gb, ar, clearance=1.0):
+    """:data:`ArcState` at one contact parameter (no slopes; one kernel call)."""
+    eps = 2 * math.atan(a)
+    out = np.empty(_ok.N_OUT)
+    _ok.bordered_state(eps, k, clearance, *_engine(nodes(eps, ar), theta, gb, ar), out)
+    return ArcState(*out)
+
+
 def arc_states(a, k, theta, gb, ar, clearance=1.0, pole=math.inf, rel_step=5e-6):
     """ArcStates at the contact parameters a (1-D) and slopes d/da of p and d, per point.
 
     Slopes are central differences of the PHYSICAL state (bordered solves at a +- h with the same node count):
     smooth in a where the unit cases are not (the det A poles).  The step h = rel_step min(a, |a - pole|) scales
     with the distance to the nearest singularity (a = 0, the receding-contact pole a_crit), so truncation
-    ~ rel_step^2 and rounding ~ 1e-16/rel_step stay relative errors there too.  Returns (states: dict of arrays of ArcState fields, slopes: dict of
-    arrays dp_da, dd_da, dh_da)."""
+    ~ rel_step^2 and rounding ~ 1e-16/rel_step stay relative errors there too.  Returns (states: dict of arrays
+    of ArcState fields, slopes: dict of arrays dp_da, dd_da); the points are grouped by node count, each group
+    one numba call (numerics.one_arc_kernels.arc_states)."""
     a = np.atleast_1d(np.asarray(a, dtype=float))
-    keys = ArcState._fields
-    out = {f: np.empty(a.size) for f in keys}
-    slopes = {f: np.empty(a.size) for f in ("dp_da", "dd_da")}
-    for i, ai in enumerate(a.tolist()):
-        eps = 2 * math.atan(ai)
-        n = nodes(eps, ar)
-        s, _ = OneArc(eps, theta, gb, ar, n).state(k, clearance)
-        for f in keys:
-            out[f][i] = getattr(s, f)
-        h = rel_step * min(ai, abs(ai - pole))
-        sp, _ = OneArc(2 * math.atan(ai + h), theta, gb, ar, n).state(k, clearance)
-        sm, _ = OneArc(2 * math.atan(ai - h), theta, gb, ar, n).state(k, clearance)
-        slopes["dp_da"][i] = (sp.p - sm.p) / (2 * h)
-        slopes["dd_da"][i] = (sp.d - sm.d) / (2 * h)
-    return out, slopes
+    n_of = np.array([nodes(2 * math.atan(x), ar) for x in a.tolist()], dtype=int)
+    out, sl = np.empty((a.size, _ok.N_OUT)), np.empty((a.size, 2))
+    for n in np.unique(n_of):
+        sel = n_of == n
+        out[sel], sl[sel] = _ok.arc_states(np.ascontiguousarray(a[sel]), k, clearance, pole, rel_step,
+                                           *_engine(int(n), theta, gb, ar))
+    states = {f: out[:, i] for i, f in enumerate(ArcState._fields)}
+    return states, {"dp_da": sl[:, 0], "dd_da": sl[:, 1]}
