@@ -46,11 +46,11 @@ def finite_scalar(name, value, low=None, high=None, low_open=False, allow_inf=Fa
         lo_txt = "-inf" if low is None else f"{low:g}"
         hi_txt = "inf" if high is None else f"{high:g}"
         bracket = "(" if low_open or low is None else "["
-        raise ValueError(f"{name} must be in {bracket}{lo_txt}, {hi_txt}], got {v:g}")
+        raise ValueError(f"{name} must be in {bracket}{lo_txt}, {hi_txt}], got {v!r}")
     if math.isfinite(v) and v != 0 and not tiny <= abs(v) <= huge:
         zero_ok = low is None or low < 0 or (low == 0 and not low_open)
         raise ValueError(f"{name} must be {'0 or ' if zero_ok else ''}of magnitude in [{tiny:g}, {huge:g}] "
-                         f"(the supported domain), got {v:g}")
+                         f"(the supported domain), got {v!r}")
     return v
 
 
@@ -58,7 +58,7 @@ def count(name, value, low, high=N_MAX):
     """An integer in [low, high] (floats with integral values accepted)."""
     v = finite_scalar(name, value, low=low, high=high)
     if v != int(v):
-        raise ValueError(f"{name} must be an integer, got {v:g}")
+        raise ValueError(f"{name} must be an integer, got {v!r}")
     return int(v)
 
 
@@ -82,7 +82,7 @@ def angle(phi):
     arr = real_array("phi", phi)
     bad = ~np.isfinite(arr) | (np.abs(arr) > HUGE)
     if bad.any():
-        raise ValueError(f"phi must be finite, of magnitude <= {HUGE:g} [rad], got {arr[bad].flat[0]:g}")
+        raise ValueError(f"phi must be finite, of magnitude <= {HUGE:g} [rad], got {float(arr[bad].flat[0])!r}")
     return arr
 
 
@@ -91,11 +91,11 @@ def contact_parameter(a):
     arr = real_array("a", a)
     bad = ~np.isfinite(arr) | (arr <= 0)
     if bad.any():
-        raise ValueError(f"a must be in (0, inf) (a = tan(eps/2), 0 < eps < pi), got {arr[bad].flat[0]:g}")
+        raise ValueError(f"a must be in (0, inf) (a = tan(eps/2), 0 < eps < pi), got {float(arr[bad].flat[0])!r}")
     out = (arr < A_MIN) | (arr > A_MAX)
     if out.any():
         raise ValueError(f"a must be in [{A_MIN:g}, {A_MAX:g}] (the supported domain of a = tan(eps/2)), "
-                         f"got {arr[out].flat[0]:g}")
+                         f"got {float(arr[out].flat[0])!r}")
     return arr
 
 
@@ -103,5 +103,5 @@ def theta(value):
     """vartheta = 1/2 + G (kappa_I + 1)/(2 G_I (1 + kappa)) in [1/2, THETA_MAX]; inf is the rigid cradle."""
     v = finite_scalar("theta", value, low=0.5, allow_inf=True, huge=math.inf)
     if math.isfinite(v) and v > THETA_MAX:
-        raise ValueError(f"theta must be in [0.5, {THETA_MAX:g}] or inf (the supported domain), got {v:g}")
+        raise ValueError(f"theta must be in [0.5, {THETA_MAX:g}] or inf (the supported domain), got {v!r}")
     return v

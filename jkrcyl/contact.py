@@ -37,7 +37,7 @@ class Contact:
         object.__setattr__(self, "Delta", finite_scalar("Delta", self.Delta, low=0.0))
         if self.Delta >= self.R:
             raise ValueError(f"Delta must be in [0, R) = [0, {self.R:g}) (the pin radius R_D = R - Delta must be "
-                             f"> 0), got {self.Delta:g}")
+                             f"> 0), got {self.Delta!r}")
         object.__setattr__(self, "w", finite_scalar("w", self.w, low=0.0))
         if not isinstance(self.materials, Materials):
             raise ValueError(f"materials must be a jkrcyl.Materials, got {type(self.materials).__name__}")

@@ -51,7 +51,10 @@ class Materials:
             raise ValueError("G and G_I are both inf: at least one body must be deformable")
         if not (math.isfinite(self.beta) and self.beta > 0 and (self.theta <= THETA_MAX or math.isinf(self.G))):
             raise ValueError(f"G, G_I: beta* must be finite and vartheta <= {THETA_MAX:g} or inf (supported domain), "
-                             f"got G = {self.G:g}, G_I = {self.G_I:g}")
+                             f"got G = {self.G!r}, G_I = {self.G_I!r}")
+        if not abs(self.alpha_ratio) < 1.0:     # |alpha*| < beta* in exact arithmetic; rounds to 1 for huge kappa
+            raise ValueError(f"kappa, kappa_I: alpha*/beta* must be in (-1, 1), got {self.alpha_ratio!r} (kappa = "
+                             f"{self.kappa!r}, kappa_I = {self.kappa_I!r}: too far apart for double precision)")
 
     @classmethod
     def from_young(cls, E: float, nu: float, E_I: float, nu_I: float) -> "Materials":

@@ -70,7 +70,7 @@ def curve(pb: Problem, regime: str = "sub-critical", n: int = 2000, a=None) -> C
         a = grid(pb, regime, n, a_max=RUBBERY_A_MAX if math.isinf(solver(pb).a_crit) else None)
         if a.size < 2:
             raise ValueError(f"theta: the {regime} branch lies beyond a = {A_MAX:g} (the supported domain of a) "
-                             f"for theta = {pb.theta:g}")
+                             f"for theta = {pb.theta!r}")
     else:
         a = on_branch(pb, regime, a)
     return _curve(pb, regime, np.ascontiguousarray(a))
