@@ -136,3 +136,14 @@ def test_the_graph_is_read(name):
     """The graph sees the core's imports (a check that reads nothing would pass vacuously)."""
     g = _graph()
     assert name in g and g[name]
+
+
+def test_the_derivation_never_imports_the_test_reference():
+    """derive/ types the prints it compares with; reference/ is the tests' own typing (two independent copies)."""
+    offenders = []
+    for p in sorted((ROOT / "derive").glob("*.py")):
+        names = _imported(p) | {a.name for n in ast.walk(ast.parse(p.read_text())) if isinstance(n, ast.Import)
+                                for a in n.names}
+        if any(n == "reference" or n.startswith("reference.") for n in names):
+            offenders.append(p.name)
+    assert not offenders, offenders
