@@ -112,5 +112,24 @@ def test_roots_toolkit_python_and_numba_agree():
     py = roots.brent(lambda x, args: x * x - args[0], 0.0, 2.0, (2.0,))
     nb = roots.brent_solver(f)(0.0, 2.0, -2.0, 2.0, (2.0,))
     assert py == nb and abs(py - math.sqrt(2)) <= 2 * np.spacing(math.sqrt(2))
-    assert roots.grid_roots(np.array([-1.0, 1.0, -1.0]), np.array([0.0, 1.0, 2.0]),
-                            lambda lo, hi, flo, fhi: 0.5 * (lo + hi)) == [(0.5, 1), (1.5, -1)]
+    assert roots.roots_on_grid(np.array([-1.0, 1.0, -1.0]), np.array([0.0, 1.0, 2.0]),
+                               lambda lo, hi, flo, fhi: 0.5 * (lo + hi)) == [(0.5, 1), (1.5, -1)]
+
+
+def test_brent_rejects_a_sign_change_through_a_pole():
+    """The toolkit's bracketing: 1/x changes sign across x = 0 without a root; |f| grows as the bracket shrinks,
+    so brent_or_pole (and the numba pair) report None; a genuine root is kept."""
+    from numba import njit
+
+    from jkrcyl.numerics import roots
+
+    @njit
+    def inv(x, args):
+        return 1.0 / (x - args[0])
+
+    pole = math.pi / 10                  # not a double: the bracket closes on adjacent doubles around it
+    assert roots.brent_or_pole(lambda x, a: 1.0 / (x - a[0]), -1.0, 2.0, (pole,)) is None
+    assert roots.brent_or_pole_nb(roots.brent_solver(inv), inv, -1.0, 2.0, -1 / (1 + pole), 1 / (2 - pole),
+                                  (pole,)) is None
+    assert roots.brent_or_pole(lambda x, a: x - a[0], -1.0, 2.0, (0.3,)) == pytest.approx(0.3, abs=1e-15)
+    assert roots.roots_on_grid(np.array([1.0, -1.0]), np.array([0.0, 1.0]), lambda *b: None) == []

@@ -179,16 +179,3 @@ def secant(f, x0, x1, lo, hi, tol=1e-13, maxit=40):
     else:
         raise ValueError(f"secant: no convergence near {x1!r}")
     return x1, f1
-
-
-def grid_roots(values, grid, solve):
-    """Sign changes of ``values`` (f on the increasing ``grid``) refined by ``solve(lo, hi, flo, fhi)``.
-
-    Returns ``[(root, +1 or -1), ...]``: the sign is that of f right of the root (+1: f rises).
-    """
-    v = np.asarray(values, dtype=float)
-    out = []
-    for i in np.nonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0)[0]:
-        r = solve(float(grid[i]), float(grid[i + 1]), float(v[i]), float(v[i + 1]))
-        out.append((r, 1 if v[i + 1] > 0 else -1))
-    return out
