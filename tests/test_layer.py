@@ -127,7 +127,7 @@ def test_brent_rejects_a_sign_change_through_a_pole():
     def inv(x, args):
         return 1.0 / (x - args[0])
 
-    pole = math.pi / 10                  # not a double: the bracket closes on adjacent doubles around it
+    pole = math.pi / 10
     assert roots.brent_or_pole(lambda x, a: 1.0 / (x - a[0]), -1.0, 2.0, (pole,)) is None
     assert roots.brent_or_pole_nb(roots.brent_solver(inv), inv, -1.0, 2.0, -1 / (1 + pole), 1 / (2 - pole),
                                   (pole,)) is None

@@ -126,8 +126,11 @@ def brent_or_pole(f, lo, hi, args=(), flo=None, fhi=None):
     """:func:`brent`, but None where the sign change is a pole of f (:func:`is_pole`)."""
     flo = f(lo, args) if flo is None else flo
     fhi = f(hi, args) if fhi is None else fhi
-    x = brent(f, lo, hi, args, flo, fhi)
-    return None if is_pole(f(x, args), flo, fhi) else x
+    try:
+        x = brent(f, lo, hi, args, flo, fhi)
+        return None if is_pole(f(x, args), flo, fhi) else x
+    except ZeroDivisionError:                  # the bracket closed exactly on the pole
+        return None
 
 
 def brent_or_pole_nb(solve, f, lo, hi, flo, fhi, args):
