@@ -139,8 +139,11 @@ def brent_or_pole_nb(solve, f, lo, hi, flo, fhi, args):
         return lo
     if fhi == 0.0:
         return hi
-    x = solve(float(lo), float(hi), float(flo), float(fhi), args)
-    return None if is_pole(f(x, args), flo, fhi) else float(x)
+    try:
+        x = solve(float(lo), float(hi), float(flo), float(fhi), args)
+        return None if is_pole(f(x, args), flo, fhi) else float(x)
+    except ZeroDivisionError:                  # the bracket closed exactly on the pole
+        return None
 
 
 def sign_changes(values):
