@@ -35,6 +35,38 @@ def _ell3(t):
     return _ell(t) - 2 * math.log(abs(t - TWO_PI)) - 2 * math.log(abs(t + TWO_PI))
 
 
+# log(sin y / y) = sum_k LOGSINC[k] y^(2 k + 2) (Bernoulli numbers; sympy: series(log(sin(y)/y), y, 0, 26)).
+# Used for |y| < SERIES_Y, where the 12 terms leave < 1e-20 (the 13th is 9.1e-15 (1/4)^13).
+LOGSINC = np.array([-1 / 6, -1 / 180, -1 / 2835, -1 / 37800, -1 / 467775, -691 / 3831077250, -2 / 127702575,
+                    -3617 / 2605132530000, -43867 / 350813659321125, -174611 / 15313294652906250,
+                    -155366 / 147926426347074375, -236364091 / 2423034863565078262500])
+SERIES_Y = 0.5
+
+
+@njit(cache=True, inline="always")
+def _ell_half(y, sin_y):
+    """_ell(t) = 2 log|sin(y)/y| at y = t/2: the series for |y| < SERIES_Y (no log), else from sin_y (a sine
+    by angle addition: absolute error ~3e-16, relative <= 7e-16 for |sin y| >= sin SERIES_Y)."""
+    if abs(y) < SERIES_Y:
+        z = y * y
+        acc = LOGSINC[11]
+        for q in range(10, -1, -1):
+            acc = acc * z + LOGSINC[q]
+        return 2 * z * acc
+    return 2 * math.log(abs(sin_y / y))
+
+
+@njit(cache=True)
+def _arc_trig(e, s, out):
+    """out[0..3, k] = cos, sin of e s_k and of e s_k / 2: the column angles, for angle addition."""
+    for k in range(s.size):
+        a = e * s[k]
+        out[0, k] = math.cos(a)
+        out[1, k] = math.sin(a)
+        out[2, k] = math.cos(0.5 * a)
+        out[3, k] = math.sin(0.5 * a)
+
+
 @njit(cache=True, inline="always")
 def _wrap(y):
     """np.angle(np.exp(1j y))."""
@@ -256,11 +288,13 @@ def assemble(ac, ae, s, D, k0, k1, ar, xt, LD0, SD0, Lam, Sig, omega, gcs, gss, 
             cp = math.cos(ac[ir]) * math.cos(ae[ir] * xt[p])
             rhs[i, 0] = -(1 - cp)
             rhs[i, 1] = cp
+    trig = np.empty((4, n))
     for ia in range(na):
         c, e = ac[ia], ae[ia]
         loge = math.log(e)
         images = 2 * PI / e
         images_on = e > 1.0        # every arc has its own rows here
+        _arc_trig(e, s, trig)
         for i in range(N):
             ir = i // npt
             p = i - ir * npt
@@ -295,21 +329,24 @@ def assemble(ac, ae, s, D, k0, k1, ar, xt, LD0, SD0, Lam, Sig, omega, gcs, gss, 
                     _vecmat(Sg, D, SD, False)
             for j in range(m):
                 acc[j] = 0.0
+            # t = d - e s_k: cos t, sin t and sin(t/2) by angle addition (one log per entry at most)
+            cd, sd = math.cos(d), math.sin(d)
+            cd2, sd2 = math.cos(0.5 * d), math.sin(0.5 * d)
             for k in range(n):
                 t = d - e * s[k]
-                ct, st = math.cos(t), math.sin(t)
-                el = _ell(t)
+                ct = cd * trig[0, k] + sd * trig[1, k]
+                st = sd * trig[0, k] - cd * trig[1, k]
+                el = _ell_half(0.5 * t, sd2 * trig[2, k] - cd2 * trig[3, k])
                 if images_on:
-                    smooth = ct * (6 * loge + (el - 2 * math.log(abs(t - TWO_PI)) - 2 * math.log(abs(t + TWO_PI)))) \
-                        + k1 * ct + k0
+                    smooth = ct * (6 * loge + (el - 2 * math.log(abs((t - TWO_PI) * (t + TWO_PI))))) + k1 * ct + k0
                 else:
                     smooth = ct * (2 * loge + el) + k1 * ct + k0
                 A[i, ia * n + k] = _operator_entry(smooth, t, ct, st, LD[k], SD[k], kink, ar, n)
                 if m:
                     if same:
                         r = ct * (2 * loge + el) + k1 * ct + k0 - ar * t * st
-                    else:
-                        r = ct * math.log(2 - 2 * ct) + k1 * ct + k0 + ar * (PI * _sign(t) * st - t * st)
+                    else:   # log(2 - 2 cos t) = log(t^2) + _ell(t), without the cancellation near t = 0, 2 pi
+                        r = ct * (el + 2 * math.log(abs(t))) + k1 * ct + k0 + ar * (PI * _sign(t) * st - t * st)
                     for j in range(m):
                         acc[j] += r * omega[j, k]
             if m:
