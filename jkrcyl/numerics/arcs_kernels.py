@@ -222,9 +222,19 @@ def enrichment(centres, offsets, ac, ae, s, k0, k1, ar, table, Lam, Sig, omega, 
     nt = n + m
     reg = np.empty(n)
     acc = np.empty(m)
+    trig = np.empty((4, nf))
     for ia in range(na):
         c, e = ac[ia], ae[ia]
         loge = math.log(e)
+        # several points near this arc: cos/sin of the fine-grid angles once, then angle addition per point
+        near = 0
+        if not table:
+            for i in range(npt):
+                di = offsets[i] if centres[i] == c else _wrap(centres[i] - c) + offsets[i]
+                if abs(di / e) < NEAR_ARC:
+                    near += 1
+        if near > 1:
+            _arc_trig(e, sfine, trig)
         for i in range(npt):
             if centres[i] == c:
                 di = offsets[i]
@@ -246,8 +256,18 @@ def enrichment(centres, offsets, ac, ae, s, k0, k1, ar, table, Lam, Sig, omega, 
             elif (not table) and abs(di / e) < NEAR_ARC:
                 for j in range(m):
                     acc[j] = 0.0
+                cd, sd = math.cos(di), math.sin(di)
+                cd2, sd2 = math.cos(0.5 * di), math.sin(0.5 * di)
                 for q in range(nf):
-                    kf = _full(di - e * sfine[q], k0, k1, ar) * (PI / nf)
+                    t = di - e * sfine[q]
+                    if near > 1:     # _full(t) with log(2 - 2 cos t) = 2 log|2 sin(t/2)|: one log
+                        ct = cd * trig[0, q] + sd * trig[1, q]
+                        st = sd * trig[0, q] - cd * trig[1, q]
+                        s2 = sd2 * trig[2, q] - cd2 * trig[3, q]
+                        f = 2 * ct * math.log(abs(2 * s2)) + k1 * ct + k0 + ar * (PI * _sign(t) * st - t * st)
+                    else:
+                        f = _full(t, k0, k1, ar)
+                    kf = f * (PI / nf)
                     for j in range(m):
                         acc[j] += kf * gfine[j, q]
                 for j in range(m):
