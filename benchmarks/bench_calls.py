@@ -1,6 +1,7 @@
 """Benchmark (not a test): wall time of every README call, cold and warm (issue 18, "Speed").
 
 Run: python benchmarks/bench_calls.py [--pairs pin steel] [--calls state curve ...] [--repeats 3]
+                                      [--baseline DIR]    (DIR: another checkout, timed in turn)
 
 For each pair and call, ``--repeats`` fresh Python processes (``python bench_calls.py --one PAIR CALL``) each
 import jkrcyl (numba's on-disk cache filled by a warm-up process first), build the Contact, then time
@@ -62,32 +63,49 @@ def _call(contact, load, name):
 
 
 def _timed(fn):
-    t = time.perf_counter()
+    """(wall, cpu) seconds of fn() and the exception's type name if it raised."""
+    t, c = time.perf_counter(), time.process_time()
     try:
         fn()
         err = None
     except Exception as exc:            # timed to the exception: a crash is a result too (issue 18, item 5)
         err = type(exc).__name__
-    return time.perf_counter() - t, err
+    return time.perf_counter() - t, time.process_time() - c, err
 
 
 def one(pair, name):
     """In this (fresh) process: cold and warm time of one call; prints one JSON line."""
     t0 = time.perf_counter()
+    import jkrcyl  # noqa: F401  (timed apart: the import is the same for every call)
+    t1 = time.perf_counter()
     contact, load = _contact(pair)
-    cold, err = _timed(lambda: _call(contact, load, name))
-    warm, err2 = _timed(lambda: _call(contact, load, name))
-    print(json.dumps({"cold": cold, "warm": warm, "total": time.perf_counter() - T_START,
-                      "import": t0 - T_START, "error": err or err2}))
+    cold, cold_cpu, err = _timed(lambda: _call(contact, load, name))
+    warm, warm_cpu, err2 = _timed(lambda: _call(contact, load, name))
+    print(json.dumps({"cold": cold, "warm": warm, "cold_cpu": cold_cpu, "warm_cpu": warm_cpu,
+                      "total": time.perf_counter() - t0, "import": t1 - t0, "error": err or err2}))
 
 
-def _fresh(pair, name):
+def _fresh(pair, name, tree=None):
+    """One fresh process; tree: another checkout of the project to time instead (put first on sys.path)."""
     env = dict(os.environ, PYTHONHASHSEED="0")
-    run = subprocess.run([sys.executable, __file__, "--one", pair, name], capture_output=True, text=True,
-                         env=env, timeout=1800)
+    if tree:
+        env["PYTHONPATH"] = tree
+    run = subprocess.run([sys.executable, os.path.abspath(__file__), "--one", pair, name], capture_output=True,
+                         text=True, env=env, timeout=1800, cwd=tree or None)
     if run.returncode != 0:
         raise RuntimeError(run.stderr[-2000:])
     return json.loads(run.stdout.strip().splitlines()[-1])
+
+
+def _medians(runs):
+    med = {k: statistics.median(r[k] for r in runs) for k in ("cold", "warm", "cold_cpu", "warm_cpu", "total")}
+    med["note"] = ", ".join(sorted({r["error"] for r in runs if r["error"]}))
+    return med
+
+
+def _row(label, m):
+    return (f"{label:26s} {m['cold']:8.3f} {m['warm']:8.3f} {m['cold_cpu']:8.3f} {m['warm_cpu']:8.3f} "
+            f"{m['total']:8.3f}  {m['note']}")
 
 
 def main():
@@ -95,25 +113,31 @@ def main():
     ap.add_argument("--pairs", nargs="+", default=list(PAIRS), choices=PAIRS)
     ap.add_argument("--calls", nargs="+", default=list(CALLS), choices=CALLS)
     ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--baseline", metavar="DIR", help="another checkout (e.g. of main, with jkrcyl/generated "
+                    "linking to its generated/) timed in turn with this one: before/after under the same load")
     ap.add_argument("--one", nargs=2, metavar=("PAIR", "CALL"), help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.one:
         return one(*args.one)
-    for pair in args.pairs:                    # fill numba's on-disk cache (and compile) before timing
-        _fresh(pair, "state")
-    print(f"# median of {args.repeats} fresh processes, seconds; cold = first call after import, warm = repeat")
-    print(f"{'pair':6s} {'call':20s} {'cold':>9s} {'warm':>9s} {'process':>9s}  note")
+    trees = [None] + ([args.baseline] if args.baseline else [])
+    for tree in trees:                         # fill numba's on-disk cache (and compile) before timing
+        for pair in args.pairs:
+            _fresh(pair, "state", tree)
+    print(f"# median of {args.repeats} fresh processes, seconds; cold = first call after import, warm = the "
+          f"same call again; cpu = process time; process = import + both calls")
+    print(f"{'pair call':26s} {'cold':>8s} {'warm':>8s} {'cold cpu':>8s} {'warm cpu':>8s} {'process':>8s}")
     for pair in args.pairs:
         for name in args.calls:
-            runs = [_fresh(pair, name) for _ in range(args.repeats)]
-            med = {k: statistics.median(r[k] for r in runs) for k in ("cold", "warm", "total")}
-            note = ", ".join(sorted({r["error"] for r in runs if r["error"]}))
-            print(f"{pair:6s} {name:20s} {med['cold']:9.3f} {med['warm']:9.3f} {med['total']:9.3f}  {note}",
-                  flush=True)
+            runs = {tree: [] for tree in trees}
+            for _ in range(args.repeats):     # in turn: a change in the machine's load hits both alike
+                for tree in trees:
+                    runs[tree].append(_fresh(pair, name, tree))
+            print(_row(f"{pair} {name}", _medians(runs[None])), flush=True)
+            if args.baseline:
+                print(_row("  baseline", _medians(runs[args.baseline])), flush=True)
     print("goals: every README call <= 1 s warm; first alpha* != 0 answer in a fresh process <= 3 s; "
           "two_patch / confined_events <= 5 s")
 
 
-T_START = time.perf_counter()
 if __name__ == "__main__":
     main()
