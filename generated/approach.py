@@ -13,7 +13,7 @@ Approach = namedtuple("Approach", ["delta", "delta_over_Delta"])
 ApproachParts = namedtuple("ApproachParts", ["d_Delta", "d_zeta"])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def approach(Delta, a, beta, inv_G_I, inv_theta, zeta):
     """
     Approach delta (5.3)/(5.8) [m] at contact parameter a = tan(eps/2), and delta/Delta.
@@ -42,7 +42,7 @@ def approach(Delta, a, beta, inv_G_I, inv_theta, zeta):
     return Approach(delta, delta_over_Delta)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def approach_into(out, Delta, a, beta, inv_G_I, inv_theta, zeta):
     """
     approach at every a[i], into out (a Approach of 1-D arrays of the same length).
@@ -55,7 +55,7 @@ def approach_into(out, Delta, a, beta, inv_G_I, inv_theta, zeta):
         delta_over_Delta[i] = r.delta_over_Delta
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def approach_parts(a, beta, inv_G_I, inv_theta):
     """
     delta = Delta * d_Delta + zeta * d_zeta: d_Delta [-], d_zeta [m/(N/m^(1/2))].

@@ -15,7 +15,7 @@ EquilibriumStar = namedtuple("EquilibriumStar", ["p", "dp_da", "delta_over_Delta
                                                  "ddelta_dp"])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def load_slopes(Delta, a, beta, inv_G_I, inv_theta, zeta):
     """
     dP/da [N/m] and d delta/da [m] along the equilibrium curve (sympy derivatives of (4.4)
@@ -70,7 +70,7 @@ def load_slopes(Delta, a, beta, inv_G_I, inv_theta, zeta):
     return LoadSlopes(dP_da, ddelta_da)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def equilibrium_star(a, gb, inv_theta, m):
     """
     Dimensionless equilibrium at contact parameter a: p = P beta*/(4 pi Delta) (= vartheta P*,
@@ -144,7 +144,7 @@ def equilibrium_star(a, gb, inv_theta, m):
                            ddelta_work_da, dG_dp, ddelta_dp)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def equilibrium_star_into(out, a, gb, inv_theta, m):
     """
     equilibrium_star at every a[i], into out (a EquilibriumStar of 1-D arrays of the same length).

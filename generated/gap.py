@@ -11,7 +11,7 @@ from numba import njit
 GapMin = namedtuple("GapMin", ["h_min", "phi_min"])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def gap_pi(Delta, a, beta, inv_theta, zeta):
     """
     Gap at phi = pi (5.10) in closed form [m]: h(pi) = -2 E c0 + c1 (arcsinh(1/a) - 1/E).
@@ -39,7 +39,7 @@ def gap_pi(Delta, a, beta, inv_theta, zeta):
     return h_pi
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def gap_pi_into(out, Delta, a, beta, inv_theta, zeta):
     """
     gap_pi at every a[i], into out (a 1-D array of the same length).
@@ -48,7 +48,7 @@ def gap_pi_into(out, Delta, a, beta, inv_theta, zeta):
         out[i] = gap_pi(Delta, a[i], beta, inv_theta, zeta)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def gap(Delta, a, beta, inv_theta, phi, zeta):
     """
     Gap h(phi) of (5.9) [m] at any angle phi [rad] (periodic, even); 0 inside the contact.
@@ -111,7 +111,7 @@ def gap(Delta, a, beta, inv_theta, phi, zeta):
     return h
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def gap_into(out, Delta, a, beta, inv_theta, phi, zeta):
     """
     gap at every a, phi[i], into out (a 1-D array of the same length).
@@ -120,7 +120,7 @@ def gap_into(out, Delta, a, beta, inv_theta, phi, zeta):
         out[i] = gap(Delta, a[i], beta, inv_theta, phi[i], zeta)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def gap_min(Delta, a, beta, inv_theta, zeta):
     """
     Minimum of the gap over the exterior arc eps <= |phi| <= pi [m] and where it occurs [rad]:

@@ -11,7 +11,7 @@ from numba import njit
 KernelConstants = namedtuple("KernelConstants", ["k0", "k1", "k1_work", "ka"])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def kernel_constants(ar, gb, inv_theta):
     """
     Constants of the normalised kernel K(t) = cos t log(2 - 2 cos t) + k1 cos t + k0
@@ -26,7 +26,7 @@ def kernel_constants(ar, gb, inv_theta):
     return KernelConstants(k0, k1, k1_work, ka)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def approach_work(P, delta, inv_G_I):
     """
     Work-conjugate approach delta_work = delta + P/(8 pi G_I) [m] (derive/green.py).
@@ -36,7 +36,7 @@ def approach_work(P, delta, inv_G_I):
     return delta_work
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def approach_work_into(out, P, delta, inv_G_I):
     """
     approach_work at every P, delta[i], into out (a 1-D array of the same length).
@@ -45,7 +45,7 @@ def approach_work_into(out, P, delta, inv_G_I):
         out[i] = approach_work(P[i], delta[i], inv_G_I)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def approach_work_star(delta_over_Delta, gb, p):
     """
     Normalised work-conjugate approach delta_work/Delta = delta/Delta + (gb/2) p (derive/green.py):
@@ -55,7 +55,7 @@ def approach_work_star(delta_over_Delta, gb, p):
     return delta_work_over_Delta
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def approach_work_star_into(out, delta_over_Delta, gb, p):
     """
     approach_work_star at every delta_over_Delta, p[i], into out (a 1-D array of the same length).

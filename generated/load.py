@@ -15,7 +15,7 @@ Pressure = namedtuple("Pressure", ["N_bounded", "N_unbounded"])
 StressIntensity = namedtuple("StressIntensity", ["K", "G_release"])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def load_state(Delta, R, a, beta, inv_theta, zeta):
     """
     Equilibrium at contact parameter a = tan(eps/2): load P (4.4) [N/m], B = int N dphi (4.5a)
@@ -52,7 +52,7 @@ def load_state(Delta, R, a, beta, inv_theta, zeta):
     return LoadState(P, B, C, c0, c1, r0)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def load_state_into(out, Delta, R, a, beta, inv_theta, zeta):
     """
     load_state at every a[i], into out (a LoadState of 1-D arrays of the same length).
@@ -73,7 +73,7 @@ def load_state_into(out, Delta, R, a, beta, inv_theta, zeta):
         r0[i] = r.r0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def normalised_load(M, a, theta):
     """
     P* = P beta*/(4 pi Delta vartheta) of section 6 as a function of a, M and vartheta.
@@ -85,7 +85,7 @@ def normalised_load(M, a, theta):
     return P_star
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def pressure(Delta, R, a, beta, inv_theta, phi, zeta):
     """
     Contact pressure N(phi) of (5.4) [Pa] for |phi| < eps, split into the bounded part and the
@@ -110,7 +110,7 @@ def pressure(Delta, R, a, beta, inv_theta, phi, zeta):
     return Pressure(N_bounded, N_unbounded)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def pressure_into(out, Delta, R, a, beta, inv_theta, phi, zeta):
     """
     pressure at every phi[i], into out (a Pressure of 1-D arrays of the same length).
@@ -123,7 +123,7 @@ def pressure_into(out, Delta, R, a, beta, inv_theta, phi, zeta):
         N_unbounded[i] = r.N_unbounded
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def stress_intensity(C, R, a, beta, c0, c1):
     """
     Stress-intensity factor K* (3.4) [Pa m^(1/2)] and energy release rate G* = (pi/4) A K*^2 (3.5)

@@ -11,7 +11,7 @@ from numba import njit
 HalfPlaneAdherence = namedtuple("HalfPlaneAdherence", ["a", "P_star"])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def adhesionless_load(Delta, a, beta, inv_theta):
     """
     (7.1): load without adhesion [N/m]; inv_theta = (1 + kappa)/(G beta*).
@@ -21,7 +21,7 @@ def adhesionless_load(Delta, a, beta, inv_theta):
     return P
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def adhesionless_BR_over_P(a):
     """
     (7.2): B R/P without adhesion.
@@ -31,7 +31,7 @@ def adhesionless_BR_over_P(a):
     return BR_over_P
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def half_plane_load(Delta, a, beta, zeta):
     """
     (7.3c): Barquins' half-plane load [N/m].
@@ -40,7 +40,7 @@ def half_plane_load(Delta, a, beta, zeta):
     return P_h
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def half_plane_P_star(M, a, inv_theta):
     """
     P_h* = P_h beta*/(4 pi Delta vartheta) of the half-plane (section 6 normalisation).
@@ -49,7 +49,7 @@ def half_plane_P_star(M, a, inv_theta):
     return P_h_star
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def half_plane_adherence(M, theta):
     """
     Minimum of P_h*: the half-plane fixed-load adherence (contact parameter, P_h*).
@@ -59,7 +59,7 @@ def half_plane_adherence(M, theta):
     return HalfPlaneAdherence(a, P_star)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def rubbery_load(Delta, a, beta, zeta):
     """
     (7.5): load of the rubbery cylinder, vartheta = inf [N/m].
@@ -69,7 +69,7 @@ def rubbery_load(Delta, a, beta, zeta):
     return P
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def rubbery_P_star(M_R, a):
     """
     (7.6): P_R* = P beta*/(4 pi Delta).
@@ -79,7 +79,7 @@ def rubbery_P_star(M_R, a):
     return P_R_star
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def lift_off(M_R, a):
     """
     (7.7): sqrt(a) dP_R*/da; zero at lift-off.
@@ -88,7 +88,7 @@ def lift_off(M_R, a):
     return f
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def neat_fit_load(a, inv_theta):
     """
     Q* = P/zeta* at Delta = 0 (section 7.3).

@@ -12,7 +12,7 @@ FullState = namedtuple("FullState", ["P", "B", "C", "c0", "c1", "r0", "K", "G_re
                                      "h_pi"])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def full_state(Delta, R, a, beta, inv_G_I, inv_theta, zeta):
     """
     Equilibrium state at contact parameter a = tan(eps/2), fused: P, B, C, c0, c1, r0 as
@@ -82,7 +82,7 @@ def full_state(Delta, R, a, beta, inv_G_I, inv_theta, zeta):
     return FullState(P, B, C, c0, c1, r0, K, G_release, delta, h_pi)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def full_state_into(out, Delta, R, a, beta, inv_G_I, inv_theta, zeta):
     """
     full_state at every a[i], into out (a FullState of 1-D arrays of the same length).
@@ -111,7 +111,7 @@ def full_state_into(out, Delta, R, a, beta, inv_G_I, inv_theta, zeta):
         h_pi[i] = r.h_pi
 
 
-@njit(parallel=True, cache=True)
+@njit(parallel=True, cache=True, error_model="numpy")
 def full_state_into_parallel(out, Delta, R, a, beta, inv_G_I, inv_theta, zeta):
     """
     full_state at every a[i], into out (a FullState of 1-D arrays of the same length);

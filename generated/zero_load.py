@@ -13,7 +13,7 @@ ZeroLoadMax = namedtuple("ZeroLoadMax", ["M0", "stationary"])
 CriticalEquation = namedtuple("CriticalEquation", ["f", "df_du"])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def zero_load_residual(a, inv_theta, m):
     """
     (8.1) times M vartheta-free: g = a^(3/2) - m (2 + inv_theta (a^2 - log(1 + a^2))),
@@ -24,7 +24,7 @@ def zero_load_residual(a, inv_theta, m):
     return g
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def zero_load_rigid(m):
     """
     The one zero-load contact parameter of the rigid cradle (inv_theta = 0), m = M_R*.
@@ -33,7 +33,7 @@ def zero_load_rigid(m):
     return a0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def zero_load_max(a, theta):
     """
     M0 = a^(3/2)/(a^2 + 2 vartheta - log(1 + a^2)), the M with zero load at a, and the
@@ -48,7 +48,7 @@ def zero_load_max(a, theta):
     return ZeroLoadMax(M0, stationary)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def critical_equation(theta, u):
     """
     Denominator of (4.4) in u = a^2, f = 2 vartheta - log(1 + u) - 2 u^2, and df/du (Newton

@@ -130,12 +130,11 @@ def _tables(n, enriched):
         z = np.zeros((0, 1, 1))
         return None, None, xt, None, z, z, np.zeros((0, n)), np.zeros((0, n)), LD0, SD0
     m = _en.N_ENRICH
-    x_extra = np.cos(np.arange(m) * np.pi / (2 * n * m))
-    x_table = tuple(np.concatenate([_nodes(n), x_extra]))
-    tab = _en.tables(n, x_table)
+    xt = _en.table_points(n)[0]              # the nodes, then the end points
+    x_extra, x_table = xt[n:], tuple(xt)
+    tab = _en.tables(n)
     Lam, Sig, mu = tab
     omega = np.ascontiguousarray([D.T @ mu[j][:n] for j in range(m)])
-    xt = np.array(x_table)
     LD0, SD0 = _log_moments(xt, n) @ D, _sign_moments(xt, n) @ D
     return (x_extra, x_table, xt, tab, np.ascontiguousarray(Lam), np.ascontiguousarray(Sig), omega,
             np.ascontiguousarray([mu[j][:n] for j in range(m)]), LD0, SD0)

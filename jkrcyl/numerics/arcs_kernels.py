@@ -9,6 +9,9 @@ import math
 import numpy as np
 from numba import njit
 
+from .arc_angles import arc_trig as _arc_trig
+from .arc_angles import ell_half as _ell_half
+
 PI = math.pi
 TWO_PI = 2 * math.pi
 LOG2 = math.log(2.0)
@@ -190,9 +193,19 @@ def enrichment(centres, offsets, ac, ae, s, k0, k1, ar, table, Lam, Sig, omega, 
     nt = n + m
     reg = np.empty(n)
     acc = np.empty(m)
+    trig = np.empty((4, nf))
     for ia in range(na):
         c, e = ac[ia], ae[ia]
         loge = math.log(e)
+        # several points near this arc: cos/sin of the fine-grid angles once, then angle addition per point
+        near = 0
+        if not table:
+            for i in range(npt):
+                di = offsets[i] if centres[i] == c else _wrap(centres[i] - c) + offsets[i]
+                if abs(di / e) < NEAR_ARC:
+                    near += 1
+        if near > 1:
+            _arc_trig(e, sfine, trig)
         for i in range(npt):
             if centres[i] == c:
                 di = offsets[i]
@@ -214,8 +227,18 @@ def enrichment(centres, offsets, ac, ae, s, k0, k1, ar, table, Lam, Sig, omega, 
             elif (not table) and abs(di / e) < NEAR_ARC:
                 for j in range(m):
                     acc[j] = 0.0
+                cd, sd = math.cos(di), math.sin(di)
+                cd2, sd2 = math.cos(0.5 * di), math.sin(0.5 * di)
                 for q in range(nf):
-                    kf = _full(di - e * sfine[q], k0, k1, ar) * (PI / nf)
+                    t = di - e * sfine[q]
+                    if near > 1:     # _full(t) with log(2 - 2 cos t) = 2 log|2 sin(t/2)|: one log
+                        ct = cd * trig[0, q] + sd * trig[1, q]
+                        st = sd * trig[0, q] - cd * trig[1, q]
+                        s2 = sd2 * trig[2, q] - cd2 * trig[3, q]
+                        f = 2 * ct * math.log(abs(2 * s2)) + k1 * ct + k0 + ar * (PI * _sign(t) * st - t * st)
+                    else:
+                        f = _full(t, k0, k1, ar)
+                    kf = f * (PI / nf)
                     for j in range(m):
                         acc[j] += kf * gfine[j, q]
                 for j in range(m):
@@ -256,11 +279,13 @@ def assemble(ac, ae, s, D, k0, k1, ar, xt, LD0, SD0, Lam, Sig, omega, gcs, gss, 
             cp = math.cos(ac[ir]) * math.cos(ae[ir] * xt[p])
             rhs[i, 0] = -(1 - cp)
             rhs[i, 1] = cp
+    trig = np.empty((4, n))
     for ia in range(na):
         c, e = ac[ia], ae[ia]
         loge = math.log(e)
         images = 2 * PI / e
         images_on = e > 1.0        # every arc has its own rows here
+        _arc_trig(e, s, trig)
         for i in range(N):
             ir = i // npt
             p = i - ir * npt
@@ -295,21 +320,24 @@ def assemble(ac, ae, s, D, k0, k1, ar, xt, LD0, SD0, Lam, Sig, omega, gcs, gss, 
                     _vecmat(Sg, D, SD, False)
             for j in range(m):
                 acc[j] = 0.0
+            # t = d - e s_k: cos t, sin t and sin(t/2) by angle addition (one log per entry at most)
+            cd, sd = math.cos(d), math.sin(d)
+            cd2, sd2 = math.cos(0.5 * d), math.sin(0.5 * d)
             for k in range(n):
                 t = d - e * s[k]
-                ct, st = math.cos(t), math.sin(t)
-                el = _ell(t)
+                ct = cd * trig[0, k] + sd * trig[1, k]
+                st = sd * trig[0, k] - cd * trig[1, k]
+                el = _ell_half(0.5 * t, sd2 * trig[2, k] - cd2 * trig[3, k])
                 if images_on:
-                    smooth = ct * (6 * loge + (el - 2 * math.log(abs(t - TWO_PI)) - 2 * math.log(abs(t + TWO_PI)))) \
-                        + k1 * ct + k0
+                    smooth = ct * (6 * loge + (el - 2 * math.log(abs((t - TWO_PI) * (t + TWO_PI))))) + k1 * ct + k0
                 else:
                     smooth = ct * (2 * loge + el) + k1 * ct + k0
                 A[i, ia * n + k] = _operator_entry(smooth, t, ct, st, LD[k], SD[k], kink, ar, n)
                 if m:
                     if same:
                         r = ct * (2 * loge + el) + k1 * ct + k0 - ar * t * st
-                    else:
-                        r = ct * math.log(2 - 2 * ct) + k1 * ct + k0 + ar * (PI * _sign(t) * st - t * st)
+                    else:   # log(2 - 2 cos t) = log(t^2) + _ell(t), without the cancellation near t = 0, 2 pi
+                        r = ct * (el + 2 * math.log(abs(t))) + k1 * ct + k0 + ar * (PI * _sign(t) * st - t * st)
                     for j in range(m):
                         acc[j] += r * omega[j, k]
             if m:

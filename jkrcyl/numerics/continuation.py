@@ -29,11 +29,29 @@ def _tangent(g, prev=None):
     return -t if prev is not None and t @ prev < 0 else t
 
 
+NOISE_F = 1e-10     # project: |f| below which a stalled Newton iteration is taken as f's noise floor
+ACCEPT_F = 1e-8     # project: |f| accepted as on the curve when the steps do not reach tol (as always)
+
+
 def project(f, x, direction=None, tol=1e-12, maxit=30):
-    """Newton from x onto f = 0: along grad f, or along the unit vector ``direction`` when given."""
+    """Newton from x onto f = 0: along grad f, or along the unit vector ``direction`` when given.
+
+    Returns (point, ok).  Stops when the step is below tol (relative; ok), or at f's noise floor: once some
+    iterate has |f| <= NOISE_F, an iterate that does not lower the smallest |f| so far, or a step that is not
+    at most half the one before, ends the iteration (rounding now drives the iterates: at large node counts
+    F is noisy at ~1e-12 while the steps would need 1e-12 relative).  Then, or after maxit iterations, the
+    iterate with the smallest |f| is returned, ok iff that |f| <= ACCEPT_F.
+    """
     x = np.array(x, dtype=float)
+    best_x, best_f = x, math.inf
+    prev_size = size = math.inf
     for _ in range(maxit):
         fx = f(x)
+        stalled = abs(fx) >= best_f or size > 0.5 * prev_size
+        if abs(fx) < best_f:
+            best_x, best_f = x, abs(fx)
+        if stalled and best_f <= NOISE_F:
+            return best_x, True
         g = gradient(f, x)
         den = g @ g if direction is None else g @ direction
         if not np.isfinite(den) or den == 0:
@@ -43,9 +61,13 @@ def project(f, x, direction=None, tol=1e-12, maxit=30):
         if not np.all(np.isfinite(step)):
             return x, False
         x = x - step
-        if np.abs(step).max() <= tol * max(1.0, np.abs(x).max()):
+        prev_size, size = size, np.abs(step).max()
+        if size <= tol * max(1.0, np.abs(x).max()):
             return x, True
-    return x, abs(f(x)) < 1e-8
+    fx = f(x)
+    if abs(fx) < best_f:
+        best_x, best_f = x, abs(fx)
+    return best_x, best_f <= ACCEPT_F
 
 
 @dataclass
