@@ -15,6 +15,7 @@ has no edge singularity).  A second right-hand side [0; 1] gives the fixed-arc d
 edge coefficient, p_k = dp/dk and d_k = dd/dk at fixed arc (finite through det A = 0): the stability rules of
 jkrcyl.model.stability use them.
 """
+import functools
 import math
 from collections import namedtuple
 
@@ -116,21 +117,35 @@ def nodes(eps, ar):
     return _arcs.nodes_for(eps, ar)
 
 
-def _engine(n, theta, gb, ar):
-    """The arguments of the numba kernels (numerics.one_arc_kernels) at n nodes: tables and kernel constants."""
-    enriched = ar != 0.0
+@functools.lru_cache(maxsize=None)
+def _half_tables(n, enriched):
+    """The tables of numerics.arcs._tables restricted to the table points x >= 0 (the even half of one arc)."""
     _, _, xt, _, Lam, Sig, omega, _, LD0, SD0 = _arcs._tables(n, enriched)
+    keep = np.nonzero(xt >= 0)[0]
+    cut = lambda T: np.ascontiguousarray(T[:, keep, :]) if T.shape[0] else T
+    return (np.ascontiguousarray(xt[keep]), np.ascontiguousarray(LD0[keep]), np.ascontiguousarray(SD0[keep]),
+            cut(Lam), cut(Sig), omega)
+
+
+def _engine(n, theta, gb, ar, even=True):
+    """The arguments of the numba kernels (numerics.one_arc_kernels) at n nodes: tables and kernel constants
+    (even=True: the half tables of the even kernels)."""
+    if even:
+        xt, LD0, SD0, Lam, Sig, omega = _half_tables(n, ar != 0.0)
+    else:
+        _, _, xt, _, Lam, Sig, omega, _, LD0, SD0 = _arcs._tables(n, ar != 0.0)
     sf, gf = _arcs._fine_grid()
-    k0, k1 = _arcs.Kernel(theta, gb, ar).k0, _arcs.Kernel(theta, gb, ar).k1
+    kernel = _arcs.Kernel(theta, gb, ar)
     return (_arcs._nodes(n), _arcs._cheb_matrix(n), xt, LD0, SD0, Lam, Sig, omega, _G_END[:omega.shape[0]], sf, gf,
-            k0, k1, float(ar), _en.K_TRIG)
+            kernel.k0, kernel.k1, float(ar), _en.K_TRIG)
 
 
-def arc_state(a, k, theta, gb, ar, clearance=1.0):
-    """:data:`ArcState` at one contact parameter (no slopes; one kernel call)."""
+def arc_state(a, k, theta, gb, ar, clearance=1.0, even=True):
+    """:data:`ArcState` at one contact parameter (no slopes; one kernel call; even=False: the full system)."""
     eps = 2 * math.atan(a)
     out = np.empty(_ok.N_OUT)
-    _ok.bordered_state(eps, k, clearance, *_engine(nodes(eps, ar), theta, gb, ar), out)
+    kernel = _ok.bordered_state_even if even else _ok.bordered_state
+    kernel(eps, k, clearance, *_engine(nodes(eps, ar), theta, gb, ar, even), out)
     return ArcState(*out)
 
 

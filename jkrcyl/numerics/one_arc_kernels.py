@@ -3,6 +3,10 @@ contact parameter, and the per-point slopes, for whole arrays of contact paramet
 
 Same mathematics as numerics.one_arc.OneArc (the reference the tests compare with): the collocation matrix of
 numerics.arcs_kernels.assemble, bordered by the edge row; moments of cos, 1 and dx/dphi; the gap row at phi = pi.
+One arc centred at phi = 0 is symmetric (the kernel and both right-hand sides are even), so the density is even:
+u(s_k) = u(s_{n-1-k}) at the mirrored Gauss nodes and the enrichment functions are even already.  The kernels
+therefore collocate at the table points x >= 0 only and fold the node columns k, n - 1 - k: half the rows to
+assemble, an eighth of the LU, the same solution (tests: equal to the full system to rounding).
 The Chebyshev coefficients of cos(e s), sin(e s) (numerics.arcs_enrich.trig_coefficients, Jacobi-Anger) come from
 the power series of J_k(e), e <= pi (no scipy in numba).
 """
@@ -75,7 +79,11 @@ def bordered_state(e, k_target, clearance, s, D, xt, LD0, SD0, Lam, Sig, omega, 
         R[i, 0] = clearance * rhs[i, 0]
     R[N, 0] = k_target
     R[N, 1] = 1.0
-    X = np.linalg.solve(B, R)
+    try:
+        X = np.linalg.solve(B, R)
+    except Exception:          # exactly singular: the receding-contact pole itself (p, delta -> inf)
+        out[:] = np.inf
+        return
     # moment rows (cos, 1, dx/dphi) and the gap row at phi = pi
     mom = np.zeros((3, N))
     for k in range(n):
@@ -106,6 +114,84 @@ def bordered_state(e, k_target, clearance, s, D, xt, LD0, SD0, Lam, Sig, omega, 
 
 
 @njit(cache=True)
+def bordered_state_even(e, k_target, clearance, s, D, xt, LD0, SD0, Lam, Sig, omega, gend, sf, gf, k0, k1, ar,
+                        K, out):
+    """:func:`bordered_state` on the even half (module docstring): xt, LD0, SD0, Lam, Sig restricted to the table
+    points x >= 0 (numerics.one_arc._half_tables), the node columns folded."""
+    n = s.size
+    m = omega.shape[0]
+    nh = (n + 1) // 2                      # node columns k < nh (k = n - 1 - k for the middle node, n odd)
+    N = nh + m
+    ac, ae = np.zeros(1), np.full(1, e)
+    gcs, gss = np.zeros((1, K if m else 0)), np.zeros((1, K if m else 0))
+    if m:
+        trig_coefficients(e, gcs[0], gss[0])
+    A = np.empty((xt.size, n + m))
+    rhs = np.empty((xt.size, 2))
+    _ak.assemble(ac, ae, s, D, k0, k1, ar, xt, LD0, SD0, Lam, Sig, omega, gcs, gss, A, rhs)
+    r = 1.0 / math.sqrt(2 * e)
+    edge = np.empty(n + m)
+    for k in range(n):
+        col = 0.0
+        for q in range(n):
+            col += D[q, k]
+        edge[k] = -col * r
+    for j in range(m):
+        edge[n + j] = -gend[j] * r
+    mom = np.zeros((3, n + m))
+    for k in range(n):
+        ph = e * s[k]
+        t = math.tan(0.5 * ph)
+        f = (math.cos(ph), 1.0, 0.5 * (1 + t * t))
+        for q in range(3):
+            mom[q, k] = PI / n * f[q]
+            for j in range(m):
+                mom[q, n + j] += omega[j, k] * f[q]
+    g = np.zeros((1, n + m))
+    cen, off = np.zeros(1), np.full(1, PI)
+    _ak.operator(cen, off, ac, ae, s, D, k0, k1, ar, g, 0)
+    if m:
+        _ak.enrichment(cen, off, ac, ae, s, k0, k1, ar, False, Lam, Sig, omega, gcs, gss, sf, gf, g, n)
+    # fold: column k of the half system = columns k and n - 1 - k of the full one (the same unknown)
+    B = np.zeros((N + 1, N + 1))
+    rows = np.zeros((5, N))                # edge, moments (cos, 1, dx/dphi), gap at pi
+    for c in range(N):
+        full = c if c < nh else n + (c - nh)
+        twin = n - 1 - c if c < nh and n - 1 - c != c else -1
+        for i in range(xt.size):
+            B[i, c] = A[i, full] + (A[i, twin] if twin >= 0 else 0.0)
+        rows[0, c] = edge[full] + (edge[twin] if twin >= 0 else 0.0)
+        for q in range(3):
+            rows[1 + q, c] = mom[q, full] + (mom[q, twin] if twin >= 0 else 0.0)
+        rows[4, c] = g[0, full] + (g[0, twin] if twin >= 0 else 0.0)
+    for i in range(N):
+        B[i, N] = -rhs[i, 1]
+        B[N, i] = rows[0, i]
+    R = np.zeros((N + 1, 2))
+    for i in range(N):
+        R[i, 0] = clearance * rhs[i, 0]
+    R[N, 0] = k_target
+    R[N, 1] = 1.0
+    try:
+        X = np.linalg.solve(B, R)
+    except Exception:          # exactly singular: the receding-contact pole itself (p, delta -> inf)
+        out[:] = np.inf
+        return
+    p = B_ = C = kk = gv = pk = 0.0
+    for i in range(N):
+        v, vk = X[i, 0], X[i, 1]
+        kk += rows[0, i] * v
+        p += rows[1, i] * v
+        B_ += rows[2, i] * v
+        C += rows[3, i] * v
+        gv += rows[4, i] * v
+        pk += rows[1, i] * vk
+    d = X[N, 0]
+    out[0], out[1], out[2], out[3] = p, B_, d, 2 * clearance + d + gv
+    out[4], out[5], out[6], out[7] = kk, C, pk, X[N, 1]
+
+
+@njit(cache=True)
 def arc_states(a, k_target, clearance, pole, rel_step, s, D, xt, LD0, SD0, Lam, Sig, omega, gend, sf, gf, k0,
                k1, ar, K):
     """States (N_OUT columns, as bordered_state) and slopes dp/da, dd/da at every contact parameter a[i] (all at
@@ -116,13 +202,13 @@ def arc_states(a, k_target, clearance, pole, rel_step, s, D, xt, LD0, SD0, Lam, 
     plus, minus = np.empty(N_OUT), np.empty(N_OUT)
     for i in range(a.size):
         ai = a[i]
-        bordered_state(2 * math.atan(ai), k_target, clearance, s, D, xt, LD0, SD0, Lam, Sig, omega, gend, sf,
-                       gf, k0, k1, ar, K, out[i])
+        bordered_state_even(2 * math.atan(ai), k_target, clearance, s, D, xt, LD0, SD0, Lam, Sig, omega, gend,
+                            sf, gf, k0, k1, ar, K, out[i])
         h = rel_step * min(ai, abs(ai - pole))
-        bordered_state(2 * math.atan(ai + h), k_target, clearance, s, D, xt, LD0, SD0, Lam, Sig, omega, gend, sf,
-                       gf, k0, k1, ar, K, plus)
-        bordered_state(2 * math.atan(ai - h), k_target, clearance, s, D, xt, LD0, SD0, Lam, Sig, omega, gend, sf,
-                       gf, k0, k1, ar, K, minus)
+        bordered_state_even(2 * math.atan(ai + h), k_target, clearance, s, D, xt, LD0, SD0, Lam, Sig, omega, gend,
+                            sf, gf, k0, k1, ar, K, plus)
+        bordered_state_even(2 * math.atan(ai - h), k_target, clearance, s, D, xt, LD0, SD0, Lam, Sig, omega, gend,
+                            sf, gf, k0, k1, ar, K, minus)
         slopes[i, 0] = (plus[0] - minus[0]) / (2 * h)
         slopes[i, 1] = (plus[2] - minus[2]) / (2 * h)
     return out, slopes
