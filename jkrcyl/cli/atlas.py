@@ -52,5 +52,6 @@ def register(sub):
     t.add_argument("--no-csv", action="store_true", help="skip atlas.csv (the npz holds the same data)")
     t.add_argument("--quiet", action="store_true", help="no progress bar")
     t.add_argument("--two-patch", action="store_true",
-                   help="run the two-patch analysis (~1 s per pair) where the gap closes first (none on the default grid)")
+                   help="run the two-patch analysis (~1 s per pair) where the gap closes first (none on the default "
+                        "grid)")
     t.set_defaults(func=run)

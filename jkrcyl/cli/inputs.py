@@ -92,6 +92,11 @@ def _physical_values(args):
     return [getattr(args, name.replace("-", "_"), None) for name, _ in PHYSICAL]
 
 
+def physical_given(args) -> bool:
+    """Whether any physical input was given."""
+    return any(v is not None for v in _physical_values(args))
+
+
 def contact_from(args):
     """A jkrcyl.Contact from --E --nu --E-I --nu-I --R --Delta --w (ValueError naming a missing one)."""
     from ..contact import Contact
@@ -106,7 +111,7 @@ def contact_from(args):
 
 def resolve(args) -> ProblemInput:
     """The problem of either input set, validated (ValueError naming the parameter)."""
-    if any(v is not None for v in _physical_values(args)):
+    if physical_given(args):
         if args.M is not None:
             raise ValueError("M: give either --M (with --theta, --gb) or the physical inputs, not both")
         c = contact_from(args)

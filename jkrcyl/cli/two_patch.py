@@ -16,7 +16,7 @@ FIGURE_M = "0.3,0.4,0.5,0.8"
 def _figure(args):
     from .. import plotting
     from ..plotting import style
-    if args.M is not None or any(v is not None for v in inputs._physical_values(args)):
+    if args.M is not None or inputs.physical_given(args):
         raise ValueError("figure: draws the M values of --figure-M (drop --M and the physical inputs)")
     try:
         Ms = [float(x) for x in args.figure_M.split(",") if x.strip()]
