@@ -7,7 +7,7 @@ import math
 import sys
 
 from .. import equilibria as eq
-from ..model.single_patch import closed_form, solver
+from ..model.single_patch import solver
 from ..results.paths import REGIMES
 from . import inputs
 
@@ -32,19 +32,18 @@ def point_dict(p):
 
 
 def _zero_load(pi):
-    """(contact parameters a0 with P* = 0, the largest M with such a contact or inf, where from): (8.1) where the
-    paper's closed forms hold (the solver interface says), else the solver's P* = 0 roots on every branch."""
+    """(contact parameters a0 with P* = 0 on every branch, from the pair's single-patch solver (closed form or
+    collocation: jkrcyl.model.single_patch decides), and the largest M with a zero-load contact by (8.1), an
+    alpha* = 0 result (inf for vartheta = inf))."""
     pb = eq.problem(pi.M, pi.theta, pi.gb, pi.alpha_ratio)
-    if closed_form(pb.alpha_ratio):
-        return eq.zero_load_contact(pi.M, pi.theta), eq.zero_load_max_M(pi.theta)[0], "8.1"
     roots = [r for regime in solver(pb).regimes()
              for r in eq.solve_load(pi.M, pi.theta, 0.0, regime, gb=pi.gb, alpha_ratio=pi.alpha_ratio)]
-    return sorted(roots), math.inf, "solver, P* = 0"
+    return sorted(roots), eq.zero_load_max_M(pi.theta)[0]
 
 
-def _print_text(pi, load, grip, a0, Mmax, source, confined):
-    print(f"M = {pi.M:.10g}, theta = {pi.theta:g}, gb = {pi.gb:.10g} ({pi.gb_source})"
-          + ("" if source == "8.1" else f", alpha*/beta* = {pi.alpha_ratio:.6g} (numerical solver)"))
+def _print_text(pi, load, grip, a0, Mmax, confined):
+    print(f"M = {pi.M:.10g}, theta = {pi.theta:g}, gb = {pi.gb:.10g} ({pi.gb_source}), "
+          f"alpha*/beta* = {pi.alpha_ratio:.6g}")
     print("fixed-load adherence (minimum of P* per branch):")
     for p in load:
         print(f"  {p.regime:14s} a = {p.a:.10g}  eps = {p.eps:.10g}  P* = {p.P_star:.10g}  "
@@ -58,9 +57,9 @@ def _print_text(pi, load, grip, a0, Mmax, source, confined):
               f"delta/Delta = {p.delta_over_Delta:.10g}  feasible = {p.feasible}")
     if not grip:
         print("  none")
-    print(f"zero-load contact ({source}): " + (", ".join(f"a0 = {x:.10g}" for x in a0) if a0 else "none"))
+    print("zero-load contact (P* = 0): " + (", ".join(f"a0 = {x:.10g}" for x in a0) if a0 else "none"))
     if not math.isinf(Mmax):
-        print(f"  (8.1) has roots for M <= {Mmax:.10g}")
+        print(f"  (8.1), alpha* = 0: roots for M <= {Mmax:.10g}")
     if confined:
         print(f"confined regime (slow upward loading, jkrcyl.equilibria.confined_events): {confined['regime']}")
         print(f"  {confined['summary']}")
@@ -80,7 +79,7 @@ def run(args):
     common = dict(gb=pi.gb, alpha_ratio=pi.alpha_ratio)
     load = eq.adherence(pi.M, pi.theta, "load", confined=want_confined, **common)
     grip = eq.adherence(pi.M, pi.theta, "grip", **common)
-    a0, Mmax, source = _zero_load(pi)
+    a0, Mmax = _zero_load(pi)
     confined = confined_dict(eq.confined_events(pi.M, pi.theta, **common)) if want_confined else None
     if args.format == "json":
         json.dump({**pi.meta(), "confined": confined, "load": [point_dict(p) for p in load],
@@ -88,7 +87,7 @@ def run(args):
                    "zero_load_M_max": None if math.isinf(Mmax) else Mmax}, sys.stdout)
         sys.stdout.write("\n")
         return 0
-    _print_text(pi, load, grip, a0, Mmax, source, confined)
+    _print_text(pi, load, grip, a0, Mmax, confined)
     return 0
 
 

@@ -15,7 +15,6 @@ import numpy as np
 from .. import equilibria as eq
 from .. import special
 from ..critical import a_crit
-from ..model.single_patch import closed_form
 from . import style as st
 
 ERRATUM_FIG10 = ("erratum (DERIVATION.md 'Fig. 10'): the curves cross only where the cylinder's lowest\n"
@@ -36,8 +35,8 @@ def neat_fit_stable(c):
 
 
 def fig08(n=600, alpha_ratio=0.0):
-    if not closed_form(alpha_ratio):
-        raise ValueError("alpha_ratio: Fig. 8 (neat fit, section 7.3) exists only in closed form, alpha* = 0")
+    """The neat fit (Delta = 0, section 7.3) exists in closed form only: drawn at alpha* = 0 for any
+    ``alpha_ratio`` (the title says so)."""
     plt = st.mpl()
     fig, axs = plt.subplots(1, 2, figsize=(10.5, 4.6))
     rows = st.Rows()
@@ -66,8 +65,8 @@ def fig08(n=600, alpha_ratio=0.0):
         ax.grid(alpha=0.3)
     st.legend(axs[0], [(st.theta_text(th), sty) for th, sty in zip(ths, styles)],
               extra=[st.band_handle("stable at fixed load ($dQ^*/da < 0$)")])
-    fig.suptitle("Fig. 8: neat fit, super-critical equilibria; $\\alpha^*/\\beta^* = 0$ "
-                 "(no $\\delta$: $(1/G_I)/\\beta^*$ not used)")
+    fig.suptitle("Fig. 8: neat fit, super-critical equilibria; $\\alpha^*/\\beta^* = 0$ (a closed form only: "
+                 "drawn so whatever $\\alpha^*$ is asked for; no $\\delta$: $(1/G_I)/\\beta^*$ not used)")
     fig.tight_layout()
     return fig, rows
 

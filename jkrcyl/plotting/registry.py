@@ -12,7 +12,6 @@ import pathlib
 from dataclasses import dataclass, field
 from typing import Callable
 
-from ..model.single_patch import closed_form
 from . import paper, paper_pressure, paper_stability
 from . import style as st
 
@@ -24,7 +23,7 @@ class FigureSpec:
     number: int
     builder: Callable
     params: dict = field(default_factory=dict)
-    any_alpha: bool = True      # False: the figure exists only at alpha* = 0 (Fig. 8, the neat fit)
+    closed_form_only: bool = False     # True: drawn at alpha* = 0 whatever alpha_ratio (Fig. 8, the neat fit)
 
     @property
     def name(self):
@@ -43,7 +42,7 @@ _REGISTRY = [
     FigureSpec(6, paper.fig06, dict(theta=0.5, gb=st.figure_gb(0.5), regime="sub-critical", M=paper.M_VALUES)),
     FigureSpec(7, paper.fig07, dict(theta=math.inf, gb=st.figure_gb(math.inf), regime="sub-critical",
                                     M=paper.M_VALUES)),
-    FigureSpec(8, paper_stability.fig08, dict(theta=(0.5, 1.0), Delta=0.0), any_alpha=False),
+    FigureSpec(8, paper_stability.fig08, dict(theta=(0.5, 1.0), Delta=0.0), closed_form_only=True),
     FigureSpec(9, paper.fig09, dict(theta=1.0, gb=_GB1, M=paper.FIG09_M)),
     FigureSpec(10, paper_stability.fig10, dict(theta=paper_stability.FIG10_THETAS, control="load")),
     FigureSpec(11, paper_stability.fig11, dict(theta=1.0, gb=_GB1, M=paper_stability.FIG11_M)),
@@ -62,13 +61,14 @@ def write_csv(path, rows):
 def draw_all(out, n=None, only=None, progress=None, alpha_ratio=0.0):
     """Write figNN.png, figNN.pdf, figNN.csv into ``out``; returns the list of paths written.
 
-    alpha_ratio = alpha*/beta* != 0 draws the figures that exist for any alpha* (not Fig. 8) with the
-    numerical solver.  progress(done, total, next name) is called before each figure and at the end.
+    alpha_ratio = alpha*/beta* != 0 draws the figures with the numerical solver (Fig. 8, the neat fit, is a closed
+    form: drawn at alpha* = 0, as its title says).  progress(done, total, next name) is called before each figure
+    and at the end.
     """
     plt = st.mpl()
     out = pathlib.Path(out)
     out.mkdir(parents=True, exist_ok=True)
-    names = [k for k in FIGURES if (only is None or k in only) and (closed_form(alpha_ratio) or FIGURES[k].any_alpha)]
+    names = [k for k in FIGURES if only is None or k in only]
     written = []
     for i, name in enumerate(names):
         if progress:
