@@ -241,10 +241,16 @@ def _stability_sign(report, K_P):
                    "(tests/test_equilibria.py, test_release_rate_is_the_energy_derivative, test_fig11_claims)")
     report.erratum("Section 8.1 and Fig. 10, half-plane vs cylinder adherence",
                    "'the half-plane adhesive solution consistently under predicts the value of the adherence force'",
-                   "true while the fixed-load detachment minimum is sub-critical; once it is super-critical "
-                   "(M > 0.4459 at vartheta = 1, M > 0.6113 at vartheta = 0.5) the Barquins force is the larger one",
-                   "tests/test_equilibria.py, test_half_plane_adherence_vs_cylinder_fig10 (minima of P* found "
-                   "with the emitted slope kernels, to full double precision)")
+                   "true wherever the cylinder detaches under load, i.e. while its lowest fixed-load P* minimum "
+                   "is sub-critical (M < 0.3915 at vartheta = 1, M < 0.5651 at vartheta = 0.5); above that the "
+                   "lowest minimum is super-critical, a fold where the contact grows round into full contact "
+                   "(erratum 'Sections 6 and 8.3'), not an adherence force, and beyond M = 0.4459 (vartheta = 1), "
+                   "0.6113 (vartheta = 0.5) it lies above the Barquins force: there the curves of Fig. 10 cross",
+                   "tests/test_equilibria.py, test_half_plane_adherence_vs_cylinder_fig10 (the crossings: minima "
+                   "of P* found with the emitted slope kernels, to full double precision); tests/test_figures.py, "
+                   "test_fig10_ends_detachment_where_the_lowest_minimum_turns_super_critical (the detachment "
+                   "limits from the printed (4.4) at 30 digits: where the residue of P* at a_crit vanishes, "
+                   "vartheta = 0.5, or a lower super-critical minimum is born, vartheta = 1)")
     return expected * D_t
 
 

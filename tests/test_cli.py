@@ -82,3 +82,47 @@ def test_bad_input_one_line_exit_2(args, name):
     assert r.returncode == 2
     lines = r.stderr.strip().splitlines()
     assert len(lines) == 1 and name in lines[0], r.stderr
+
+
+# --- gb: the CLI prints the gb it used (issue 18 item 7) -------------------------------------------------------
+@pytest.mark.parametrize("theta, want", [("1", 0.5), ("2", 0.75), ("0.5", 0.0), ("inf", 1.0)])
+def test_default_gb_is_printed(theta, want):
+    """Without --gb the normalised commands use an incompressible pin, gb = (1/G_I)/beta* = 1 - 1/(2 vartheta)
+    (kappa_I = 1 in beta* = (kappa + 1)/(2G) + (kappa_I + 1)/(2G_I) and vartheta = G beta*/(1 + kappa)), and
+    say so in the first line (CSV) and in 'gb', 'gb_source' (JSON)."""
+    r = run("curve", "--M", "0.3", "--theta", theta, "--n", "3")
+    assert r.returncode == 0, r.stderr
+    first = r.stdout.splitlines()[0]
+    assert f"gb={want:.10g} (default: incompressible pin" in first, first
+    data = json.loads(run("curve", "--M", "0.3", "--theta", theta, "--n", "3", "--format", "json").stdout)
+    assert data["gb"] == pytest.approx(want, abs=1e-15) and data["gb_source"].startswith("default")
+
+
+def test_given_gb_is_used_and_printed():
+    """--gb reaches the computation: delta/Delta differs from the default's, P* does not (gb enters the approach
+    only), and the first line says the gb came from --gb."""
+    default = run("curve", "--M", "0.3", "--n", "4", "--format", "json")
+    given = run("curve", "--M", "0.3", "--n", "4", "--gb", "0.25", "--format", "json")
+    d0, d1 = json.loads(default.stdout), json.loads(given.stdout)
+    assert d1["gb"] == 0.25 and d1["gb_source"] == "--gb"
+    assert d0["P_star"] == d1["P_star"] and d0["a"] == d1["a"]
+    assert all(abs(x - y) > 1e-6 for x, y in zip(d0["delta_over_Delta"], d1["delta_over_Delta"]))
+    r = run("curve", "--M", "0.3", "--n", "2", "--gb", "0.25")
+    assert "gb=0.25 (--gb)" in r.stdout.splitlines()[0]
+
+
+def test_gb_printed_by_adherence_two_patch_and_physical_inputs():
+    r = run("adherence", "--M", "0.3", "--no-confined")
+    assert r.returncode == 0 and "gb = 0.5 (default: incompressible pin" in r.stdout.splitlines()[0]
+    r = run("two-patch", "--M", "0.5", "--n", "4", "--gb", "0.3")
+    assert r.returncode == 0 and "gb=0.3 (--gb)" in r.stdout.splitlines()[0]
+    # physical inputs: the pair's gb = (1/G_I)/beta*, from the moduli (plane strain, identical nu = 0.3 bodies:
+    # beta* = 2 (kappa + 1)/(2G), so gb = 1/(kappa + 1) = 1/2.8)
+    r = run("curve", "--E", "2.6e9", "--nu", "0.3", "--E-I", "2.6e9", "--nu-I", "0.3", "--R", "0.01",
+            "--Delta", "1e-5", "--w", "0.05", "--n", "2")
+    assert r.returncode == 0 and f"gb={1 / 2.8:.10g} (physical inputs" in r.stdout.splitlines()[0]
+
+
+def test_help_documents_the_gb_default():
+    r = run("curve", "--help")
+    assert "Default: an incompressible pin, 1 - 1/(2 vartheta)" in " ".join(r.stdout.split())

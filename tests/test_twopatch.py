@@ -356,21 +356,6 @@ def test_cli_two_patch_json(capsys):
     assert cli.main(["two-patch", "--M", "-1"]) == 2
 
 
-def test_cli_confined_figure(tmp_path):
-    """jkrcyl two-patch --figure draws docs/confined.png's figure (here one M); its series colours are
-    strictly ordered in greyscale luminance (told apart without colour) and every line style is explained."""
-    f = tmp_path / "confined.png"
-    assert cli.main(["two-patch", "--figure", str(f), "--figure-M", "0.8"]) == 0
-    assert f.stat().st_size > 10000 and f.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    import matplotlib
-    lum = [np.dot(matplotlib.colormaps["viridis"](x)[:3], (0.299, 0.587, 0.114)) for _, x, _ in tp._SERIES]
-    assert all(b > a + 0.15 for a, b in zip(lum, lum[1:]))
-    assert len({m for _, _, m in tp._SERIES}) == len(tp._SERIES)
-    assert len({ls for ls, _, _ in tp._STABILITY}) == 3
-    assert cli.main(["two-patch", "--figure", str(f), "--M", "0.3"]) == 2
-    assert cli.main(["two-patch", "--figure", str(f), "--figure-M", "x"]) == 2
-
-
 # --- confined-regime events -------------------------------------------------------------------------
 @pytest.mark.parametrize("M, regime, expect_growth", [(0.3, "sub-critical", False), (0.5, "super-critical", True),
                                                       (0.8, "super-critical", True)])
