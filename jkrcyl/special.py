@@ -22,6 +22,11 @@ from .critical import a_crit as _a_crit
 from .numerics import kernels, roots
 
 
+def _inv(theta):
+    """1/vartheta, 0 for the rigid cradle (the kernels' argument)."""
+    return 0.0 if math.isinf(theta) else 1.0 / theta
+
+
 def _zeta(w, R, beta):
     """zeta* = sqrt(2 w R/A), A = beta*/(2 pi) (3.6)."""
     return np.sqrt(2 * w * R / (beta / (2 * math.pi)))
@@ -112,7 +117,7 @@ def half_plane_P_star(a: ArrayLike, M: float, theta: float) -> np.ndarray:
     """
     th = _check_theta(theta)
     return kernels.special("half_plane_P_star", a=contact_parameter(a), M=M,
-                           inv_theta=kernels.inv_theta_of(th))
+                           inv_theta=_inv(th))
 
 
 def half_plane_adherence(M: float, theta: float) -> Tuple[float, float]:
@@ -225,7 +230,7 @@ def neat_fit_Q(a: ArrayLike, theta: float) -> np.ndarray:
         Q* (dimensionless), shaped like a.
     """
     th = _check_theta(theta)
-    return kernels.special("neat_fit_load", a=contact_parameter(a), inv_theta=kernels.inv_theta_of(th))
+    return kernels.special("neat_fit_load", a=contact_parameter(a), inv_theta=_inv(th))
 
 
 def neat_fit_gap_pi(a: ArrayLike, theta: float) -> np.ndarray:
@@ -245,7 +250,7 @@ def neat_fit_gap_pi(a: ArrayLike, theta: float) -> np.ndarray:
     """
     a = contact_parameter(a).ravel()
     th = _check_theta(theta)
-    return kernels.gap_pi(a, Delta=0.0, beta=1.0, inv_theta=kernels.inv_theta_of(th), zeta=1.0)
+    return kernels.gap_pi(a, Delta=0.0, beta=1.0, inv_theta=_inv(th), zeta=1.0)
 
 
 def neat_fit_curve(theta: float, n: int = 400) -> Dict[str, np.ndarray]:

@@ -29,6 +29,8 @@ from scipy.special import jv as _jv
 from ..generated import green as _green
 from . import arcs_enrich as _en
 from . import arcs_kernels as _ak
+from . import arcs_readout as _rd
+from . import enrichment_kernels as _ek
 
 LOG2 = math.log(2.0)
 NEAR_ARC = 1.6     # gap points closer than this (in half-widths from the centre) use the fine grid
@@ -199,7 +201,7 @@ class Arcs:
     def _enrichment(self, centres, offsets, table, out, col0):
         kn = self.kernel
         sf, gf = _fine_grid()
-        _ak.enrichment(centres, offsets, self._ac, self._ae, self.s, kn.k0, kn.k1, kn.ar, table, self._Lam,
+        _ek.enrichment(centres, offsets, self._ac, self._ae, self.s, kn.k0, kn.k1, kn.ar, table, self._Lam,
                        self._Sig, self._omega, self._gcs, self._gss, sf, gf, out, col0)
 
     def operator(self, centres, offsets):
@@ -245,7 +247,7 @@ class Arcs:
         f = [np.asarray(F(c + e * self.s), dtype=float) for c, e in self.arcs]
         f = f[0] if len(f) == 1 and f[0].shape == self.s.shape else np.concatenate(
             [np.broadcast_to(fi, self.s.shape) for fi in f])
-        return _ak.moment(np.ascontiguousarray(v, dtype=float), f, self.n, len(self.arcs), self.D, self._mu)
+        return _rd.moment(np.ascontiguousarray(v, dtype=float), f, self.n, len(self.arcs), self.D, self._mu)
 
 
 _G_END = np.ascontiguousarray(_en.G_END[:_en.N_ENRICH])
@@ -264,7 +266,7 @@ class Linear:
         sy = self.sys
         lu, piv, U, info = _dgesv(sy.A, sy._rhs)       # one LAPACK call: LU (for sign_det) and the solve
         # sign_det from the LU (LAPACK pivots are 1-based), U / scale and both unit cases q in one kernel
-        self.sign_det, U, q = _ak.unit_q(lu, piv, U, sy._ac, sy._ae, sy.s, sy.D, sy._mu, _G_END, self.scale)
+        self.sign_det, U, q = _rd.unit_q(lu, piv, U, sy._ac, sy._ae, sy.s, sy.D, sy._mu, _G_END, self.scale)
         self.u0, self.u1 = U[:, 0], U[:, 1]
         self.q0, self.q1 = q[:, 0], q[:, 1]
 

@@ -16,6 +16,7 @@ import numpy as np
 from numba import njit
 
 from . import arcs_kernels as _ak
+from . import enrichment_kernels as _ek
 
 PI = math.pi
 # the fields of one state: p, B*, d, h(pi), k, C*, p_k, d_k (numerics.one_arc.ArcState)
@@ -98,7 +99,7 @@ def bordered_state(e, k_target, clearance, s, D, xt, LD0, SD0, Lam, Sig, omega, 
     cen, off = np.zeros(1), np.full(1, PI)
     _ak.operator(cen, off, ac, ae, s, D, k0, k1, ar, g, 0)
     if m:
-        _ak.enrichment(cen, off, ac, ae, s, k0, k1, ar, False, Lam, Sig, omega, gcs, gss, sf, gf, g, n)
+        _ek.enrichment(cen, off, ac, ae, s, k0, k1, ar, False, Lam, Sig, omega, gcs, gss, sf, gf, g, n)
     p = B_ = C = kk = gv = pk = 0.0
     for i in range(N):
         v, vk = X[i, 0], X[i, 1]
@@ -151,7 +152,7 @@ def bordered_state_even(e, k_target, clearance, s, D, xt, LD0, SD0, Lam, Sig, om
     cen, off = np.zeros(1), np.full(1, PI)
     _ak.operator(cen, off, ac, ae, s, D, k0, k1, ar, g, 0)
     if m:
-        _ak.enrichment(cen, off, ac, ae, s, k0, k1, ar, False, Lam, Sig, omega, gcs, gss, sf, gf, g, n)
+        _ek.enrichment(cen, off, ac, ae, s, k0, k1, ar, False, Lam, Sig, omega, gcs, gss, sf, gf, g, n)
     # fold: column k of the half system = columns k and n - 1 - k of the full one (the same unknown)
     B = np.zeros((N + 1, N + 1))
     rows = np.zeros((5, N))                # edge, moments (cos, 1, dx/dphi), gap at pi
