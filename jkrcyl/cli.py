@@ -325,6 +325,8 @@ def build_parser():
     tw.set_defaults(func=_cmd_two_patch)
     from . import cli_forward
     cli_forward.register(sub, _float)
+    from . import cli_fit
+    cli_fit.register(sub, _float)
     t = sub.add_parser("atlas", help="regime atlas over (M, vartheta): npz, CSV and a regime map",
                        description="Classify every (M, vartheta) pair of a grid: sub-critical and super-critical "
                                    "fixed-load adherence points (feasible or not), zero-load contact (8.1), "

@@ -157,7 +157,7 @@ def read_csv(path) -> Table:
     meta, body = {}, []
     for line in lines:
         if line.lstrip().startswith("#"):
-            for key, value in re.findall(r"(\w+)\s*=\s*(\S+)", line):
+            for key, value in re.findall(r"(?<!\S)(\w+)=(\S+)", line):
                 if key in SETUP_KEYS:
                     meta[key] = value if key == "control" else _number(key, value)
         elif line.strip():

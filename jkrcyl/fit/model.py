@@ -140,12 +140,16 @@ def pole(R, materials) -> float:
     if materials.closed_form:
         c = contact(R, R * 1e-3, 0.0, materials)
         return c.a_crit
-    grid = np.geomspace(1e-3, 30.0, 120)
-    p1 = _raw_parts(R, materials, grid)[0]
-    neg = np.nonzero(p1 <= 0)[0]
-    if neg.size == 0:
+    # scan upward in eps in chunks and stop at the first sign change: the solver's cost grows with eps (nodes)
+    grid = np.tan(np.linspace(0.02, math.pi - 0.02, 80) / 2)
+    for start in range(0, grid.size, 10):
+        chunk = grid[start:start + 10]
+        neg = np.nonzero(_raw_parts(R, materials, chunk)[0] <= 0)[0]
+        if neg.size:
+            i = start + int(neg[0])
+            break
+    else:
         return math.inf
-    i = int(neg[0])
     inv = lambda x: 1.0 / _raw_parts(R, materials, np.array([x]))[0][0]
     return brentq(inv, grid[i - 1], grid[i], xtol=1e-15, rtol=1e-14)
 
