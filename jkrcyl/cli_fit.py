@@ -41,7 +41,7 @@ def _setup(args, table, free, number):
     setup = {k: v for k, v in table.meta.items() if k in SETUP_KEYS}
     fixed = _pairs(args.fix, "--fix", number)
     start = _pairs(args.start, "--start", number)
-    for name in set(fixed) & set(free):
+    for name in sorted(set(fixed) & set(free) - set(MATERIAL_KEYS)):
         raise ValueError(f"{name}: given by --fix and listed in --free (use --start NAME=VALUE for a starting value)")
     bad_start = [n for n in start if n in MATERIAL_KEYS or n == "R"]
     if bad_start:
@@ -90,8 +90,9 @@ def cmd_fit(args):
     return 0
 
 
-def _write(res, fmt, out=sys.stdout):
+def _write(res, fmt, out=None):
     from .fit import PARAMETERS
+    out = sys.stdout if out is None else out
     rows = [dict(parameter=n, value=res.values[n], std_error=res.standard_errors[n],
                  lower=res.intervals.get(n, (math.nan, math.nan))[0],
                  upper=res.intervals.get(n, (math.nan, math.nan))[1], unit=PARAMETERS[n][0]) for n in res.names]

@@ -121,9 +121,30 @@ def _start(problem, spec):
     values = dict(spec.fixed)
     if problem.data.kind == "width":
         values.update(_linear_start(problem, spec))
-    else:
-        values.update(_scan_start(problem, spec))
+        return _grid_refine(problem, spec, spec.to_internal(values))
+    values.update(_scan_start(problem, spec))
     return spec.to_internal(values)
+
+
+REFINE = np.linspace(-0.6, 0.6, 13)     # log-offsets of the starting grid around the linear start (x 0.55 .. 1.8)
+
+
+def _grid_refine(problem, spec, u0):
+    """The best point of a small grid around the linear start (the first two parameters): the linear start ignores
+    the errors on the width, and near the pull-off, where dP/dwidth = 0, the effective variance makes the sum of
+    squares non-convex (a far local minimum exists), so the descent must begin in the right basin.  Skipped when
+    E_hole or E_pin is free (each evaluation would be a new set of states)."""
+    if {"E_hole", "E_pin"} & set(spec.names):
+        return u0
+    axes = [REFINE if j < 2 and spec.names[j] not in ("offset",) else np.zeros(1) for j in range(u0.size)]
+    best, best_cost = u0, math.inf
+    for shift in np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, u0.size):
+        with np.errstate(all="ignore"):
+            r = problem.residuals(u0 + shift)
+        cost = float(r @ r)
+        if np.isfinite(cost) and cost < best_cost:
+            best, best_cost = u0 + shift, cost
+    return best
 
 
 def _w_of_M(spec, M, f=1.0):
@@ -201,13 +222,13 @@ def _scan_start(problem, spec):
 
 
 def _offset_guess(problem, spec, vals):
-    mode = problem.mode
-    problem.mode = "load-exact"
+    """Median approach misfit with each point's state taken at its measured load (delta_work ignored)."""
+    saved = problem.sigma_x
+    problem.sigma_x = saved * 1e12
     try:
-        r = problem.residuals(spec.to_internal(vals)) * (1.0 if problem.data.sigma_x is None else
-                                                          problem.data.sigma_x)
+        r = problem.residuals(spec.to_internal(vals), normalised=False)[problem.data.n:]
     finally:
-        problem.mode = mode
+        problem.sigma_x = saved
     return float(np.median(r))
 
 
@@ -246,8 +267,7 @@ def _identifiable(jac, names):
 def _finish(problem, spec, res, scale, loss, f_scale, interval, confidence):
     names, u = spec.names, res.x
     _identifiable(res.jac, names)
-    nuisance = problem.data.n if problem.mode == "both" else 0
-    dof = problem.n_residuals - len(names) - nuisance
+    dof = problem.n_residuals - len(names) - problem.nuisance
     S = 2.0 * res.cost
     s2 = 1.0 if problem.sigma_known else (S / dof if dof > 0 else math.nan)
     if loss != "linear" and not problem.sigma_known:
@@ -281,19 +301,16 @@ def _finish(problem, spec, res, scale, loss, f_scale, interval, confidence):
             if abs(corr[i, j]) > 0.99:
                 notes.append(f"{names[i]} and {names[j]} are strongly correlated ({corr[i, j]:+.4f}): the data "
                              "determine mainly a combination of them")
-    if problem.clamped.any():
-        notes.append(f"{int(problem.clamped.sum())} point(s) lie beyond the stable segment of the fitted model "
-                     "and were compared with its end")
     if loss != "linear":
         notes.append(f"robust loss {loss}: intervals treat the robust cost as a log-likelihood (approximate)")
     for t in notes:
         warnings.warn(t, stacklevel=3)
     r = res.fun
-    raw = problem.residuals(u, normalised=False)
+    raw, normalised = problem.report(u)
     return FitResult(names=names, values={n: values[n] for n in names}, intervals=intervals, standard_errors=se,
-                     covariance=cov, correlation=corr, residuals=raw, normalised_residuals=r,
-                     cost=float(r @ r) if loss == "linear" else S, dof=dof,
-                     sigma=1.0 if problem.sigma_known else math.sqrt(s2), confidence=confidence,
+                     covariance=cov, correlation=corr, residuals=raw, normalised_residuals=normalised,
+                     cost=(float(r @ r) if loss == "linear" else S) * problem.nominal ** 2, dof=dof,
+                     sigma=1.0 if problem.sigma_known else math.sqrt(s2) * problem.nominal, confidence=confidence,
                      interval_method=method, loss=loss, control=problem.control, kind=problem.data.kind,
                      n=problem.data.n, materials=spec.fitted_materials(u), Delta=values["Delta"], R=problem.R,
                      nfev=res.nfev, notes=notes, fixed={k: v for k, v in values.items() if k not in names},
@@ -317,8 +334,12 @@ def _check_pull_off(problem, spec, u, cov_u, s2):
     than BEYOND_SIGMAS standard errors (of the point and of the fitted pull-off force) cannot be equilibria."""
     d = problem.data
     inp = spec.inputs(u)
-    sP = (np.zeros(d.n) if d.sigma_P is None else d.sigma_P) if problem.sigma_known else \
-        (np.full(d.n, math.sqrt(s2)) if problem.mode in ("width", "approach-exact") else np.zeros(d.n))
+    if problem.mode == "load-exact":
+        sP = np.zeros(d.n)                                   # the loads were held: exact
+    elif d.sigma_P is not None:
+        sP = d.sigma_P
+    else:                                                    # no error stated on P: the residual scale, if any
+        sP = np.full(d.n, 0.0 if problem.sigma_known else math.sqrt(s2) * problem.nominal)
     for wv in np.unique(inp.w):
         sel = inp.w == wv
         fo = model.fold(problem.R, inp.materials, inp.f, inp.Delta, wv, "load")

@@ -5,11 +5,13 @@ a = tan(width/(4R)), P = f Delta p1(a) - sqrt(f w) p2(a) (jkrcyl.fit.model).  An
 enters as the effective variance sigma_P^2 + (dP/dwidth sigma_width)^2 + (d2P/dwidth2 sigma_width^2)^2/2 (the
 variance of P(width + e) to second order, so that it stays > 0 at the pull-off, where dP/dwidth = 0).
 
-Load against approach delta_work (a testing machine): each point's contact parameter is a nuisance, found on the
-part of the sub-critical branch that is stable under the stated control (section 8.3; jkrcyl.fit.model.segment):
-the variable without a stated error is exact (P under 'load' control when neither is stated, delta_work under
-'grip-work'), and a_i solves the model for it (a monotone 1-D root); with both errors stated a_i minimises the
-weighted distance of the point from the curve (orthogonal-distance regression, two residuals per point).
+Load against approach delta_work (a testing machine): each point's contact parameter a_i is a nuisance, the point
+of the part of the sub-critical branch stable under the stated control (section 8.3; jkrcyl.fit.model.segment)
+nearest to the measurement in the metric of the standard deviations (orthogonal-distance regression, two
+residuals per point).  A variable without a stated error (P under 'load' control when neither is stated,
+delta_work under 'grip-work') is treated as exact: its standard deviation is set EXACT times the other's (scaled
+by the data's slope), so a_i is the root of the model for it to 1e-3 of the noise, while a point beyond the end
+of the stable segment (a load below the pull-off force) keeps a smooth, steep penalty instead of a kink.
 """
 from __future__ import annotations
 
@@ -18,6 +20,7 @@ import numpy as np
 from . import model
 
 CONTROLS = ("load", "grip-work")
+EXACT = 1e-3          # standard deviation of an 'exact' variable relative to the other one's (see above)
 
 
 class Problem:
@@ -29,7 +32,6 @@ class Problem:
         self.data, self.spec, self.R, self.control = data, spec, R, control
         self.sigma_known = data.sigma_P is not None or data.sigma_x is not None
         self.a = model.a_of_width(data.x, R) if data.kind == "width" else None
-        self.clamped = np.zeros(data.n, dtype=bool)     # delta_work: points beyond the stable segment
         if data.kind == "width":
             self.mode = "width"
         elif data.sigma_P is not None and data.sigma_x is not None:
@@ -38,10 +40,38 @@ class Problem:
             self.mode = "approach-exact"     # delta_work exact, residual in P
         else:
             self.mode = "load-exact"         # P exact, residual in delta_work
+        # without stated errors the residuals are divided by a nominal 1 % of the measured range, so that they are
+        # O(1) whatever the units (least_squares' tolerances are absolute); the scale is estimated from them later
+        measured = data.x if self.mode == "load-exact" else data.P
+        self.nominal = 1.0 if self.sigma_known else 1e-2 * (float(np.ptp(measured)) or float(np.abs(measured).max())
+                                                            or 1.0)
+        if data.kind == "delta_work":
+            slope = max(np.ptp(data.P), 1e-300) / max(np.ptp(data.x), 1e-300)      # [N/m per m]
+            ones = np.full(data.n, self.nominal)
+            sP = ones if data.sigma_P is None else data.sigma_P
+            sx = ones if data.sigma_x is None else data.sigma_x
+            if self.mode == "load-exact":
+                sP = EXACT * sx * slope
+            elif self.mode == "approach-exact":
+                sx = EXACT * sP / slope
+            self.sigma_P, self.sigma_x = sP, sx
 
     @property
     def n_residuals(self):
-        return 2 * self.data.n if self.mode == "both" else self.data.n
+        return self.data.n if self.mode == "width" else 2 * self.data.n
+
+    @property
+    def nuisance(self):
+        """Fitted contact parameters (one per point for delta_work data)."""
+        return 0 if self.mode == "width" else self.data.n
+
+    def report(self, u):
+        """(raw, normalised) residuals of the measured variable(s): P for width data; for delta_work data the
+        variable with an error (delta_work under 'load-exact', P under 'approach-exact', both stacked)."""
+        raw, norm = self.residuals(u, normalised=False), self.residuals(u)
+        n = self.data.n
+        pick = {"load-exact": slice(n, 2 * n), "approach-exact": slice(0, n)}.get(self.mode, slice(None))
+        return raw[pick], norm[pick]
 
     def residuals(self, u, normalised=True):
         """Measured minus model, divided by the stated standard deviations (normalised=False: raw)."""
@@ -55,8 +85,10 @@ class Problem:
         d = self.data
         p = model.parts(self.R, inp.materials, self.a, slopes=d.sigma_x is not None)
         r = d.P - p.load(inp.f, inp.Delta, inp.w)
-        if not self.sigma_known or not normalised:
+        if not normalised:
             return r
+        if not self.sigma_known:
+            return r / self.nominal
         var = np.zeros(d.n) if d.sigma_P is None else d.sigma_P ** 2
         if d.sigma_x is not None:
             dadx = (1 + self.a ** 2) / (4 * self.R)              # a = tan(x/(4R))
@@ -74,21 +106,20 @@ class Problem:
 
     # --- load against approach --------------------------------------------------------------------------------
     def states(self, u):
-        """Contact parameters a_i of the points on the stable segment, and the flags of clamped points."""
+        """Contact parameters a_i of the points (on the stable segment)."""
         inp = self.spec.inputs(u)
-        return self._solve_points(inp)
+        return self._closest(model.branch(self.R, inp.materials), inp, *self.segments(inp))
 
     def _approach(self, inp, normalised=True):
-        a = self._solve_points(inp)
-        p = model.branch(self.R, inp.materials).parts(a)
+        br = model.branch(self.R, inp.materials)
+        a = self._closest(br, inp, *self.segments(inp))
+        p = br.parts(a)
         d = self.data
         rP = d.P - p.load(inp.f, inp.Delta, inp.w)
         rx = d.x - inp.offset - p.approach(inp.f, inp.Delta, inp.w)
-        sP = 1.0 if d.sigma_P is None or not normalised else d.sigma_P
-        sx = 1.0 if d.sigma_x is None or not normalised else d.sigma_x
-        if self.mode == "both":
-            return np.concatenate([rP / sP, rx / sx])
-        return rP / sP if self.mode == "approach-exact" else rx / sx
+        if normalised:
+            rP, rx = rP / self.sigma_P, rx / self.sigma_x
+        return np.concatenate([rP, rx])
 
     def segments(self, inp):
         """Per point (lo, hi) of the stable segment under the control."""
@@ -101,45 +132,24 @@ class Problem:
             lo[sel], hi[sel] = (br.a_min, br.a_max) if seg is None else seg
         return lo, hi
 
-    def _solve_points(self, inp):
-        d = self.data
-        br = model.branch(self.R, inp.materials)
-        lo, hi = self.segments(inp)
-        f, D, w = inp.f, inp.Delta, inp.w
-        if self.mode == "load-exact":
-            g = lambda p, k=0: p.load(f, D, w, k)
-            target = d.P
-        elif self.mode == "approach-exact":
-            g = lambda p, k=0: p.approach(f, D, w, k)
-            target = d.x - inp.offset
-        else:
-            return self._closest(br, inp, lo, hi)
-        vlo, vhi = g(br.parts(lo)), g(br.parts(hi))
-        self.clamped = (target < vlo) | (target > vhi)
-
-        def fun(a):
-            p = br.parts(a)
-            return g(p) - target, g(p, 1)
-        return _bracketed_root(fun, lo.copy(), hi.copy(), vlo - target, vhi - target)
-
     def _closest(self, br, inp, lo, hi):
-        """a_i minimising ((P_i - P(a))/sP)^2 + ((x_i - off - dw(a))/sx)^2 on [lo_i, hi_i] (2-D distance)."""
-        d, f, D = self.data, inp.f, inp.Delta
+        """a_i minimising ((P_i - P(a))/sP)^2 + ((x_i - off - dw(a))/sx)^2 on [lo_i, hi_i]: the best table node
+        (clipped to the segment), then Newton on the derivative between its neighbours."""
+        d, f, D, sP, sx = self.data, inp.f, inp.Delta, self.sigma_P, self.sigma_x
         nodes = br.nodes()
-        inside = (nodes[None, :] >= lo[:, None]) & (nodes[None, :] <= hi[:, None])
+        cand = np.clip(nodes[None, :], lo[:, None], hi[:, None])          # (points, nodes), inside each segment
         pn = br.parts(nodes)
-        # per distinct w: the curve on the nodes
-        best = np.empty(d.n)
+        best = np.empty(d.n, dtype=int)
         for wv in np.unique(inp.w):
             sel = np.nonzero(inp.w == wv)[0]
-            Pn, Xn = pn.load(f, D, wv), pn.approach(f, D, wv)
-            dist = (((d.P[sel, None] - Pn[None, :]) / d.sigma_P[sel, None]) ** 2
-                    + ((d.x[sel, None] - inp.offset - Xn[None, :]) / d.sigma_x[sel, None]) ** 2)
-            dist = np.where(inside[sel], dist, np.inf)
-            best[sel] = nodes[np.argmin(dist, axis=1)]
-        k = np.searchsorted(nodes, best)
-        a_lo = np.maximum(lo, nodes[np.maximum(k - 1, 0)])
-        a_hi = np.minimum(hi, nodes[np.minimum(k + 1, nodes.size - 1)])
+            Pn = np.interp(cand[sel], nodes, pn.load(f, D, wv))              # clipped ends: linear, only a seed
+            Xn = np.interp(cand[sel], nodes, pn.approach(f, D, wv))
+            dist = (((d.P[sel, None] - Pn) / sP[sel, None]) ** 2
+                    + ((d.x[sel, None] - inp.offset - Xn) / sx[sel, None]) ** 2)
+            best[sel] = np.argmin(dist, axis=1)
+        rows = np.arange(d.n)
+        a_lo = cand[rows, np.maximum(best - 1, 0)]
+        a_hi = cand[rows, np.minimum(best + 1, nodes.size - 1)]
 
         def grad(a):
             p = br.parts(a)
@@ -147,19 +157,16 @@ class Problem:
             ex = d.x - inp.offset - p.approach(f, D, inp.w)
             P1, X1 = p.load(f, D, inp.w, 1), p.approach(f, D, inp.w, 1)
             P2, X2 = p.load(f, D, inp.w, 2), p.approach(f, D, inp.w, 2)
-            g = -2 * (eP * P1 / d.sigma_P ** 2 + ex * X1 / d.sigma_x ** 2)
-            h = 2 * ((P1 ** 2 - eP * P2) / d.sigma_P ** 2 + (X1 ** 2 - ex * X2) / d.sigma_x ** 2)
+            g = -2 * (eP * P1 / sP ** 2 + ex * X1 / sx ** 2)
+            h = 2 * ((P1 ** 2 - eP * P2) / sP ** 2 + (X1 ** 2 - ex * X2) / sx ** 2)
             return g, h
 
-        glo, _ = grad(a_lo)
-        ghi, _ = grad(a_hi)
-        self.clamped = np.zeros(d.n, dtype=bool)
-        return _bracketed_root(grad, a_lo, a_hi, glo, ghi)
+        return _bracketed_root(grad, a_lo, a_hi, grad(a_lo)[0], grad(a_hi)[0])
 
 
 def _bracketed_root(fun, lo, hi, flo, fhi, tol=1e-11, iterations=100):
     """Vectorised safeguarded Newton for increasing functions on [lo, hi] (fun(a) -> (value, slope)); where the
-    bracket holds no sign change the nearer end is returned (the point is clamped to the segment)."""
+    bracket holds no sign change, the end where the function is nearer to its zero side is returned."""
     out = np.where(flo >= 0, lo, hi)
     todo = (flo < 0) & (fhi > 0)
     if not todo.any():

@@ -32,7 +32,8 @@ class FitResult:
     correlation: np.ndarray
     residuals: np.ndarray
     normalised_residuals: np.ndarray
-    cost: float                   # sum of squared normalised residuals (2 x the robust cost for robust losses)
+    cost: float                   # sum of squared normalised residuals (of raw residuals when no error is stated;
+                                  # 2 x the robust cost for robust losses)
     dof: int
     sigma: float                  # residual scale: 1 when errors are stated, else sqrt(S/dof) in residual units
     confidence: float
@@ -72,7 +73,8 @@ class FitResult:
         mod = self.moduli
         rows.append(f"fitted pair: E_hole = {mod['E_hole']:.6g} Pa, E_pin = {mod['E_pin']:.6g} Pa, "
                     f"E* = {mod['E_star']:.6g} Pa; Delta = {self.Delta:.6g} m, R = {self.R:.6g} m")
-        scale = "errors as stated" if self.sigma == 1.0 and self.interval_method else f"residual scale {self.sigma:.4g}"
+        unit = "N/m" if self.kind == "width" or self._problem.mode != "load-exact" else "m"
+        scale = "errors as stated" if self._problem.sigma_known else f"residual scale {self.sigma:.4g} {unit}"
         rows.append(f"{self.n} points ({self.kind}), control {self.control}, loss {self.loss}, "
                     f"sum of squares {self.cost:.6g} on {self.dof} degrees of freedom ({scale}); "
                     f"intervals: {self.interval_method}")
@@ -112,11 +114,12 @@ class FitResult:
                  for k in self.names]
         ax.set_title("; ".join(parts), fontsize=8)
         ax.legend(fontsize=8)
-        res = self.normalised_residuals[: d.n] if self.normalised_residuals.size > d.n else self.normalised_residuals
+        res = self.normalised_residuals[: d.n]          # delta_work data with both errors: the load residuals
         axr.plot(d.x * 1e3, res, "o", ms=3.5)
         axr.axhline(0, color="0.4", lw=0.8)
         axr.set_xlabel(xlabel)
-        axr.set_ylabel("residual / sigma" if pr.sigma_known else "residual")
+        unit = "N/m" if d.kind == "width" or pr.mode != "load-exact" else "m"
+        axr.set_ylabel("residual / sigma" if pr.sigma_known else f"residual [{unit}]")
         fig.tight_layout()
         fig.savefig(path, dpi=150)
         plt.close(fig)
