@@ -412,3 +412,14 @@ def test_cli_nan_row_names_it(tmp_path):
     r = _cli(str(f))
     lines = r.stderr.strip().splitlines()
     assert r.returncode == 2 and len(lines) == 1 and "P: row 1 is NaN" in lines[0] and "Traceback" not in r.stderr
+
+
+@pytest.mark.slow
+def test_benchmark_smoke():
+    """benchmarks/bench_fit.py in smoke mode (tiny counts, one worker) so that it cannot rot; numbers not checked."""
+    run = subprocess.run([sys.executable, str(ROOT / "benchmarks" / "bench_fit.py"), "--replicates", "6",
+                          "--halfplane", "4", "--recovery", "2", "--workers", "1"], cwd=ROOT, capture_output=True,
+                         text=True, timeout=600)
+    assert run.returncode == 0, run.stdout + run.stderr
+    for row in ("speed:", "coverage of 95 % intervals", "half-plane limit", "recovery", "steel in aluminium"):
+        assert row in run.stdout, f"missing {row!r} in\n{run.stdout}"
