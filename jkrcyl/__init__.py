@@ -18,4 +18,12 @@ try:
 except PackageNotFoundError:         # running from a source tree that was never installed
     __version__ = "0.1.0"
 
-__all__ = ["__version__", "Contact", "Materials", "State", "a_crit", "zero_load_contact", "zero_load_max_M"]
+__all__ = ["__version__", "Contact", "Materials", "State", "a_crit", "fit", "zero_load_contact", "zero_load_max_M"]
+
+
+def __getattr__(name):
+    """jkrcyl.fit (fit w and the moduli to measurements) is imported on first use: it loads scipy.optimize."""
+    if name == "fit":
+        import importlib
+        return importlib.import_module(".fit", __name__)
+    raise AttributeError(f"module 'jkrcyl' has no attribute {name!r}")

@@ -189,3 +189,20 @@ def test_links_and_paths_stay_in_the_repository():
             assert (ROOT / target).exists(), target
     for path in re.findall(r"`((?:jkrcyl|tests|derive|reference|benchmarks|docs|generated)/[\w./-]*)`", README):
         assert (ROOT / path).exists(), path
+
+
+def test_fit_example_as_stated(namespace):
+    """README "Fitting measurements": the numbers in the comments are what jkrcyl.fit returns for docs/fit_example.csv
+    (to the digits stated), and the statement about the truth holds; the true contact modulus is E/(2(1 - nu^2))
+    for two equal bodies (beta* = 4(1 - nu^2)/E per body in plane strain, E* = 4/beta*)."""
+    res = namespace["res"]
+    text = README[README.index("## Fitting measurements"):README.index("## Layout")]
+    w, w_lo, w_hi = map(float, re.search(r"# ([\d.]+) J/m\^2, 95 %: \(([\d.]+), ([\d.]+)\)", text).groups())
+    E, E_lo, E_hi = map(float, re.search(r"E\* = 4/beta\*: ([\d.e]+) Pa, \(([\d.e]+), ([\d.e]+)\)", text).groups())
+    assert res.values["w"] == pytest.approx(w, abs=0.5e-5)
+    assert res.intervals["w"] == pytest.approx((w_lo, w_hi), abs=0.5e-5)
+    assert res.values["E"] == pytest.approx(E, abs=0.5e5) and res.intervals["E"] == pytest.approx((E_lo, E_hi), abs=0.5e5)
+    true_E = 2.6e9 / (2 * (1 - 0.3 ** 2))
+    assert f"E* = {true_E:.5g}".replace("e+09", "e9") in text
+    assert res.intervals["w"][0] < 0.05 < res.intervals["w"][1] and true_E < res.intervals["E"][0]
+    assert (namespace["_cwd"] / "fit.png").stat().st_size > 1000

@@ -8,6 +8,7 @@ command line.
     jkrcyl two-patch --M 0.4 --theta 1      # two-patch branches (top contact formed) as CSV or JSON
     jkrcyl two-patch --figure docs/confined.png   # load-approach paths through the confined regime
     jkrcyl solve | pull-off | cycle --E ... --w ...   # forward problems in physical units
+    jkrcyl fit data.csv --free w,E          # fit w and the moduli to measured load against width or approach
     jkrcyl atlas --out atlas                # regime map over (M, vartheta): atlas.npz, atlas.csv, PNG, PDF
 
 Normalised input (--M, --theta, --gb, --alpha-ratio) or physical input (--E --nu --E-I --nu-I --R --Delta --w):
@@ -18,10 +19,10 @@ import argparse
 import re
 import sys
 
-from . import adherence, atlas, curve, cycle, figures, pull_off, solve, two_patch
+from . import adherence, atlas, curve, cycle, figures, fit, pull_off, solve, two_patch
 
 EXIT_USAGE = 2
-COMMANDS = (figures, curve, adherence, two_patch, solve, pull_off, cycle, atlas)
+COMMANDS = (figures, curve, adherence, two_patch, solve, pull_off, cycle, fit, atlas)
 
 
 class _Parser(argparse.ArgumentParser):
@@ -42,7 +43,7 @@ def build_parser():
     from .. import __version__
     p.add_argument("--version", action="version", version=f"jkrcyl {__version__}")
     sub = p.add_subparsers(dest="command", metavar="command", parser_class=_Parser,
-                           title="commands (figures, curve, adherence, two-patch, solve, pull-off, cycle, atlas)")
+                           title="commands (figures, curve, adherence, two-patch, solve, pull-off, cycle, fit, atlas)")
     sub.required = True
     for module in COMMANDS:
         module.register(sub)

@@ -1,0 +1,210 @@
+"""Residuals of the two kinds of measurement, normalised by the stated standard deviations.
+
+Load against width (Chaudhury et al. 1996, Barquins 1988): the state at each width is explicit,
+a = tan(width/(4R)), P = f Delta p1(a) - sqrt(f w) p2(a) (jkrcyl.fit.model).  An error sigma_width on the width
+enters as the effective variance sigma_P^2 + (dP/dwidth sigma_width)^2 + (d2P/dwidth2 sigma_width^2)^2/2 (the
+variance of P(width + e) to second order, so that it stays > 0 at the pull-off, where dP/dwidth = 0).
+
+Load against approach delta_work (a testing machine): each point's contact parameter a_i is a nuisance, the point
+of the part of the sub-critical branch stable under the stated control (section 8.3; jkrcyl.fit.model.segment)
+nearest to the measurement in the metric of the standard deviations (orthogonal-distance regression, two
+residuals per point).  A variable without a stated error (P under 'load' control when neither is stated,
+delta_work under 'grip-work') is treated as exact: its standard deviation is set EXACT times the other's (scaled
+by the data's slope), so a_i is the root of the model for it to 1e-3 of the noise, while a point beyond the end
+of the stable segment (a load below the pull-off force) keeps a smooth, steep penalty instead of a kink.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from . import model
+
+CONTROLS = ("load", "grip-work")
+EXACT = 1e-3          # standard deviation of an 'exact' variable relative to the other one's (see above)
+
+
+class Problem:
+    """residuals(u) -> normalised residual vector for the internal coordinates u of a :class:`params.Spec`."""
+
+    def __init__(self, data, spec, R, control):
+        if control not in CONTROLS:
+            raise ValueError(f"control must be one of {', '.join(CONTROLS)}, got {control!r}")
+        self.data, self.spec, self.R, self.control = data, spec, R, control
+        self.sigma_known = data.sigma_P is not None or data.sigma_x is not None
+        self.a = model.a_of_width(data.x, R) if data.kind == "width" else None
+        if data.kind == "width":
+            self.mode = "width"
+        elif data.sigma_P is not None and data.sigma_x is not None:
+            self.mode = "both"
+        elif data.sigma_P is not None or (data.sigma_x is None and control == "grip-work"):
+            self.mode = "approach-exact"     # delta_work exact, residual in P
+        else:
+            self.mode = "load-exact"         # P exact, residual in delta_work
+        # without stated errors the residuals are divided by a nominal 1 % of the measured range, so that they are
+        # O(1) whatever the units (least_squares' tolerances are absolute); the scale is estimated from them later
+        measured = data.x if self.mode == "load-exact" else data.P
+        self.nominal = 1.0 if self.sigma_known else 1e-2 * (float(np.ptp(measured)) or float(np.abs(measured).max())
+                                                            or 1.0)
+        if data.kind == "delta_work":
+            slope = max(np.ptp(data.P), 1e-300) / max(np.ptp(data.x), 1e-300)      # [N/m per m]
+            ones = np.full(data.n, self.nominal)
+            sP = ones if data.sigma_P is None else data.sigma_P
+            sx = ones if data.sigma_x is None else data.sigma_x
+            if self.mode == "load-exact":
+                sP = EXACT * sx * slope
+            elif self.mode == "approach-exact":
+                sx = EXACT * sP / slope
+            self.sigma_P, self.sigma_x = sP, sx
+
+    @property
+    def n_residuals(self):
+        return self.data.n if self.mode == "width" else 2 * self.data.n
+
+    @property
+    def nuisance(self):
+        """Fitted contact parameters (one per point for delta_work data)."""
+        return 0 if self.mode == "width" else self.data.n
+
+    def report(self, u):
+        """(raw, normalised) residuals of the measured variable(s): P for width data; for delta_work data the
+        variable with an error (delta_work under 'load-exact', P under 'approach-exact', both stacked)."""
+        raw, norm = self.residuals(u, normalised=False), self.residuals(u)
+        n = self.data.n
+        pick = {"load-exact": slice(n, 2 * n), "approach-exact": slice(0, n)}.get(self.mode, slice(None))
+        return raw[pick], norm[pick]
+
+    def residuals(self, u, normalised=True):
+        """Measured minus model, divided by the stated standard deviations (normalised=False: raw)."""
+        inp = self.spec.inputs(u)
+        if self.mode == "width":
+            return self._width(inp, normalised)
+        return self._approach(inp, normalised)
+
+    # --- load against width -------------------------------------------------------------------------------
+    def _width(self, inp, normalised=True):
+        d = self.data
+        p = model.parts(self.R, inp.materials, self.a, slopes=d.sigma_x is not None)
+        r = d.P - p.load(inp.f, inp.Delta, inp.w)
+        if not normalised:
+            return r
+        if not self.sigma_known:
+            return r / self.nominal
+        var = np.zeros(d.n) if d.sigma_P is None else d.sigma_P ** 2
+        if d.sigma_x is not None:
+            dadx = (1 + self.a ** 2) / (4 * self.R)              # a = tan(x/(4R))
+            d2adx2 = 2 * self.a * dadx / (4 * self.R)
+            P1, P2 = p.load(inp.f, inp.Delta, inp.w, 1), p.load(inp.f, inp.Delta, inp.w, 2)
+            Px, Pxx = P1 * dadx, P2 * dadx ** 2 + P1 * d2adx2
+            var = var + (Px * d.sigma_x) ** 2 + 0.5 * (Pxx * d.sigma_x ** 2) ** 2
+        return r / np.sqrt(var)
+
+    def curve_width(self, u, width):
+        """Model load [N/m] at contact widths [m] (one w: the loading leg's)."""
+        inp = self.spec.inputs(u)
+        a = model.a_of_width(width, self.R)
+        return model.parts(self.R, inp.materials, a).load(inp.f, inp.Delta, inp.w[0] if np.ndim(inp.w) else inp.w)
+
+    # --- load against approach --------------------------------------------------------------------------------
+    def states(self, u):
+        """Contact parameters a_i of the points (on the stable segment)."""
+        inp = self.spec.inputs(u)
+        return self._closest(model.branch(self.R, inp.materials), inp, *self.segments(inp))
+
+    def _approach(self, inp, normalised=True):
+        br = model.branch(self.R, inp.materials)
+        a = self._closest(br, inp, *self.segments(inp))
+        p = br.parts(a)
+        d = self.data
+        rP = d.P - p.load(inp.f, inp.Delta, inp.w)
+        rx = d.x - inp.offset - p.approach(inp.f, inp.Delta, inp.w)
+        if normalised:
+            rP, rx = rP / self.sigma_P, rx / self.sigma_x
+        return np.concatenate([rP, rx])
+
+    def segments(self, inp):
+        """Per point (lo, hi) of the stable segment under the control."""
+        quantity = "load" if self.control == "load" else "approach"
+        lo, hi = np.empty(self.data.n), np.empty(self.data.n)
+        br = model.branch(self.R, inp.materials)
+        for wv in np.unique(inp.w):
+            seg = model.segment(self.R, inp.materials, inp.f, inp.Delta, wv, quantity)
+            sel = inp.w == wv
+            lo[sel], hi[sel] = (br.a_min, br.a_max) if seg is None else seg
+        return lo, hi
+
+    def _closest(self, br, inp, lo, hi):
+        """a_i minimising ((P_i - P(a))/sP)^2 + ((x_i - off - dw(a))/sx)^2 on [lo_i, hi_i]: the best table node
+        (clipped to the segment), then Newton on the derivative between its neighbours."""
+        d, f, D, sP, sx = self.data, inp.f, inp.Delta, self.sigma_P, self.sigma_x
+        nodes = br.nodes()
+        cand = np.clip(nodes[None, :], lo[:, None], hi[:, None])          # (points, nodes), inside each segment
+        pn = br.parts(nodes)
+        best = np.empty(d.n, dtype=int)
+        for wv in np.unique(inp.w):
+            sel = np.nonzero(inp.w == wv)[0]
+            Pn = np.interp(cand[sel], nodes, pn.load(f, D, wv))              # clipped ends: linear, only a seed
+            Xn = np.interp(cand[sel], nodes, pn.approach(f, D, wv))
+            dist = (((d.P[sel, None] - Pn) / sP[sel, None]) ** 2
+                    + ((d.x[sel, None] - inp.offset - Xn) / sx[sel, None]) ** 2)
+            best[sel] = np.argmin(dist, axis=1)
+        rows = np.arange(d.n)
+        a_lo = cand[rows, np.maximum(best - 1, 0)]
+        a_hi = cand[rows, np.minimum(best + 1, nodes.size - 1)]
+
+        def grad(a):
+            p = br.parts(a)
+            eP = d.P - p.load(f, D, inp.w)
+            ex = d.x - inp.offset - p.approach(f, D, inp.w)
+            P1, X1 = p.load(f, D, inp.w, 1), p.approach(f, D, inp.w, 1)
+            P2, X2 = p.load(f, D, inp.w, 2), p.approach(f, D, inp.w, 2)
+            g = -2 * (eP * P1 / sP ** 2 + ex * X1 / sx ** 2)
+            h = 2 * ((P1 ** 2 - eP * P2) / sP ** 2 + (X1 ** 2 - ex * X2) / sx ** 2)
+            return g, h
+
+        return _bracketed_root(grad, a_lo, a_hi, grad(a_lo)[0], grad(a_hi)[0])
+
+
+def _bracketed_root(fun, lo, hi, flo, fhi, tol=1e-11, iterations=100):
+    """Vectorised safeguarded Newton for increasing functions on [lo, hi] (fun(a) -> (value, slope)); where the
+    bracket holds no sign change, the end where the function is nearer to its zero side is returned."""
+    out = np.where(flo >= 0, lo, hi)
+    todo = (flo < 0) & (fhi > 0)
+    if not todo.any():
+        return out
+    lo, hi = lo[todo], hi[todo]
+    x = np.sqrt(lo * hi)
+    active = np.ones(x.size, dtype=bool)
+    sub = _Subset(fun, todo)
+    for _ in range(iterations):
+        v, s = sub(x)
+        neg = v < 0
+        lo = np.where(neg, x, lo)
+        hi = np.where(neg, hi, x)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = x - v / s
+        bad = ~((step >= lo) & (step <= hi)) | ~np.isfinite(step)
+        x_new = np.where(bad, np.sqrt(lo * hi), step)
+        converged = (np.abs(x_new - x) <= tol * x) | (hi - lo <= tol * lo) | (v == 0)
+        x = np.where(active, np.where(v == 0, x, x_new), x)
+        active &= ~converged
+        if not active.any():
+            break
+    out[todo] = x
+    return out
+
+
+class _Subset:
+    """fun restricted to the points of a mask (fun works on all points at once: pad the others)."""
+
+    def __init__(self, fun, mask):
+        self.fun, self.mask = fun, mask
+        self.full = None
+
+    def __call__(self, x):
+        if self.full is None:
+            self.full = np.ones(self.mask.size)
+        a = self.full.copy()
+        a[self.mask] = x
+        a[~self.mask] = x[0]
+        v, s = self.fun(a)
+        return v[self.mask], s[self.mask]
