@@ -21,10 +21,10 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from ..contact import Contact
 from ..materials import Materials
+from ..numerics import roots as _roots
 
 W_REF = 1.0          # [J/m^2] the adhesive part is computed at this w and scaled by sqrt(w/W_REF)
 LOG_STEP = 1e-4      # central differences in log a for the slopes of the parts (error ~1e-8 relative) ...
@@ -134,24 +134,9 @@ def _cached_parts(R, materials, a_bytes):
 
 @functools.lru_cache(maxsize=32)
 def pole(R, materials) -> float:
-    """a at the receding-contact pole of the single arc (a_crit of (4.4) at alpha* = 0, inf for a rigid cradle
-    then); for alpha* != 0 the first a where the adhesionless load p1 changes sign from +inf to -inf, found
-    on the parts themselves (root of 1/p1)."""
-    if materials.closed_form:
-        c = contact(R, R * 1e-3, 0.0, materials)
-        return c.a_crit
-    # scan upward in eps in chunks and stop at the first sign change: the solver's cost grows with eps (nodes)
-    grid = np.tan(np.linspace(0.02, math.pi - 0.02, 80) / 2)
-    for start in range(0, grid.size, 10):
-        chunk = grid[start:start + 10]
-        neg = np.nonzero(_raw_parts(R, materials, chunk)[0] <= 0)[0]
-        if neg.size:
-            i = start + int(neg[0])
-            break
-    else:
-        return math.inf
-    inv = lambda x: 1.0 / _raw_parts(R, materials, np.array([x]))[0][0]
-    return brentq(inv, grid[i - 1], grid[i], xtol=1e-15, rtol=1e-14)
+    """a at the receding-contact pole of the single arc: Contact.a_crit, the single-patch solver's pole (a_crit of
+    (4.4) at alpha* = 0, inf for a rigid cradle then; the zero of 1/P without adhesion for any other pair)."""
+    return contact(R, R * 1e-3, 0.0, materials).a_crit
 
 
 def branch_top(R, materials) -> float:
@@ -241,7 +226,7 @@ def _slope_root(br, f, Delta, w, quantity, lo, hi):
     def slope(x):
         p = br.parts(np.array([x]))
         return float((p.load(f, Delta, w, 1) if quantity == "load" else p.approach(f, Delta, w, 1))[0])
-    return brentq(slope, lo, hi, xtol=1e-15 * lo, rtol=1e-13)
+    return _roots.brent(lambda x, _: slope(x), lo, hi)
 
 
 def fold(R, materials, f, Delta, w, quantity="load"):
