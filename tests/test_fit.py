@@ -73,13 +73,22 @@ def test_superposition_and_scaling_equal_direct_states(E, E_I, nu, nu_I, f, w, d
 
 
 def test_pole_against_three_references():
+    """mpmath root of the denominator of (4.4); the zero of 1/P without adhesion from the two-arc engine's unit
+    cases (not the single-arc solver behind Contact.a_crit); finite elements."""
     import mpmath
-    from jkrcyl.numerics import arcs
+    from scipy.optimize import brentq
+    from jkrcyl.numerics.arcs import two_patch_linear
     th = POLYMER.theta
     ref = mpmath.findroot(lambda a: 2 * th - mpmath.log(1 + a * a) - 2 * a ** 4, 0.9)
     assert model.pole(0.01, POLYMER) == pytest.approx(float(ref), rel=1e-13)
     gb = STEEL.inv_G_I / STEEL.beta
-    assert model.pole(0.01, STEEL) == pytest.approx(arcs.a_crit(STEEL.theta, gb, STEEL.alpha_ratio), rel=1e-9)
+
+    def inv_P(a):
+        lin = two_patch_linear(2 * math.atan(a), 0.0, STEEL.theta, gb, 48, STEEL.alpha_ratio)
+        q0, q1 = lin.q0, lin.q1
+        return q1[2] / (q0[0] * q1[2] - q0[2] * q1[0])
+    ac = model.pole(0.01, STEEL)
+    assert brentq(inv_P, 0.999 * ac, 1.001 * ac, xtol=1e-15) == pytest.approx(ac, rel=1e-9)
     assert math.degrees(2 * math.atan(model.pole(0.02, RUBBER))) == pytest.approx(111.79, abs=0.1)   # FE
 
 

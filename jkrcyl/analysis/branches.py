@@ -46,7 +46,7 @@ def grid(pb: Problem, regime: str, n: int, small=0, a_max=None) -> np.ndarray:
         bottom = max(min(A_SMALLEST, (pb.m / 2) ** (2 / 3) / 100), 1e-100)
         if bottom < a[0]:
             a = np.concatenate([np.geomspace(bottom, a[0], small, endpoint=False), a])
-    return a[a <= A_MAX]
+    return a[a <= min(A_MAX, sv.a_max)]
 
 
 def _curve(pb: Problem, regime: str, a) -> Curve:

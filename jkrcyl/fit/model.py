@@ -24,6 +24,7 @@ import numpy as np
 
 from ..contact import Contact
 from ..materials import Materials
+from ..model.single_patch import resolution as _resolution
 from ..numerics import roots as _roots
 
 W_REF = 1.0          # [J/m^2] the adhesive part is computed at this w and scaled by sqrt(w/W_REF)
@@ -102,6 +103,15 @@ class Parts:
 KEYS = ("p1", "p2", "q1", "q2")
 
 
+def _exact(materials):
+    """The library's solver for this pair rounds at the double-precision level (its closed forms)."""
+    return _resolution(materials)[0] <= 1e-14
+
+
+def _step(materials):
+    return LOG_STEP if _exact(materials) else LOG_STEP_NUMERIC
+
+
 def _raw_parts(R, materials, a):
     """(p1, p2, q1, q2) at the contact parameters a (1-D array) from two library states."""
     d_ref = R * 1e-3                                  # any Delta in (0, R): the part is linear in it
@@ -118,7 +128,7 @@ def parts(R, materials, a, slopes=False) -> Parts:
     a = np.atleast_1d(np.asarray(a, dtype=float))
     if not slopes:
         return Parts(a, *_cached_parts(R, materials, a.tobytes()))
-    h = LOG_STEP if materials.closed_form else LOG_STEP_NUMERIC
+    h = _step(materials)
     mid, up, down = (_cached_parts(R, materials, (a * math.exp(s)).tobytes()) for s in (0.0, h, -h))
     d1, d2 = {}, {}
     for k, m, u, dn in zip(KEYS, mid, up, down):
@@ -159,11 +169,11 @@ class Branch:
         from scipy.interpolate import CubicHermiteSpline
         self.top = branch_top(R, materials)
         self.pole = pole(R, materials)
-        decades = DECADES if materials.closed_form else DECADES_NUMERIC
+        decades = DECADES if _exact(materials) else DECADES_NUMERIC
         a = self.top * np.logspace(-decades, 0, decades * PER_DECADE + 1)
         a[-1] = self.top
         self.a_min, self.a_max = a[0], a[-1]
-        h = LOG_STEP if materials.closed_form else LOG_STEP_NUMERIC
+        h = _step(materials)
         # slopes of the weighted parts y = part (1 - a/a_crit) by central differences in log a: y is smooth
         # through the pole, the parts alone are not (differences of them would carry (h/(1 - a/a_crit))^2)
         y = [[v * self._weight(a * math.exp(s))[0] for v in _cached_parts(R, materials, (a * math.exp(s)).tobytes())]

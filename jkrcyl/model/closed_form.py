@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 
+from .._validate import A_MAX
 from ..numerics import kernels as _k
 from ..numerics import roots as _roots
 from .patch import SinglePatch, Slice
@@ -23,6 +24,8 @@ class ClosedForm(SinglePatch):
     """The normalised single patch from the closed forms."""
 
     dense_points = 4000        # points of a branch's search table (jkrcyl.analysis.branches)
+    a_max = A_MAX              # the closed forms hold (and are stable) over the whole domain of a
+    noise = 1e-15
 
     def __init__(self, problem):
         self.problem = problem

@@ -16,9 +16,11 @@ class Collocation(SinglePatch):
     """Normalised single patch (Delta = 1): slopes by central differences of the physical state per point."""
 
     dense_points = 400             # one collocation solve per point (three with the slopes)
+    noise = 1e-11                  # ~1e-12 at alpha* = 0, ~1e-11 otherwise (numerics.arcs.nodes_for)
 
     def __init__(self, problem):
         self.problem = problem
+        self.a_max = _one.resolved_a_max(problem.alpha_ratio)
 
     def states(self, a) -> Slice:
         pb = self.problem

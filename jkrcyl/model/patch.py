@@ -42,6 +42,8 @@ class SinglePatch:
 
     problem: Problem
     dense_points: int          # points of a branch's search table: what the solver's cost allows
+    a_max: float               # the largest contact parameter the solver resolves (the tables stop there)
+    noise: float               # relative rounding of its states (what a difference quotient must stay above)
 
     def states(self, a) -> Slice:                       # pragma: no cover - interface
         raise NotImplementedError

@@ -36,6 +36,13 @@ def solver(problem: Problem) -> SinglePatch:
     return ClosedForm(problem) if closed_form(problem.alpha_ratio) else Collocation(problem)
 
 
+def resolution(materials):
+    """(noise, a_max) of the single-patch solver of a material pair: the relative rounding of its states and the
+    largest contact parameter it resolves (for callers that tune differences or tables to the solver)."""
+    sv = solver(Problem.of_materials(materials))
+    return sv.noise, sv.a_max
+
+
 @functools.lru_cache(maxsize=64)
 def physical(contact, method="auto"):
     """The dimensional single-patch solver of a jkrcyl.Contact (any clearance, Delta = 0 included): states,

@@ -117,6 +117,17 @@ def nodes(eps, ar):
     return _arcs.nodes_for(eps, ar)
 
 
+def resolved_a_max(ar):
+    """The largest contact parameter the node policy resolves: beyond it the node count is capped (the density
+    varies on the scale of the gap pi - eps between the arc's ends) and the states lose digits (~1e-10 at twice
+    this a).  Found on the policy itself: the first a, up a geometric ladder, whose node count is the cap."""
+    cap = nodes(math.pi - 1e-12, ar)
+    a = 10.0
+    while nodes(2 * math.atan(a * 1.05), ar) < cap:
+        a *= 1.05
+    return a
+
+
 @functools.lru_cache(maxsize=None)
 def _half_tables(n, enriched):
     """The tables of numerics.arcs._tables restricted to the table points x >= 0 (the even half of one arc)."""
