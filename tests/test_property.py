@@ -173,14 +173,14 @@ def test_zero_load_contact_finite(M, theta):
 
 
 @FAST
-@given(M=M_values, theta=theta_values, gb=st.one_of(st.none(), st.floats(0.0, 1.0)),
+@given(M=M_values, theta=theta_values, gb=st.floats(0.0, 1.0),     # gb is required (issue 18 item 7)
        regime=st.sampled_from(eq.REGIMES), n=st.integers(2, 30))
 def test_curve_finite(M, theta, gb, regime, n):
     if math.isinf(theta) and regime == "super-critical":
         with pytest.raises(ValueError, match="regime"):
             eq.curve(M, theta, regime=regime, n=n, gb=gb)
         return
-    if gb is not None and not math.isinf(theta):
+    if not math.isinf(theta):
         gb = min(gb, 1 - 1 / (2 * theta))          # (1/G_I)/beta* <= 1 - 1/(2 vartheta) for a real pair
     try:
         cv = eq.curve(M, theta, regime=regime, n=n, gb=gb)
