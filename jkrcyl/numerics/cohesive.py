@@ -25,57 +25,43 @@ import math
 from collections import namedtuple
 
 import numpy as np
-from numba import njit
-from scipy.linalg import lu_factor, lu_solve
 from scipy.optimize import brentq
 
 from ..generated import cohesive as _gc
+from .._validate import count, finite_scalar, theta as _check_theta
 from . import arcs as _arcs
 from . import arcs_enrich as _en
+from . import cohesive_kernels as _ck
 
 CohesiveState = namedtuple("CohesiveState", [
     "eps", "c", "zones", "p", "delta_over_Delta", "delta_work_over_Delta", "h_pi_over_Delta", "k", "B",
-    "m", "s0", "h0_over_Delta", "n", "solution"])
+    "m", "s0", "h0_over_Delta", "n", "fields"])
 CohesiveState.__doc__ = """One Maugis-Dugdale state (normalised; see the module docstring).
 
-eps: contact half-angle [rad] (0: no contact); c: zone end [rad] (pi when the zone reaches round);
-zones: 'bottom' (the zone |phi| < c), 'all' (the whole exterior within the range), 'none'; p = P beta*/(4 pi Delta);
-delta_over_Delta (the paper's delta), delta_work_over_Delta = delta/Delta + (gb/2) p (work conjugate of P);
-h_pi_over_Delta: the gap at phi = pi; k: edge coefficient at the contact end (0: finite stress), B = int nu dphi;
-m, s0, h0_over_Delta: the law; n: collocation nodes; solution: the fields (gap, pressure)."""
+eps: contact half-angle [rad] (0: no contact); c: zone end [rad] (pi when the zone reaches round); zones: 'bottom'
+(the zone |phi| < c), 'all' (the whole exterior within the range); p = P beta*/(4 pi Delta); delta_over_Delta (the
+paper's delta), delta_work_over_Delta = delta/Delta + (gb/2) p (work conjugate of P); h_pi_over_Delta: the gap
+at phi = pi; k: edge coefficient at the contact end (0: finite stress); B = int nu dphi; m, s0, h0_over_Delta:
+the law; n: collocation nodes (0 without contact); fields: .gap(phi), .pressure(phi)."""
 
 NODES_MIN = 24            # alpha* = 0: a contact far from its zone ends (spectral, ~1e-13)
 NODES_PER_ZONE = 14       # nodes per sqrt(eps/(c - eps)): the Bernstein ellipse through the zone end (~1e-10)
 NODES_MAX = 512
 NODES_ALPHA = 8           # alpha* != 0: node counts in multiples of 8 (one enrichment table per count)
 NODES_MAX_ALPHA = 256
-SCAN_FACTOR = 1.25        # upward scan for the first zone-end root
+SCAN_FACTOR = 1.25        # upward scan for the first zone-end root: steps x 1.25, at most 0.05 rad
 SCAN_STEP = 0.05
-
-
-@njit(cache=True)
-def _zone_sum(phi, zones, k0, k1, ar, out):
-    """out[i] = sum over the zones (lo, hi) of int_lo^hi K(phi_i - psi) dpsi (closed form)."""
-    for i in range(phi.size):
-        acc = 0.0
-        for j in range(zones.shape[0]):
-            acc += _gc.zone_displacement(ar=ar, hi=zones[j, 1], k0=k0, k1=k1, lo=zones[j, 0], phi=phi[i])
-        out[i] = acc
-    return out
 
 
 def zone_displacement(phi, zones, kernel):
     """Z(phi) = int over the zones of K(phi - psi) dpsi; zones: (k, 2) array of (lo, hi) in [-pi, pi]."""
     phi = np.ascontiguousarray(np.atleast_1d(phi), dtype=float)
-    return _zone_sum(phi, np.ascontiguousarray(zones, dtype=float), kernel.k0, kernel.k1, kernel.ar,
-                     np.empty(phi.size))
+    return _ck.zone_sum(phi, np.ascontiguousarray(zones, dtype=float), kernel.k0, kernel.k1, kernel.ar)
 
 
 def zones_of(c):
     """The zone set as (lo, hi) rows: the bottom zone |phi| < c, or the whole circle for c >= pi."""
-    if c >= math.pi:
-        return np.array([[-math.pi, math.pi]])
-    return np.array([[-c, c]]) if c > 0 else np.zeros((0, 2))
+    return _ck.zones_of(float(c))
 
 
 def zone_load(zones):
@@ -96,17 +82,19 @@ class FixedContact:
     def __init__(self, eps, kernel, n):
         self.eps, self.kernel = float(eps), kernel
         sy = self.sys = _arcs.Arcs([(0.0, self.eps)], kernel, n)
-        self.phi = self.eps * sy._xt                  # collocation angles
-        self.lu = lu_factor(sy.A, check_finite=False)
-        rhs = np.column_stack([-2 * np.sin(self.phi / 2) ** 2, np.cos(self.phi)])
-        self.U = lu_solve(self.lu, rhs, check_finite=False)
+        phin = self.eps * sy._xt                      # collocation angles
+        lu, perm = _ck.lu_factor(sy.A)
+        U0 = _ck.lu_solve(lu, perm, -2 * np.sin(phin / 2) ** 2)
+        U1 = _ck.lu_solve(lu, perm, np.cos(phin))
         nn, mm = sy.n, sy.m
         ek = np.empty(nn + mm)                        # u -> k (arcs.Arcs.edge)
-        ek[:nn] = -(np.ones(nn) @ sy.D)
+        ek[:nn] = -sy.D.sum(axis=0)
         ek[nn:] = -_en.G_END[:mm]
         self.ek = ek / math.sqrt(2 * self.eps)
-        self.k_unit = self.ek @ self.U
-        self.k_adj = lu_solve(self.lu, self.ek, trans=1, check_finite=False)   # k of a right-hand side r = k_adj.r
+        kadj = _ck.lu_solve_transposed(lu, perm, self.ek)    # k of a right-hand side r is kadj . r
+        sf, gf = _arcs._fine_grid()
+        self.fx = (lu, perm, phin, U0, U1, float(self.ek @ U0), float(self.ek @ U1), kadj, kernel.k0, kernel.k1,
+                   kernel.ar, sy._ac, sy._ae, sy.s, sy.D, sy._Lam, sy._Sig, sy._omega, sy._gcs, sy._gss, sf, gf)
         nodes = self.eps * sy.s                       # u -> int v cos, int v (arcs.Arcs.moments)
         self.ep = self._moment_vector(np.cos(nodes))
         self.eb = self._moment_vector(np.ones_like(nodes))
@@ -118,28 +106,19 @@ class FixedContact:
         out[sy.n:] = [sy._mu[j] @ (sy.D @ f) for j in range(sy.m)]
         return out
 
-    def rows(self, phi):
-        """Gap rows: u -> -int_contact v K(phi - psi) dpsi at the exterior angles phi."""
-        phi = np.ascontiguousarray(np.atleast_1d(phi), dtype=float)
-        z = np.zeros_like(phi)
-        rows = self.sys.operator(z, phi)
-        if self.sys.m:
-            rows = np.hstack([rows, self.sys.enrichment(z, phi)])
-        return rows
-
     def solve(self, zones, s0):
         """(delta/Delta, u) with k = 0 for the zone set: v for the rhs clearance + delta cos - s0 Z."""
-        rz = -zone_displacement(self.phi, zones, self.kernel)
-        kz = self.k_adj @ rz
-        dn = -(self.k_unit[0] + s0 * kz) / self.k_unit[1]
-        u = self.U[:, 0] + dn * self.U[:, 1] + s0 * lu_solve(self.lu, rz, check_finite=False)
-        return dn, u
+        return _ck.solve_zone(self.fx, np.ascontiguousarray(zones, dtype=float), float(s0))
 
     def gap(self, phi, dn, u, zones, s0):
         """h/Delta at exterior angles phi."""
-        phi = np.atleast_1d(np.asarray(phi, dtype=float))
-        return (2 * np.sin(phi / 2) ** 2 - dn * np.cos(phi) + self.rows(phi) @ u
-                + s0 * zone_displacement(phi, zones, self.kernel))
+        phi = np.ascontiguousarray(np.atleast_1d(phi), dtype=float)
+        return _ck.gap(self.fx, phi, float(dn), u, np.ascontiguousarray(zones, dtype=float), float(s0))
+
+    def zone_end(self, s0, h0, d_start):
+        """Zone length c - eps with h(c) = h0 (None: h < h0 up to pi); see cohesive_kernels.zone_end."""
+        d = _ck.zone_end(self.fx, self.eps, float(s0), float(h0), float(d_start), SCAN_FACTOR, SCAN_STEP)
+        return None if d < 0 else d
 
 
 def nodes_for(eps, zone, ar=0.0):
@@ -208,57 +187,45 @@ def _state(eps, c, fc, dn, u, zones, m, s0, kernel, gb, n):
                          n, f)
 
 
-def _zone_root(fc, s0, h0, d_start):
-    """Zone length d = c - eps with h(eps + d) = h0: the first sign change of h - h0 upward from d_start
-    (steps x SCAN_FACTOR, at most SCAN_STEP rad: the zone end can have several roots, the first one is the
-    branch that tends to JKR as s0 -> inf), then Brent.  Returns None when h < h0 up to c = pi (the zone reaches
-    round).  Below d_start the zone may be unresolved by the nodes: there F(0) = -h0 (h(eps) = 0) brackets."""
-    eps = fc.eps
-    d_max = math.pi - eps
-
-    def F(d):
-        zones = zones_of(eps + d)
-        dn, u = fc.solve(zones, s0)
-        return fc.gap(eps + d, dn, u, zones, s0)[0] - h0
-
-    d = min(d_start, d_max / 2)
-    f = F(d)
-    if f < 0:
-        while f < 0:
-            if d >= d_max:
-                return None
-            lo = d
-            d = min(d * SCAN_FACTOR, d + SCAN_STEP, d_max)
-            f = F(d)
-        hi = d
-    else:
-        hi, lo = d, 0.0
-        for _ in range(6):
-            d /= 2
-            if F(d) < 0:
-                lo = d
-                break
-            hi = d
-    return brentq(lambda x: F(x) if x > 0 else -h0, lo, hi, xtol=4 * np.finfo(float).eps * eps, rtol=1e-15)
+def _law(m, s0, theta, gb, ar):
+    """Validated (m, s0, Kernel)."""
+    m = finite_scalar("m", m, low=0.0)
+    s0 = finite_scalar("s0", s0, low=0.0, low_open=True)
+    theta = _check_theta(theta)
+    gb = finite_scalar("gb", gb, low=0.0)
+    ar = finite_scalar("ar", ar, low=-1.0, high=1.0, low_open=True)
+    return m, s0, _arcs.Kernel(theta, gb, ar)
 
 
 def cohesive_state(eps, m, s0, theta, gb, ar=0.0, n=None):
     """The Maugis-Dugdale state with the contact |phi| < eps (normalised; module docstring).
 
-    eps: contact half-angle in (0, pi) [rad]; m = M vartheta (M_R* for vartheta = inf); s0 = sigma0 R beta*/(4 pi
-    Delta) > 0; theta = vartheta (inf: rigid cradle); gb = (1/G_I)/beta*; ar = alpha*/beta*; n: nodes (default:
-    from the zone length, ~1e-10).  The zone is the bottom one |phi| < c with h(c) = h0, or the whole exterior
-    when h <= h0 there up to phi = pi (zones = 'all', c = pi; delta from k = 0 only).
+    eps: contact half-angle in (0, pi) [rad]; m = M vartheta (M_R* for vartheta = inf; m = 0: no adhesion, the
+    adhesionless state); s0 = sigma0 R beta*/(4 pi Delta) > 0; theta = vartheta >= 1/2 (inf: rigid cradle);
+    gb = (1/G_I)/beta*; ar = alpha*/beta*; n: nodes (default: from the zone length, ~1e-10).  The zone is the
+    bottom one |phi| < c with h(c) = h0 (the first root above the Dugdale estimate: the branch that tends to
+    JKR as s0 -> inf), or the whole exterior when h <= h0 up to phi = pi (zones = 'all', c = pi; delta from
+    k = 0 only).  Feasibility (gap >= 0, the law obeyed everywhere): :func:`gap_check`.
     """
-    kernel = _arcs.Kernel(theta, gb, ar)
+    eps = finite_scalar("eps", eps, low=0.0, high=math.pi, low_open=True)
+    if eps >= math.pi:
+        raise ValueError(f"eps must be in (0, pi), got {eps:g}")
+    m, s0, kernel = _law(m, s0, theta, gb, ar)
+    nn = None if n is None else count("n", n, 8, NODES_MAX)
+    if m == 0.0:                                     # no adhesion: no zone, the adhesionless (k = 0) state
+        fc = FixedContact(eps, kernel, nn or nodes_for(eps, 0.0, kernel.ar))
+        zones = np.zeros((0, 2))
+        dn, u = fc.solve(zones, 0.0)
+        return _state(eps, eps, fc, dn, u, zones, m, s0, kernel, gb, fc.sys.n)
     h0 = m * m / s0
     d_guess = dugdale_zone(m, s0)
-    nn = n or nodes_for(eps, d_guess, ar)
+    n_fixed = nn
+    nn = nn or nodes_for(eps, d_guess, kernel.ar)
     for _ in range(3):
         fc = FixedContact(eps, kernel, nn)
-        d = _zone_root(fc, s0, h0, d_guess / 2)
+        d = fc.zone_end(s0, h0, d_guess / 2)
         c = math.pi if d is None else eps + d
-        need = n or nodes_for(eps, c - eps, ar)
+        need = n_fixed or nodes_for(eps, c - eps, kernel.ar)
         if need <= nn:
             break
         nn, d_guess = need, c - eps
@@ -268,12 +235,74 @@ def cohesive_state(eps, m, s0, theta, gb, ar=0.0, n=None):
 
 
 def contactless_state(c, m, s0, theta, gb, ar=0.0):
-    """The state without contact whose zone is |phi| < c (0 < c < pi, c != pi/2), closed form.
+    """The state without contact whose zone is |phi| < c, in closed form (0 < c < pi, c != pi/2).
 
-    delta/Delta from h(c) = h0 (linear: h = (1 - cos phi) - (delta/Delta) cos phi + s0 Z(phi)); p = -2 s0 sin c.
-    Meaningful (feasible) while 0 <= h <= h0 on the zone and h > h0 outside (see check_gap)."""
-    kernel = _arcs.Kernel(theta, gb, ar)
+    delta/Delta from h(c) = h0, linear since h = (1 - cos phi) - (delta/Delta) cos phi + s0 Z(phi); p = -2 s0 sin c.
+    (At c = pi/2 the approach drops out of h(c) and there is no such state.)  Feasible while 0 <= h <= h0 on
+    the zone and h > h0 outside (:func:`gap_check`): from the pin touching the bottom (h(0) = 0,
+    :func:`contactless_touch`) down to c -> 0 (the pin at distance h0)."""
+    c = finite_scalar("c", c, low=0.0, high=math.pi, low_open=True)
+    m, s0, kernel = _law(m, s0, theta, gb, ar)
+    if m == 0.0:
+        raise ValueError("m must be > 0 for a contactless cohesive state (w > 0), got 0")
+    if c >= math.pi or abs(math.cos(c)) < 1e-12:
+        raise ValueError(f"c must be in (0, pi) and not pi/2, got {c:g}")
     zones = zones_of(c)
     h0 = m * m / s0
     dn = (2 * math.sin(c / 2) ** 2 + s0 * zone_displacement(c, zones, kernel)[0] - h0) / math.cos(c)
     return _state(0.0, c, None, dn, None, zones, m, s0, kernel, gb, 0)
+
+
+def contactless_touch(m, s0, theta, gb, ar=0.0, eps_small=1e-6):
+    """The contactless state that touches, h(0) = 0: the end eps -> 0 of the contact branch, where it joins the
+    contactless states (found from the zone of the contact state at eps_small, refined on h(0) = 0).  None when
+    that zone reaches round (zones 'all': the pin floats, p = 0, :func:`floating_range`)."""
+    m, s0, kernel = _law(m, s0, theta, gb, ar)
+    if m == 0.0:
+        return None
+    c0 = cohesive_state(eps_small, m, s0, theta, gb, ar).c
+    if c0 >= math.pi:
+        return None
+
+    def h_bottom(c):
+        return contactless_state(c, m, s0, theta, gb, ar).fields.gap(0.0)[0]
+
+    # bracket the root next to c0 without crossing the pole of the approach at c = pi/2
+    lo_end, hi_end = (0.0, math.pi / 2) if c0 < math.pi / 2 else (math.pi / 2, math.pi)
+    for width in 1e-6 * 4.0 ** np.arange(12):
+        lo, hi = max(c0 * (1 - width), lo_end + 1e-9), min(c0 * (1 + width), hi_end - 1e-9)
+        if h_bottom(lo) * h_bottom(hi) < 0:
+            c = brentq(h_bottom, lo, hi, xtol=1e-15, rtol=1e-15)
+            return contactless_state(c, m, s0, theta, gb, ar)
+    return None
+
+
+def floating_range(m, s0, theta, gb, ar=0.0):
+    """(lo, hi) of delta/Delta of the states without contact whose zone is the whole circle (h0 >= 2 minus the
+    uniform pull: every gap in (0, h0]); p = 0 for all of them (a uniform traction has no resultant).  None if
+    empty.  The gap is (1 - cos phi) - (delta/Delta) cos phi + s0 Z_all, Z_all = 2 pi (k0 - 1 + ar) (constant)."""
+    m, s0, kernel = _law(m, s0, theta, gb, ar)
+    zc = s0 * zone_displacement(0.0, zones_of(math.pi), kernel)[0]
+    h0 = m * m / s0
+    # h(0) = -d + zc and h(pi) = 2 + d + zc bound the gap (d > -1: it rises monotonically from 0 to pi)
+    lo, hi = max(zc - h0, -2 - zc, -1.0), min(zc, h0 - 2 - zc)
+    return (lo, hi) if lo < hi else None
+
+
+GapCheck = namedtuple("GapCheck", ["min_gap", "max_zone_gap", "min_free_gap", "feasible"])
+
+
+def gap_check(state, n_points=400):
+    """The gap on a grid of the exterior (clustered at the contact and zone ends): its minimum (>= 0 wanted),
+    its maximum on the zones (<= h0) and minimum off them (> h0: else the law would put traction there)."""
+    n_points = count("n_points", n_points, 8)
+    eps, c = state.eps, state.c
+    t = (1 - np.cos(np.linspace(0, math.pi, n_points))) / 2
+    zone = eps + (min(c, math.pi) - eps) * t
+    free = c + (math.pi - c) * t[1:] if c < math.pi else np.zeros(0)
+    hz = state.fields.gap(zone[1:] if eps > 0 else zone)
+    hf = state.fields.gap(free) if free.size else np.array([math.inf])
+    h0 = state.h0_over_Delta
+    tol = 1e-9 * max(1.0, h0)
+    min_gap = min(hz.min(), hf.min())
+    return GapCheck(min_gap, hz.max(), hf.min(), bool(min_gap >= -tol and hz.max() <= h0 + tol and hf.min() >= h0 - tol))

@@ -1,0 +1,195 @@
+"""numba kernels of the Maugis-Dugdale solver (jkrcyl.numerics.cohesive): LU solves, zone displacements and
+the zone-end residual h(c) - h0 with its root, all compiled (no BLAS call: small threaded BLAS calls leave
+OpenBLAS workers spinning and slow the many small solves of a root search by 100x on a loaded machine).
+
+Notation as jkrcyl.numerics.cohesive: a fixed contact |phi| < eps with the collocation matrix of
+jkrcyl.numerics.arcs (unknowns u: node values, then the alpha* enrichment), the contact unknown v = nu + s0,
+zones (lo, hi) rows in [-pi, pi].  A fixed contact is the tuple
+fx = (lu, perm, phi_nodes, U0, U1, k_unit0, k_unit1, k_adjoint, k0, k1, ar, ac, ae, s, D, Lam, Sig, omega, gcs, gss,
+      s_fine, g_fine)
+(its LU, collocation angles, the clearance and approach solutions, their edge coefficients, the adjoint of the
+edge coefficient, the kernel constants and the tables of jkrcyl.numerics.arcs).
+"""
+import math
+
+import numpy as np
+from numba import njit
+
+from ..generated import cohesive as _gc
+from . import arcs_kernels as _ak
+from . import roots
+
+PI = math.pi
+
+
+@njit(cache=True)
+def lu_factor(A):
+    """LU with partial pivoting of a copy of A: (lu, perm) with A[perm] = L U (L unit lower)."""
+    n = A.shape[0]
+    lu = A.copy()
+    perm = np.arange(n)
+    for k in range(n):
+        p = k
+        big = abs(lu[k, k])
+        for i in range(k + 1, n):
+            if abs(lu[i, k]) > big:
+                big, p = abs(lu[i, k]), i
+        if p != k:
+            for j in range(n):
+                lu[k, j], lu[p, j] = lu[p, j], lu[k, j]
+            perm[k], perm[p] = perm[p], perm[k]
+        piv = lu[k, k]
+        if piv == 0.0:
+            continue
+        for i in range(k + 1, n):
+            f = lu[i, k] / piv
+            lu[i, k] = f
+            if f != 0.0:
+                for j in range(k + 1, n):
+                    lu[i, j] -= f * lu[k, j]
+    return lu, perm
+
+
+@njit(cache=True)
+def lu_solve(lu, perm, b):
+    """x with A x = b."""
+    n = b.size
+    x = np.empty(n)
+    for i in range(n):
+        x[i] = b[perm[i]]
+    for i in range(n):
+        acc = x[i]
+        for j in range(i):
+            acc -= lu[i, j] * x[j]
+        x[i] = acc
+    for i in range(n - 1, -1, -1):
+        acc = x[i]
+        for j in range(i + 1, n):
+            acc -= lu[i, j] * x[j]
+        x[i] = acc / lu[i, i]
+    return x
+
+
+@njit(cache=True)
+def lu_solve_transposed(lu, perm, b):
+    """y with A^T y = b (the adjoint: a linear functional of the solution as a dot product with the rhs)."""
+    n = b.size
+    z = b.copy()
+    for i in range(n):                      # U^T z = b
+        acc = z[i]
+        for j in range(i):
+            acc -= lu[j, i] * z[j]
+        z[i] = acc / lu[i, i]
+    for i in range(n - 1, -1, -1):          # L^T w = z
+        acc = z[i]
+        for j in range(i + 1, n):
+            acc -= lu[j, i] * z[j]
+        z[i] = acc
+    y = np.empty(n)
+    for i in range(n):
+        y[perm[i]] = z[i]
+    return y
+
+
+@njit(cache=True)
+def zone_sum(phi, zones, k0, k1, ar):
+    """Z(phi_i) = sum over the zones (lo, hi) of int_lo^hi K(phi_i - psi) dpsi (closed form)."""
+    out = np.empty(phi.size)
+    for i in range(phi.size):
+        acc = 0.0
+        for j in range(zones.shape[0]):
+            acc += _gc.zone_displacement(ar=ar, hi=zones[j, 1], k0=k0, k1=k1, lo=zones[j, 0], phi=phi[i])
+        out[i] = acc
+    return out
+
+
+@njit(cache=True)
+def zones_of(c):
+    """Rows (lo, hi): the bottom zone |phi| < c, or the whole circle for c >= pi."""
+    z = np.empty((1, 2))
+    z[0, 0], z[0, 1] = (-PI, PI) if c >= PI else (-c, c)
+    return z
+
+
+@njit(cache=True)
+def solve_zone(fx, zones, s0):
+    """(delta/Delta, u) of the fixed contact fx with the zones: k = 0 eliminates delta (module docstring)."""
+    (lu, perm, phin, U0, U1, ku0, ku1, kadj, k0, k1, ar) = fx[:11]
+    rz = -zone_sum(phin, zones, k0, k1, ar)
+    kz = 0.0
+    for i in range(rz.size):
+        kz += kadj[i] * rz[i]
+    dn = -(ku0 + s0 * kz) / ku1
+    uz = lu_solve(lu, perm, rz)
+    return dn, U0 + dn * U1 + s0 * uz
+
+
+@njit(cache=True)
+def gap_rows(fx, phi):
+    """Rows u -> -int_contact v K(phi - psi) dpsi at exterior angles phi (arcs.Arcs.operator, .enrichment)."""
+    (k0, k1, ar, ac, ae, s, D, Lam, Sig, omega, gcs, gss, sfine, gfine) = fx[8:22]
+    n, m = s.size, omega.shape[0]
+    rows = np.empty((phi.size, n + m))
+    cen = np.zeros(phi.size)
+    _ak.operator(cen, phi, ac, ae, s, D, k0, k1, ar, rows, 0)
+    if m:
+        _ak.enrichment(cen, phi, ac, ae, s, k0, k1, ar, False, Lam, Sig, omega, gcs, gss, sfine, gfine, rows, n)
+    return rows
+
+
+@njit(cache=True)
+def gap(fx, phi, dn, u, zones, s0):
+    """h/Delta at exterior angles phi: (1 - cos) - (delta/Delta) cos - int v K + s0 Z."""
+    k0, k1, ar = fx[8], fx[9], fx[10]
+    rows = gap_rows(fx, phi)
+    zs = zone_sum(phi, zones, k0, k1, ar)
+    out = np.empty(phi.size)
+    for i in range(phi.size):
+        acc = 0.0
+        for j in range(u.size):
+            acc += rows[i, j] * u[j]
+        out[i] = 2 * math.sin(phi[i] / 2) ** 2 - dn * math.cos(phi[i]) + acc + s0 * zs[i]
+    return out
+
+
+@njit(cache=True)
+def _residual(d, args):
+    """h(eps + d) - h0 with the zone |phi| < eps + d (F(0) = -h0: h vanishes at the contact end)."""
+    fx, eps, s0, h0 = args
+    if d <= 0.0:
+        return -h0
+    c = eps + d
+    zones = zones_of(c)
+    dn, u = solve_zone(fx, zones, s0)
+    return gap(fx, np.array([c]), dn, u, zones, s0)[0] - h0
+
+
+_brent = roots.brent_solver(_residual)
+
+
+@njit(cache=True)
+def zone_end(fx, eps, s0, h0, d_start, factor, step):
+    """Zone length d with h(eps + d) = h0: the first sign change upward from d_start (steps x factor, at most
+    step rad), then Brent; -1 when h < h0 up to c = pi (the zone reaches round).  Below d_start the zone may be
+    unresolved by the nodes, so a root below is bracketed with F(0) = -h0."""
+    args = (fx, eps, s0, h0)
+    d_max = PI - eps
+    d = min(d_start, d_max / 2)
+    f = _residual(d, args)
+    if f < 0:
+        lo, flo = d, f
+        while f < 0:
+            if d >= d_max:
+                return -1.0
+            lo, flo = d, f
+            d = min(d * factor, d + step, d_max)
+            f = _residual(d, args)
+        return _brent(lo, d, flo, f, args)
+    hi, fhi = d, f
+    for _ in range(6):
+        d /= 2
+        f = _residual(d, args)
+        if f < 0:
+            return _brent(d, hi, f, fhi, args)
+        hi, fhi = d, f
+    return _brent(0.0, hi, -h0, fhi, args)
