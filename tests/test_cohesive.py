@@ -17,6 +17,7 @@ import jkrcyl
 from jkrcyl.numerics import arcs
 from jkrcyl.numerics import cohesive as co
 from jkrcyl.numerics import cohesive_scales as cs
+from jkrcyl.numerics import cohesive_zones as cz
 from reference import baney_hui as bh
 
 THETA, GB = 1.0, 0.5            # identical bodies, nu = 1/3 -- any alpha* = 0 pair; pairs below
@@ -107,15 +108,19 @@ def potential(s, w_factor=1.0):
     of the gap) plus the Dugdale interface energy int Phi(h), Phi = -m^2 + s0 min(h, h0) where h < h0 (0 beyond).
     Integrated by Gauss-Legendre from the returned fields (contact: phi = eps sin t; zones: clustered at both
     ends).  d(potential)/d(delta/Delta) = p along the states if (and only if) they are equilibria of the law."""
-    eps, c, dn, s0, m2 = s.eps, s.c, s.delta_over_Delta, s.s0, s.m ** 2 * w_factor
-    t = np.pi / 2 * XG
-    phi, jac = eps * np.sin(t), eps * np.cos(t) * np.pi / 2
-    contact = np.sum(WG * jac * s.fields.pressure(phi) * ((1 + dn) * np.cos(phi) - 1))
+    eps, dn, s0, m2 = s.eps, s.delta_over_Delta, s.s0, s.m ** 2 * w_factor
+    total = 0.0
+    if eps > 0:
+        t = np.pi / 2 * XG
+        phi, jac = eps * np.sin(t), eps * np.cos(t) * np.pi / 2
+        total += 0.5 * np.sum(WG * jac * s.fields.pressure(phi) * ((1 + dn) * np.cos(phi) - 1)) - m2 * 2 * eps
     t = np.pi * (XG + 1) / 2
-    phi, jac = eps + (c - eps) * (1 - np.cos(t)) / 2, (c - eps) * np.sin(t) * np.pi / 4
-    h = s.fields.gap(phi)
-    zone = 2 * np.sum(WG * jac * -s0 * (h - 2 * np.sin(phi / 2) ** 2 + dn * np.cos(phi)))
-    return 0.5 * (contact + zone) - m2 * 2 * c + s0 * 2 * np.sum(WG * jac * h)
+    for lo, hi in [(eps, s.c)] + ([(math.pi - s.c_top, math.pi)] if s.c_top > 0 else []):
+        phi, jac = lo + (hi - lo) * (1 - np.cos(t)) / 2, (hi - lo) * np.sin(t) * np.pi / 4
+        h = s.fields.gap(phi)
+        e = h - 2 * np.sin(phi / 2) ** 2 + dn * np.cos(phi)             # both sides of phi = 0: factor 2
+        total += 2 * np.sum(WG * jac * (0.5 * -s0 * e - m2 + s0 * h))
+    return total
 
 
 def _stencil(f, states, h):
@@ -167,6 +172,36 @@ def test_equilibrium_and_the_law_on_a_fine_grid(lam, eps):
     assert co.gap_check(s).feasible
 
 
+def _nearest(states, c_top):
+    return min(states, key=lambda x: abs(x.c_top - c_top))
+
+
+def test_top_zone_bridges_are_equilibria():
+    """States with a second zone at the top (a bridge the pin pulls to itself; m = 0.4, lambda = 2.5): the gap is
+    h0 at both zone ends, and along the family (eps varies, the nearest bridge followed) d Pi/d eps =
+    p d(delta/Delta)/d eps to 1e-8 -- for the contact with two zones and for the pin without contact held by
+    two zones (then the bottom zone end c is the parameter)."""
+    m = 0.4
+    s0 = cs.zone_strength(2.5, m)
+    eps, h = 0.3, 1e-3
+    bridge = _nearest(cz.top_zone_states(eps, m, s0, THETA, GB), 0.116)
+    assert bridge.zones == "bottom+top" and co.gap_check(bridge, 2000).feasible
+    for phi in (bridge.c, math.pi - bridge.c_top):
+        assert bridge.fields.gap(phi)[0] == pytest.approx(bridge.h0_over_Delta, rel=1e-11)
+    S = {k: _nearest(cz.top_zone_states(eps + k * h, m, s0, THETA, GB, n=bridge.n), bridge.c_top)
+         for k in (-2, -1, 1, 2)}
+    work = bridge.p * _stencil(lambda x: x.delta_over_Delta, S, h)
+    assert abs(_stencil(potential, S, h) / work - 1) < 1e-8
+    c = 0.4
+    free = _nearest(cz.contactless_states(c, m, s0, THETA, GB), 0.084)
+    assert free.eps == 0 and free.zones == "bottom+top" and co.gap_check(free, 2000).feasible
+    assert free.fields.gap(math.pi - free.c_top)[0] == pytest.approx(free.h0_over_Delta, rel=1e-11)
+    assert free.p == pytest.approx(-2 * s0 * (math.sin(c) - math.sin(free.c_top)), rel=1e-14)
+    S = {k: _nearest(cz.contactless_states(c + k * h, m, s0, THETA, GB), free.c_top) for k in (-2, -1, 1, 2)}
+    work = free.p * _stencil(lambda x: x.delta_over_Delta, S, h)
+    assert abs(_stencil(potential, S, h) / work - 1) < 1e-8
+
+
 # --- 4. the range reaching the top: no adherence force --------------------------------------------------------
 @pytest.mark.parametrize("theta, gb, ar", [(1.0, 0.5, 0.0), (math.inf, 1.0, 0.0)])
 def test_range_above_2_Delta_gives_no_adherence(theta, gb, ar):
@@ -181,8 +216,8 @@ def test_range_above_2_Delta_gives_no_adherence(theta, gb, ar):
             s = co.cohesive_state(eps, m, s0, theta, gb, ar)
             if co.gap_check(s).feasible:
                 assert s.p >= 0, (lam, eps, s.p)
-        assert co.contactless_touch(m, s0, theta, gb, ar) is None
-        assert co.floating_range(m, s0, theta, gb, ar) is not None
+        assert cz.contactless_touch(m, s0, theta, gb, ar) is None
+        assert cz.floating_range(m, s0, theta, gb, ar) is not None
 
 
 def test_the_pin_hangs_without_contact():
@@ -191,7 +226,7 @@ def test_the_pin_hangs_without_contact():
     m = 0.4
     for lam in (1.0, 3.0, 10.0):
         s0 = cs.zone_strength(lam, m)
-        touch = co.contactless_touch(m, s0, THETA, GB)
+        touch = cz.contactless_touch(m, s0, THETA, GB)
         small = co.cohesive_state(1e-7, m, s0, THETA, GB)
         assert touch is not None and touch.p < 0 and co.gap_check(touch).feasible
         assert small.c == pytest.approx(touch.c, rel=1e-5)
@@ -251,7 +286,7 @@ def test_material_pairs(name):
     for k in ("p", "dn", "h"):
         ratio = (st[25.0][k] - ref[k]) * 25.0 ** 2 / ((st[12.5][k] - ref[k]) * 12.5 ** 2)
         assert abs(ratio - 1) < 0.05, (k, ratio)
-    touch, small = co.contactless_touch(m, s0, theta, gb, ar), co.cohesive_state(1e-7, m, s0, theta, gb, ar)
+    touch, small = cz.contactless_touch(m, s0, theta, gb, ar), co.cohesive_state(1e-7, m, s0, theta, gb, ar)
     assert touch is not None and small.p == pytest.approx(touch.p, rel=1e-5)
 
 
@@ -280,8 +315,8 @@ def test_scales_round_trip_and_physical_law():
     (lambda: co.cohesive_state(0.5, 0.4, 1.0, 0.3, 0.5), "theta"),
     (lambda: co.cohesive_state(0.5, 0.4, 1.0, 1.0, 0.5, ar=1.5), "ar"),
     (lambda: co.cohesive_state(0.5, 0.4, 1.0, 1.0, 0.5, n=2), "n"),
-    (lambda: co.contactless_state(0.5, 0.0, 1.0, 1.0, 0.5), "m"),
-    (lambda: co.contactless_state(math.pi / 2, 0.4, 1.0, 1.0, 0.5), "c"),
+    (lambda: cz.contactless_state(0.5, 0.0, 1.0, 1.0, 0.5), "m"),
+    (lambda: cz.contactless_state(math.pi / 2, 0.4, 1.0, 1.0, 0.5), "c"),
     (lambda: cs.zone_strength(1.0, 0.0), "m"),
     (lambda: cs.zone_strength(math.nan, 0.4), "lam"),
     (lambda: cs.zone_strength(-1.0, 0.4), "lam"),

@@ -34,12 +34,13 @@ from . import arcs_enrich as _en
 from . import cohesive_kernels as _ck
 
 CohesiveState = namedtuple("CohesiveState", [
-    "eps", "c", "zones", "p", "delta_over_Delta", "delta_work_over_Delta", "h_pi_over_Delta", "k", "B",
+    "eps", "c", "c_top", "zones", "p", "delta_over_Delta", "delta_work_over_Delta", "h_pi_over_Delta", "k", "B",
     "m", "s0", "h0_over_Delta", "n", "fields"])
 CohesiveState.__doc__ = """One Maugis-Dugdale state (normalised; see the module docstring).
 
-eps: contact half-angle [rad] (0: no contact); c: zone end [rad] (pi when the zone reaches round); zones: 'bottom'
-(the zone |phi| < c), 'all' (the whole exterior within the range); p = P beta*/(4 pi Delta); delta_over_Delta (the
+eps: contact half-angle [rad] (0: no contact); c: zone end [rad] (pi when the zone reaches round); c_top: the top
+zone |phi - pi| < c_top (0: none); zones: 'bottom' (the zone |phi| < c), 'bottom+top', 'all' (the whole exterior
+within the range); p = P beta*/(4 pi Delta); delta_over_Delta (the
 paper's delta), delta_work_over_Delta = delta/Delta + (gb/2) p (work conjugate of P); h_pi_over_Delta: the gap
 at phi = pi; k: edge coefficient at the contact end (0: finite stress); B = int nu dphi; m, s0, h0_over_Delta:
 the law; n: collocation nodes (0 without contact); fields: .gap(phi), .pressure(phi)."""
@@ -60,9 +61,10 @@ def zone_displacement(phi, zones, kernel):
     return _ck.zone_sum(phi, np.ascontiguousarray(zones, dtype=float), kernel.k0, kernel.k1, kernel.ar)
 
 
-def zones_of(c):
-    """The zone set as (lo, hi) rows: the bottom zone |phi| < c, or the whole circle for c >= pi."""
-    return _ck.zones_of(float(c))
+def zones_of(c, c_top=0.0):
+    """The zone set as (lo, hi) rows: the bottom zone |phi| < c and the top zone |phi - pi| < c_top, or the whole
+    circle when they meet (c + c_top >= pi)."""
+    return _ck.zones_of(float(c), float(c_top))
 
 
 def zone_load(zones):
@@ -116,9 +118,10 @@ class FixedContact:
         phi = np.ascontiguousarray(np.atleast_1d(phi), dtype=float)
         return _ck.gap(self.fx, phi, float(dn), u, np.ascontiguousarray(zones, dtype=float), float(s0))
 
-    def zone_end(self, s0, h0, d_start):
-        """Zone length c - eps with h(c) = h0 (None: h < h0 up to pi); see cohesive_kernels.zone_end."""
-        d = _ck.zone_end(self.fx, self.eps, float(s0), float(h0), float(d_start), SCAN_FACTOR, SCAN_STEP)
+    def zone_end(self, s0, h0, d_start, c_top=0.0):
+        """Zone length c - eps with h(c) = h0 (None: h < h0 up to pi - c_top); see cohesive_kernels.zone_end."""
+        d = _ck.zone_end(self.fx, self.eps, float(s0), float(h0), float(d_start), SCAN_FACTOR, SCAN_STEP,
+                         float(c_top))
         return None if d < 0 else d
 
 
@@ -174,7 +177,7 @@ class _Fields:
 
 
 # --- states ------------------------------------------------------------------------------------------------
-def _state(eps, c, fc, dn, u, zones, m, s0, kernel, gb, n):
+def _state(eps, c, fc, dn, u, zones, m, s0, kernel, gb, n, c_top=0.0):
     load, width = zone_load(zones)
     if fc is not None:
         p = fc.ep @ u - s0 * load
@@ -183,8 +186,13 @@ def _state(eps, c, fc, dn, u, zones, m, s0, kernel, gb, n):
     else:
         p, B, k = -s0 * load, -s0 * width, 0.0
     f = _Fields(fc, dn, u, zones, s0, kernel)
-    kind = "all" if c >= math.pi else ("bottom" if c > 0 else "none")
-    return CohesiveState(eps, c, kind, p, dn, dn + gb / 2 * p, f.gap(math.pi)[0], k, B, m, s0, m * m / s0,
+    if c + c_top >= math.pi:
+        c, c_top, kind = math.pi, 0.0, "all"
+    elif len(zones) == 0:
+        kind = "none"
+    else:
+        kind = "bottom+top" if c_top > 0 else "bottom"
+    return CohesiveState(eps, c, c_top, kind, p, dn, dn + gb / 2 * p, f.gap(math.pi)[0], k, B, m, s0, m * m / s0,
                          n, f)
 
 
@@ -235,61 +243,6 @@ def cohesive_state(eps, m, s0, theta, gb, ar=0.0, n=None):
     return _state(eps, c, fc, dn, u, zones, m, s0, kernel, gb, nn)
 
 
-def contactless_state(c, m, s0, theta, gb, ar=0.0):
-    """The state without contact whose zone is |phi| < c, in closed form (0 < c < pi, c != pi/2).
-
-    delta/Delta from h(c) = h0, linear since h = (1 - cos phi) - (delta/Delta) cos phi + s0 Z(phi); p = -2 s0 sin c.
-    (At c = pi/2 the approach drops out of h(c) and there is no such state.)  Feasible while 0 <= h <= h0 on
-    the zone and h > h0 outside (:func:`gap_check`): from the pin touching the bottom (h(0) = 0,
-    :func:`contactless_touch`) down to c -> 0 (the pin at distance h0)."""
-    c = finite_scalar("c", c, low=0.0, high=math.pi, low_open=True)
-    m, s0, kernel = _law(m, s0, theta, gb, ar)
-    if m == 0.0:
-        raise ValueError("m must be > 0 for a contactless cohesive state (w > 0), got 0")
-    if c >= math.pi or abs(math.cos(c)) < 1e-12:
-        raise ValueError(f"c must be in (0, pi) and not pi/2, got {c:g}")
-    zones = zones_of(c)
-    h0 = m * m / s0
-    dn = (2 * math.sin(c / 2) ** 2 + s0 * zone_displacement(c, zones, kernel)[0] - h0) / math.cos(c)
-    return _state(0.0, c, None, dn, None, zones, m, s0, kernel, gb, 0)
-
-
-def contactless_touch(m, s0, theta, gb, ar=0.0, eps_small=1e-6):
-    """The contactless state that touches, h(0) = 0: the end eps -> 0 of the contact branch, where it joins the
-    contactless states (found from the zone of the contact state at eps_small, refined on h(0) = 0).  None when
-    that zone reaches round (zones 'all': the pin floats, p = 0, :func:`floating_range`)."""
-    m, s0, kernel = _law(m, s0, theta, gb, ar)
-    if m == 0.0:
-        return None
-    c0 = cohesive_state(eps_small, m, s0, theta, gb, ar).c
-    if c0 >= math.pi:
-        return None
-
-    def h_bottom(c):
-        return contactless_state(c, m, s0, theta, gb, ar).fields.gap(0.0)[0]
-
-    # bracket the root next to c0 without crossing the pole of the approach at c = pi/2
-    lo_end, hi_end = (0.0, math.pi / 2) if c0 < math.pi / 2 else (math.pi / 2, math.pi)
-    for width in 1e-6 * 4.0 ** np.arange(12):
-        lo, hi = max(c0 * (1 - width), lo_end + 1e-9), min(c0 * (1 + width), hi_end - 1e-9)
-        if h_bottom(lo) * h_bottom(hi) < 0:
-            c = brentq(h_bottom, lo, hi, xtol=1e-15, rtol=1e-15)
-            return contactless_state(c, m, s0, theta, gb, ar)
-    return None
-
-
-def floating_range(m, s0, theta, gb, ar=0.0):
-    """(lo, hi) of delta/Delta of the states without contact whose zone is the whole circle (h0 >= 2 minus the
-    uniform pull: every gap in (0, h0]); p = 0 for all of them (a uniform traction has no resultant).  None if
-    empty.  The gap is (1 - cos phi) - (delta/Delta) cos phi + s0 Z_all, Z_all = 2 pi (k0 - 1 + ar) (constant)."""
-    m, s0, kernel = _law(m, s0, theta, gb, ar)
-    zc = s0 * zone_displacement(0.0, zones_of(math.pi), kernel)[0]
-    h0 = m * m / s0
-    # h(0) = -d + zc and h(pi) = 2 + d + zc bound the gap (d > -1: it rises monotonically from 0 to pi)
-    lo, hi = max(zc - h0, -2 - zc, -1.0), min(zc, h0 - 2 - zc)
-    return (lo, hi) if lo < hi else None
-
-
 GapCheck = namedtuple("GapCheck", ["min_gap", "max_zone_gap", "min_free_gap", "feasible"])
 
 
@@ -300,15 +253,17 @@ def gap_check(state, n_points=400):
     of the end enrichment (jkrcyl.numerics.arcs, a 4096-point grid) does not resolve the log kernel (errors up
     to ~1e-6 absolute within ~1e-7 eps of the end; the true gap there is ~ distance^(3/2) >= 0)."""
     n_points = count("n_points", n_points, 8)
-    eps, c = state.eps, state.c
-    t = (1 - np.cos(np.linspace(0, math.pi, n_points))) / 2
+    eps, c, ct = state.eps, state.c, state.c_top
     start = eps * (1 + GAP_END_SKIP) if state.fields.fc is not None and state.fields.fc.sys.m else eps
-    zone = start + (min(c, math.pi) - start) * t
-    free = c + (math.pi - c) * t[1:] if c < math.pi else np.zeros(0)
-    hz = state.fields.gap(zone[1:] if eps > 0 else zone)
-    hf = state.fields.gap(free) if free.size else np.array([math.inf])
+    t = (1 - np.cos(np.linspace(0, math.pi, n_points))) / 2
+    ends = sorted({start, min(c, math.pi), math.pi - ct, math.pi})
+    grid = np.unique(np.concatenate([a + (b - a) * t for a, b in zip(ends[:-1], ends[1:]) if b > a]))
+    grid = grid[grid > eps] if eps > 0 else grid
+    h = state.fields.gap(grid)
+    in_zone = (grid <= c) | (grid >= math.pi - ct) if ct > 0 else (grid <= c)
     h0 = state.h0_over_Delta
     tol = 1e-9 * max(1.0, h0)
-    min_gap = min(hz.min(), hf.min())
-    return GapCheck(min_gap, hz.max(), hf.min(),
-                    bool(min_gap >= -tol and hz.max() <= h0 + tol and hf.min() >= h0 - tol))
+    zone_max = h[in_zone].max() if in_zone.any() else -math.inf
+    free_min = h[~in_zone].min() if (~in_zone).any() else math.inf
+    return GapCheck(h.min(), zone_max, free_min,
+                    bool(h.min() >= -tol and zone_max <= h0 + tol and free_min >= h0 - tol))

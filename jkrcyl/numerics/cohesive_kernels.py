@@ -104,10 +104,22 @@ def zone_sum(phi, zones, k0, k1, ar):
 
 
 @njit(cache=True)
-def zones_of(c):
-    """Rows (lo, hi): the bottom zone |phi| < c, or the whole circle for c >= pi."""
-    z = np.empty((1, 2))
-    z[0, 0], z[0, 1] = (-PI, PI) if c >= PI else (-c, c)
+def zones_of(c, c_top=0.0):
+    """Rows (lo, hi): the bottom zone |phi| < c and the top zone |phi - pi| < c_top (two rows, split at pi), or the
+    whole circle when they meet (c + c_top >= pi)."""
+    if c + c_top >= PI:
+        z = np.empty((1, 2))
+        z[0, 0], z[0, 1] = -PI, PI
+        return z
+    rows = (1 if c > 0 else 0) + (2 if c_top > 0 else 0)
+    z = np.empty((rows, 2))
+    i = 0
+    if c > 0:
+        z[0, 0], z[0, 1] = -c, c
+        i = 1
+    if c_top > 0:
+        z[i, 0], z[i, 1] = PI - c_top, PI
+        z[i + 1, 0], z[i + 1, 1] = -PI, -PI + c_top
     return z
 
 
@@ -155,11 +167,11 @@ def gap(fx, phi, dn, u, zones, s0):
 @njit(cache=True)
 def _residual(d, args):
     """h(eps + d) - h0 with the zone |phi| < eps + d (F(0) = -h0: h vanishes at the contact end)."""
-    fx, eps, s0, h0 = args
+    fx, eps, s0, h0, c_top = args
     if d <= 0.0:
         return -h0
     c = eps + d
-    zones = zones_of(c)
+    zones = zones_of(c, c_top)
     dn, u = solve_zone(fx, zones, s0)
     return gap(fx, np.array([c]), dn, u, zones, s0)[0] - h0
 
@@ -168,12 +180,13 @@ _brent = roots.brent_solver(_residual)
 
 
 @njit(cache=True)
-def zone_end(fx, eps, s0, h0, d_start, factor, step):
-    """Zone length d with h(eps + d) = h0: the first sign change upward from d_start (steps x factor, at most
-    step rad), then Brent; -1 when h < h0 up to c = pi (the zone reaches round).  Below d_start the zone may be
-    unresolved by the nodes, so a root below is bracketed with F(0) = -h0."""
-    args = (fx, eps, s0, h0)
-    d_max = PI - eps
+def zone_end(fx, eps, s0, h0, d_start, factor, step, c_top):
+    """Zone length d with h(eps + d) = h0 (a top zone |phi - pi| < c_top given): the first sign change upward
+    from d_start (steps x factor, at most step rad), then Brent; -1 when h < h0 up to c = pi - c_top (the zone
+    reaches round, or meets the top zone).  Below d_start the zone may be unresolved by the nodes, so a root
+    below is bracketed with F(0) = -h0."""
+    args = (fx, eps, s0, h0, c_top)
+    d_max = PI - c_top - eps
     d = min(d_start, d_max / 2)
     f = _residual(d, args)
     if f < 0:
