@@ -25,7 +25,8 @@ import math
 from collections import namedtuple
 
 import numpy as np
-from scipy.optimize import brentq
+from scipy.linalg.lapack import dgetrf as _dgetrf
+from threadpoolctl import ThreadpoolController
 
 from ..generated import cohesive as _gc
 from .._validate import count, finite_scalar, theta as _check_theta
@@ -33,6 +34,7 @@ from . import arcs as _arcs
 from . import arcs_enrich as _en
 from . import cohesive_kernels as _ck
 
+_BLAS = ThreadpoolController()
 CohesiveState = namedtuple("CohesiveState", [
     "eps", "c", "c_top", "zones", "p", "delta_over_Delta", "delta_work_over_Delta", "h_pi_over_Delta", "k", "B",
     "m", "s0", "h0_over_Delta", "n", "fields"])
@@ -46,12 +48,13 @@ at phi = pi; k: edge coefficient at the contact end (0: finite stress); B = int 
 the law; n: collocation nodes (0 without contact); fields: .gap(phi), .pressure(phi)."""
 
 NODES_MIN = 24            # alpha* = 0: a contact far from its zone ends (spectral, ~1e-13)
-NODES_PER_ZONE = 14       # nodes per sqrt(eps/(c - eps)): the Bernstein ellipse through the zone end (~1e-10)
+NODES_PER_ZONE = 11       # nodes per sqrt(eps/(c - eps)): the Bernstein ellipse through the zone end (~1e-9)
 NODES_MAX = 1024
 NODES_ALPHA = 8           # alpha* != 0: node counts in multiples of 8 (one enrichment table per count)
 NODES_MAX_ALPHA = 256
 SCAN_FACTOR = 1.25        # upward scan for the first zone-end root: steps x 1.25, at most 0.05 rad
 SCAN_STEP = 0.05
+LAPACK_NODES = 96         # above: LAPACK's LU (blocked), below: the compiled one (no call overhead)
 GAP_END_SKIP = 1e-6        # gap_check, alpha* != 0: see there
 
 
@@ -76,6 +79,16 @@ def zone_load(zones):
     return load, width
 
 
+def _factor(A):
+    """LU of the collocation matrix: compiled for small systems, LAPACK getrf on one BLAS thread above
+    LAPACK_NODES (threaded BLAS calls leave workers spinning that slow the small solves that follow)."""
+    if A.shape[0] <= LAPACK_NODES:
+        return _ck.lu_factor(A)
+    with _BLAS.limit(limits=1, user_api="blas"):
+        lu, piv, _ = _dgetrf(A)
+    return lu, _ck.perm_of_pivots(piv)
+
+
 class FixedContact:
     """The contact |phi| < eps with n nodes: one LU, the unit solutions and the linear functionals.
 
@@ -86,17 +99,15 @@ class FixedContact:
         self.eps, self.kernel = float(eps), kernel
         sy = self.sys = _arcs.Arcs([(0.0, self.eps)], kernel, n)
         phin = self.eps * sy._xt                      # collocation angles
-        lu, perm = _ck.lu_factor(sy.A)
-        U0 = _ck.lu_solve(lu, perm, -2 * np.sin(phin / 2) ** 2)
-        U1 = _ck.lu_solve(lu, perm, np.cos(phin))
+        lu, perm = _factor(sy.A)
         nn, mm = sy.n, sy.m
         ek = np.empty(nn + mm)                        # u -> k (arcs.Arcs.edge)
         ek[:nn] = -sy.D.sum(axis=0)
         ek[nn:] = -_en.G_END[:mm]
         self.ek = ek / math.sqrt(2 * self.eps)
-        kadj = _ck.lu_solve_transposed(lu, perm, self.ek)    # k of a right-hand side r is kadj . r
+        U0, U1, kadj, k_0, k_1 = _ck.unit_solutions(lu, perm, phin, self.ek)
         sf, gf = _arcs._fine_grid()
-        self.fx = (lu, perm, phin, U0, U1, float(self.ek @ U0), float(self.ek @ U1), kadj, kernel.k0, kernel.k1,
+        self.fx = (lu, perm, phin, U0, U1, k_0, k_1, kadj, kernel.k0, kernel.k1,
                    kernel.ar, sy._ac, sy._ae, sy.s, sy.D, sy._Lam, sy._Sig, sy._omega, sy._gcs, sy._gss, sf, gf)
         nodes = self.eps * sy.s                       # u -> int v cos, int v (arcs.Arcs.moments)
         self.ep = self._moment_vector(np.cos(nodes))
@@ -117,6 +128,12 @@ class FixedContact:
         """h/Delta at exterior angles phi."""
         phi = np.ascontiguousarray(np.atleast_1d(phi), dtype=float)
         return _ck.gap(self.fx, phi, float(dn), u, np.ascontiguousarray(zones, dtype=float), float(s0))
+
+    def state(self, s0, h0, d_start, c_top=0.0):
+        """(zone length or None, delta/Delta, u, h(pi)/Delta) in one compiled call (cohesive_kernels.state)."""
+        d, dn, u, h_pi = _ck.state(self.fx, self.eps, float(s0), float(h0), float(d_start), SCAN_FACTOR, SCAN_STEP,
+                                   float(c_top))
+        return (None if d < 0 else d), dn, u, h_pi
 
     def zone_end(self, s0, h0, d_start, c_top=0.0):
         """Zone length c - eps with h(c) = h0 (None: h < h0 up to pi - c_top); see cohesive_kernels.zone_end."""
@@ -177,7 +194,7 @@ class _Fields:
 
 
 # --- states ------------------------------------------------------------------------------------------------
-def _state(eps, c, fc, dn, u, zones, m, s0, kernel, gb, n, c_top=0.0):
+def _state(eps, c, fc, dn, u, zones, m, s0, kernel, gb, n, c_top=0.0, h_pi=None):
     load, width = zone_load(zones)
     if fc is not None:
         p = fc.ep @ u - s0 * load
@@ -192,8 +209,8 @@ def _state(eps, c, fc, dn, u, zones, m, s0, kernel, gb, n, c_top=0.0):
         kind = "none"
     else:
         kind = "bottom+top" if c_top > 0 else "bottom"
-    return CohesiveState(eps, c, c_top, kind, p, dn, dn + gb / 2 * p, f.gap(math.pi)[0], k, B, m, s0, m * m / s0,
-                         n, f)
+    h_pi = f.gap(math.pi)[0] if h_pi is None else h_pi
+    return CohesiveState(eps, c, c_top, kind, p, dn, dn + gb / 2 * p, h_pi, k, B, m, s0, m * m / s0, n, f)
 
 
 def _law(m, s0, theta, gb, ar):
@@ -232,15 +249,13 @@ def cohesive_state(eps, m, s0, theta, gb, ar=0.0, n=None):
     nn = nn or nodes_for(eps, d_guess, kernel.ar)
     for _ in range(3):
         fc = FixedContact(eps, kernel, nn)
-        d = fc.zone_end(s0, h0, d_guess / 2)
+        d, dn, u, h_pi = fc.state(s0, h0, d_guess / 2)
         c = math.pi if d is None else eps + d
         need = n_fixed or nodes_for(eps, c - eps, kernel.ar)
         if need <= nn:
             break
         nn, d_guess = need, c - eps
-    zones = zones_of(c)
-    dn, u = fc.solve(zones, s0)
-    return _state(eps, c, fc, dn, u, zones, m, s0, kernel, gb, nn)
+    return _state(eps, c, fc, dn, u, zones_of(c), m, s0, kernel, gb, nn, h_pi=h_pi)
 
 
 GapCheck = namedtuple("GapCheck", ["min_gap", "max_zone_gap", "min_free_gap", "feasible"])

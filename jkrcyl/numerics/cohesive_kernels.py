@@ -206,3 +206,35 @@ def zone_end(fx, eps, s0, h0, d_start, factor, step, c_top):
             return _brent(d, hi, f, fhi, args)
         hi, fhi = d, f
     return _brent(0.0, hi, -h0, fhi, args)
+
+
+@njit(cache=True)
+def perm_of_pivots(piv):
+    """LAPACK getrf row interchanges (0-based: row i swapped with piv[i], in order) as a permutation."""
+    perm = np.arange(piv.size)
+    for i in range(piv.size):
+        j = piv[i]
+        perm[i], perm[j] = perm[j], perm[i]
+    return perm
+
+
+@njit(cache=True)
+def unit_solutions(lu, perm, phin, ek):
+    """The clearance and approach solutions (rhs -(1 - cos phi) = -2 sin^2(phi/2), cos phi), their edge
+    coefficients and the adjoint of the edge coefficient (k of a rhs r is kadj . r)."""
+    r0 = np.empty(phin.size)
+    r1 = np.empty(phin.size)
+    for i in range(phin.size):
+        r0[i] = -2 * math.sin(phin[i] / 2) ** 2
+        r1[i] = math.cos(phin[i])
+    U0, U1 = lu_solve(lu, perm, r0), lu_solve(lu, perm, r1)
+    return U0, U1, lu_solve_transposed(lu, perm, ek), np.dot(ek, U0), np.dot(ek, U1)
+
+
+@njit(cache=True)
+def state(fx, eps, s0, h0, d_start, factor, step, c_top):
+    """One call for a state: the zone length d (-1: the zone reaches round), delta/Delta, u and h(pi)/Delta."""
+    d = zone_end(fx, eps, s0, h0, d_start, factor, step, c_top)
+    zones = zones_of(PI if d < 0 else eps + d, c_top)
+    dn, u = solve_zone(fx, zones, s0)
+    return d, dn, u, gap(fx, np.array([PI]), dn, u, zones, s0)[0]
