@@ -8,8 +8,9 @@ Prints, in one run:
   * the error against the number of nodes at lambda = 10 (against n = 256) with the Bernstein-ellipse rate;
   * the JKR limit: lambda^2 (X - X_JKR) for p, delta/Delta, h(pi) (the O(lambda^-2) approach);
   * the half-plane limit against Baney-Hui (reference/baney_hui.py, run from the repository root);
-  * time per contactless state (closed form) and per touch state.
-Goal (issue 19): one cohesive state to 1e-8 in <= 1 ms.
+  * time per contactless state (closed form) and per touch state;
+  * the load-control pull-off: time, and its approach to JKR (lambda^4 times the difference) and to Baney-Hui.
+Goals (issue 19): one cohesive state to 1e-8 in <= 1 ms; a pull-off in <= 100 ms.
 """
 import argparse
 import math
@@ -23,6 +24,7 @@ import numpy as np
 import jkrcyl
 from jkrcyl.numerics import arcs
 from jkrcyl.numerics import cohesive as co
+from jkrcyl.numerics import cohesive_pull_off as po
 from jkrcyl.numerics import cohesive_scales as cs
 from jkrcyl.numerics import cohesive_zones as cz
 
@@ -108,6 +110,27 @@ def contactless_table(repeats):
     print(f"contactless_touch: {dt * 1e3:.2f} ms")
 
 
+def pull_off_table(quick):
+    print("\n## load-control pull-off (M = 0.2, vartheta = 1): time, lambda^4 (p* - p*_JKR); half-plane vs Baney-Hui")
+    from scipy.optimize import minimize_scalar
+    f = lambda eps: arcs.star(np.array([math.tan(eps / 2)]), 0.2, THETA, GB, 0.0)["p"][0]
+    ref = minimize_scalar(f, bracket=(0.3, 0.5, 0.7), options=dict(xtol=1e-12)).fun
+    times = []
+    for lam in ((1, 3) if quick else (0.3, 1, 3, 10, 25)):
+        t = time.perf_counter()
+        r = po.pull_off_load(0.2, cs.zone_strength(lam, 0.2), THETA, GB)
+        times.append(time.perf_counter() - t)
+        print(f"lambda = {lam:5g}: {r.kind:5s} p* = {r.p:+.10f}  lambda^4 (p* - p*_JKR) = {(r.p - ref) * lam ** 4:+.4f}"
+              f"  {times[-1] * 1e3:7.1f} ms")
+    m = 1e-6
+    for lam in ((0.1, 1) if quick else (0.01, 0.1, 0.5, 1, 2, 5)):
+        r = po.pull_off_load(m, cs.zone_strength(lam, m), THETA, GB)
+        ref_bh = float(bh.pull_off(lam))
+        print(f"half-plane lambda = {lam:5g}: -Pbar_c = {-r.p / m ** (4 / 3):.8f}  Baney-Hui {-ref_bh:.8f}  "
+              f"relative error {abs(r.p / m ** (4 / 3) / ref_bh - 1):.1e}")
+    return min(times)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--repeats", type=int, default=50)
@@ -120,9 +143,10 @@ def main():
     jkr_table(args.quick)
     half_plane_table(args.quick)
     contactless_table(args.repeats)
+    t_pull = pull_off_table(args.quick)
     dt, err = times[("alpha* = 0", 3)]
     print(f"\ngoals: one cohesive state to 1e-8 in <= 1 ms -- lambda = 3, alpha* = 0: {dt * 1e3:.2f} ms, "
-          f"error {err:.0e}")
+          f"error {err:.0e}; a pull-off in <= 100 ms -- fastest above {t_pull * 1e3:.0f} ms")
 
 
 if __name__ == "__main__":

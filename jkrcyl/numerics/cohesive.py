@@ -135,6 +135,11 @@ class FixedContact:
                                    float(c_top))
         return (None if d < 0 else d), dn, u, h_pi
 
+    def zone_end_near(self, s0, h0, d_near, c_top=0.0):
+        """The zone length nearest to d_near with h(c) = h0 (None: none within a factor 100)."""
+        d = _ck.zone_end_near(self.fx, self.eps, float(s0), float(h0), float(d_near), float(c_top))
+        return None if d < 0 else d
+
     def zone_end(self, s0, h0, d_start, c_top=0.0):
         """Zone length c - eps with h(c) = h0 (None: h < h0 up to pi - c_top); see cohesive_kernels.zone_end."""
         d = _ck.zone_end(self.fx, self.eps, float(s0), float(h0), float(d_start), SCAN_FACTOR, SCAN_STEP,
@@ -223,7 +228,7 @@ def _law(m, s0, theta, gb, ar):
     return m, s0, _arcs.Kernel(theta, gb, ar)
 
 
-def cohesive_state(eps, m, s0, theta, gb, ar=0.0, n=None):
+def cohesive_state(eps, m, s0, theta, gb, ar=0.0, n=None, near=None):
     """The Maugis-Dugdale state with the contact |phi| < eps (normalised; module docstring).
 
     eps: contact half-angle in (0, pi) [rad]; m = M vartheta (M_R* for vartheta = inf; m = 0: no adhesion, the
@@ -231,7 +236,11 @@ def cohesive_state(eps, m, s0, theta, gb, ar=0.0, n=None):
     gb = (1/G_I)/beta*; ar = alpha*/beta*; n: nodes (default: from the zone length, ~1e-10).  The zone is the
     bottom one |phi| < c with h(c) = h0 (the first root above the Dugdale estimate: the branch that tends to
     JKR as s0 -> inf), or the whole exterior when h <= h0 up to phi = pi (zones = 'all', c = pi; delta from
-    k = 0 only).  Feasibility (gap >= 0, the law obeyed everywhere): :func:`gap_check`.
+    k = 0 only).  The zone end can have several roots and the first one can turn back in eps (a fold of the
+    branch): near = a zone length c - eps selects the root nearest to it (following a branch by continuity);
+    None is returned when no root lies within a factor 100 of it.  Feasibility (gap >= 0, the law obeyed
+    everywhere): :func:`gap_check`.  ValueError when the zone is too thin for NODES_MAX nodes (lambda beyond a
+    few hundred): the state is JKR's there to O((c - eps)/eps) = O(lambda^-2).
     """
     eps = finite_scalar("eps", eps, low=0.0, high=math.pi, low_open=True)
     if eps >= math.pi:
@@ -244,18 +253,35 @@ def cohesive_state(eps, m, s0, theta, gb, ar=0.0, n=None):
         dn, u = fc.solve(zones, 0.0)
         return _state(eps, eps, fc, dn, u, zones, m, s0, kernel, gb, fc.sys.n)
     h0 = m * m / s0
-    d_guess = dugdale_zone(m, s0)
+    d_guess = dugdale_zone(m, s0) if near is None else finite_scalar("near", near, low=0.0, low_open=True)
+    _check_resolved(eps, d_guess, kernel.ar, n)
     n_fixed = nn
     nn = nn or nodes_for(eps, d_guess, kernel.ar)
     for _ in range(3):
         fc = FixedContact(eps, kernel, nn)
-        d, dn, u, h_pi = fc.state(s0, h0, d_guess / 2)
+        if near is None:
+            d, dn, u, h_pi = fc.state(s0, h0, d_guess / 2)
+        else:
+            d = fc.zone_end_near(s0, h0, d_guess)
+            if d is None:
+                return None
+            dn, u = fc.solve(zones_of(eps + d), s0)
+            h_pi = None
         c = math.pi if d is None else eps + d
         need = n_fixed or nodes_for(eps, c - eps, kernel.ar)
         if need <= nn:
             break
-        nn, d_guess = need, c - eps
+        _check_resolved(eps, c - eps, kernel.ar, n)
+        nn, d_guess = need, (c - eps if near is None else near)
     return _state(eps, c, fc, dn, u, zones_of(c), m, s0, kernel, gb, nn, h_pi=h_pi)
+
+
+def _check_resolved(eps, zone, ar, n):
+    """The zone must be resolved: nodes_for within twice the cap (about 1e-6 at the cap), unless n is given."""
+    if n is None and zone < eps * (NODES_PER_ZONE / (2 * (NODES_MAX if ar == 0.0 else NODES_MAX_ALPHA))) ** 2:
+        raise ValueError(f"s0 too large for the collocation: the zone c - eps ~ {zone:.3g} rad is below the "
+                         f"resolution of {NODES_MAX if ar == 0.0 else NODES_MAX_ALPHA} nodes at eps = {eps:.6g} "
+                         "(lambda beyond a few hundred); the state is JKR's there to O((c - eps)/eps)")
 
 
 GapCheck = namedtuple("GapCheck", ["min_gap", "max_zone_gap", "min_free_gap", "feasible"])

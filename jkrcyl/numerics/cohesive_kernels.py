@@ -238,3 +238,28 @@ def state(fx, eps, s0, h0, d_start, factor, step, c_top):
     zones = zones_of(PI if d < 0 else eps + d, c_top)
     dn, u = solve_zone(fx, zones, s0)
     return d, dn, u, gap(fx, np.array([PI]), dn, u, zones, s0)[0]
+
+
+@njit(cache=True)
+def zone_end_near(fx, eps, s0, h0, d_near, c_top):
+    """The zone length nearest to d_near (in log d) with h(eps + d) = h0: brackets grown by 5 % a side around
+    d_near until a sign change, then Brent; -1 if none within a factor 100 (the branch through d_near has
+    turned: a fold of the zone end in eps)."""
+    args = (fx, eps, s0, h0, c_top)
+    d_max = PI - c_top - eps
+    lo = hi = min(d_near, d_max)
+    flo = fhi = _residual(lo, args)
+    if flo == 0.0:
+        return lo
+    for _ in range(95):
+        lo2, hi2 = lo / 1.05, min(hi * 1.05, d_max)
+        flo2 = _residual(lo2, args)
+        if flo2 * flo <= 0.0:
+            return _brent(lo2, lo, flo2, flo, args)
+        if hi2 > hi:
+            fhi2 = _residual(hi2, args)
+            if fhi2 * fhi <= 0.0:
+                return _brent(hi, hi2, fhi, fhi2, args)
+            hi, fhi = hi2, fhi2
+        lo, flo = lo2, flo2
+    return -1.0
