@@ -19,7 +19,18 @@ end solves h(c) = h0 (Brent, the LU reused: only the zone right-hand side and on
 Node count: v is analytic on the contact with singularities at the zone ends +-c (the jump of the traction),
 so Chebyshev converges like rho^-n with rho the Bernstein ellipse through c/eps: n ~ sqrt(eps/(c - eps)) (as
 for near-touching arcs in jkrcyl.twopatch).  The zone length is first estimated by the Dugdale crack value
-c - eps ~ m^2/(4 s0^2) and the node count corrected once from the root.
+c - eps ~ m^2/(4 s0^2) and the node count corrected once from the root.  Measured (lambda = 10, eps = 0.8,
+rho = 1.263): errors 5e-5, 1e-7, 2e-9, 7e-13 at n = 24, 48, 64, 96 (benchmarks/bench_cohesive.py); the
+default (11 sqrt(eps/(c - eps)), at least 24) gives ~1e-9.  Up to NODES_MAX = 1024 nodes (256 at alpha* != 0),
+i.e. lambda up to a few hundred; beyond, cohesive_state refuses (the state is JKR's to O(lambda^-2) there).
+
+JKR limit: at a fixed contact the states differ from the Griffith ones by C/lambda^2 (the zone length over the
+contact, C = O(1): 0.77 for p at M = 0.4, eps = 0.8; 1e-4 relative is reached near lambda = 100 there); the
+pull-off converges faster, as lambda^-4 (jkrcyl.numerics.cohesive_pull_off).
+
+Several states can share a contact size: the zone end can have several roots (cohesive_state takes the first
+above the Dugdale estimate, or the one near a given zone length), and the branch can turn back in eps.  Other
+zone sets (no contact, a top zone): jkrcyl.numerics.cohesive_zones.
 """
 import math
 from collections import namedtuple

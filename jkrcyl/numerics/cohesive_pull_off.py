@@ -80,7 +80,7 @@ def pull_off_load(m, s0, theta, gb, ar=0.0):
 
     x0 = np.array([math.log(eps_lo), math.log(start.c - eps_lo)])
     path = _cont.trace(residual, x0, np.array([1.0, 0.0]), inside, lambda a, b: (None, None),
-                       h0=0.05, h_max=0.15, max_steps=1500)
+                       h0=0.1, h_max=0.3, max_steps=1500)
     pts = path.points
     p = np.array([load(x) for x in pts])
     eps_end, d_end = np.exp(pts[-1])
