@@ -101,9 +101,9 @@ def zone_integrals(report):
                   r"p_{zone} = -s_0\int_{lo}^{hi}\cos\psi\,d\psi = -s_0(\sin hi - \sin lo),\quad "
                   r"B_{zone} = -s_0\,(hi - lo)", NEW, "elementary")
     doc_z = ("Displacement of a unit uniform traction on the arc lo < psi < hi (derive/cohesive.py):\n"
-             "int_lo^hi K(phi - psi) dpsi = F(phi - lo) - F(phi - hi), F' = K, for -pi <= lo, hi, phi <= pi.\n"
-             "K(t) = cos t log(2 - 2 cos t) + k1 cos t + k0 + ar (pi sign(t) sin t - t sin t) (generated/green.py);\n"
-             "a Dugdale zone (nu = -s0) adds s0 times this to the gap h/Delta.")
+             "int_lo^hi K(phi - psi) dpsi = F(phi - lo) - F(phi - hi), F' = K, -pi <= lo, hi, phi <= pi.\n"
+             "K(t) = cos t log(2 - 2 cos t) + k1 cos t + k0 + ar (pi sign(t) sin t - t sin t)\n"
+             "(generated/green.py); a Dugdale zone (nu = -s0) adds s0 times this to the gap h/Delta.")
     doc_l = ("Load and width of a unit zone traction on lo < psi < hi: int cos(psi) dpsi and hi - lo\n"
              "(a zone nu = -s0 adds -s0 load to p = P beta*/(4 pi Delta), -s0 width to B = int nu).")
     return [Kernel("zone_displacement", (("Z", Z),), doc_z, array_args=(), extra_args=(k0, k1, ar)),
@@ -152,13 +152,15 @@ def scales(report):
                   r"(1-\Delta/R)^{1/3}}", NEW, "a = R eps (the half-width on the hole; other choices differ by "
                   "O(eps^2)), P = 4 pi Delta p/beta*")
     report.proof("cubes of the ratios to the definitions simplify to 1")
-    doc_l = ("Transition parameter lambda = 4 sigma0/(pi^2 E*^2 w/R_eff)^(1/3) (E* = 4/beta*, R_eff = R R_D/Delta)\n"
-             "in the normalised variables: lambda = 4 s0 (1 - Delta/R)^(1/3)/m^(2/3) (derive/cohesive.py).")
+    doc_l = ("Transition parameter lambda = 4 sigma0/(pi^2 E*^2 w/R_eff)^(1/3) (E* = 4/beta*,\n"
+             "R_eff = R R_D/Delta) in the normalised variables: lambda = 4 s0 (1 - Delta/R)^(1/3)/m^(2/3)\n"
+             "(derive/cohesive.py).")
     doc_s = ("Zone strength s0 = sigma0 R beta*/(4 pi Delta) of the transition parameter lambda (inverse of\n"
              "transition_parameter): s0 = lambda m^(2/3) (1 - Delta/R)^(-1/3)/4.")
     doc_h = "Range of the Dugdale law h0/Delta = m^2/s0 (w = sigma0 h0)."
     doc_b = ("Baney-Hui's (1997) contact half-width abar and load Pbar from eps (a = R eps) and\n"
-             "p = P beta*/(4 pi Delta): abar = eps/(2 m^(2/3) (1 - Delta/R)^(2/3)), Pbar = p/(m^(4/3) (1 - Delta/R)^(1/3)).")
+             "p = P beta*/(4 pi Delta): abar = eps/(2 m^(2/3) (1 - Delta/R)^(2/3)),\n"
+             "Pbar = p/(m^(4/3) (1 - Delta/R)^(1/3)).")
     return [Kernel("transition_parameter", (("lam", lam_norm),), doc_l, array_args=()),
             Kernel("zone_strength", (("s0", s0_of_lam),), doc_s, array_args=()),
             Kernel("zone_range", (("h0_over_Delta", m ** 2 / s0),), doc_h, array_args=()),
@@ -243,7 +245,8 @@ def half_plane(report):
                   "energy stationary along the states (1e-8)")
     doc = ("Half-plane limit (cylinder on a flat, Baney-Hui 1997) in the normalised variables: load\n"
            "p = eps^2/4 - 2 s0 sqrt(c^2 - eps^2) and the opening h(c)/Delta at the zone end c of a contact\n"
-           "|phi| < eps with the zone eps < |phi| < c (derive/cohesive.py); the state has h(c) = h0 = m^2/s0.")
+           "|phi| < eps with the zone eps < |phi| < c (derive/cohesive.py); the state has\n"
+           "h(c) = h0 = m^2/s0.")
     return [Kernel("half_plane_state", (("p", load), ("opening", hertz + dugdale)), doc, array_args=())]
 
 

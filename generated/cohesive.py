@@ -19,9 +19,9 @@ HalfPlaneState = namedtuple("HalfPlaneState", ["p", "opening"])
 def zone_displacement(ar, hi, k0, k1, lo, phi):
     """
     Displacement of a unit uniform traction on the arc lo < psi < hi (derive/cohesive.py):
-    int_lo^hi K(phi - psi) dpsi = F(phi - lo) - F(phi - hi), F' = K, for -pi <= lo, hi, phi <= pi.
-    K(t) = cos t log(2 - 2 cos t) + k1 cos t + k0 + ar (pi sign(t) sin t - t sin t) (generated/green.py);
-    a Dugdale zone (nu = -s0) adds s0 times this to the gap h/Delta.
+    int_lo^hi K(phi - psi) dpsi = F(phi - lo) - F(phi - hi), F' = K, -pi <= lo, hi, phi <= pi.
+    K(t) = cos t log(2 - 2 cos t) + k1 cos t + k0 + ar (pi sign(t) sin t - t sin t)
+    (generated/green.py); a Dugdale zone (nu = -s0) adds s0 times this to the gap h/Delta.
     """
     x0 = -phi
     x1 = hi + x0
@@ -69,8 +69,9 @@ def zone_load(hi, lo):
 @njit(cache=True)
 def transition_parameter(Delta_over_R, m, s0):
     """
-    Transition parameter lambda = 4 sigma0/(pi^2 E*^2 w/R_eff)^(1/3) (E* = 4/beta*, R_eff = R R_D/Delta)
-    in the normalised variables: lambda = 4 s0 (1 - Delta/R)^(1/3)/m^(2/3) (derive/cohesive.py).
+    Transition parameter lambda = 4 sigma0/(pi^2 E*^2 w/R_eff)^(1/3) (E* = 4/beta*,
+    R_eff = R R_D/Delta) in the normalised variables: lambda = 4 s0 (1 - Delta/R)^(1/3)/m^(2/3)
+    (derive/cohesive.py).
     """
     lam = 4*s0*(1 - Delta_over_R)**(1/3)/m**(2/3)
     return lam
@@ -99,7 +100,8 @@ def zone_range(m, s0):
 def baney_hui_variables(Delta_over_R, eps, m, p):
     """
     Baney-Hui's (1997) contact half-width abar and load Pbar from eps (a = R eps) and
-    p = P beta*/(4 pi Delta): abar = eps/(2 m^(2/3) (1 - Delta/R)^(2/3)), Pbar = p/(m^(4/3) (1 - Delta/R)^(1/3)).
+    p = P beta*/(4 pi Delta): abar = eps/(2 m^(2/3) (1 - Delta/R)^(2/3)),
+    Pbar = p/(m^(4/3) (1 - Delta/R)^(1/3)).
     """
     x0 = 1 - Delta_over_R
     abar = (1/2)*eps/(m**(2/3)*x0**(2/3))
@@ -112,7 +114,8 @@ def half_plane_state(c, eps, s0):
     """
     Half-plane limit (cylinder on a flat, Baney-Hui 1997) in the normalised variables: load
     p = eps^2/4 - 2 s0 sqrt(c^2 - eps^2) and the opening h(c)/Delta at the zone end c of a contact
-    |phi| < eps with the zone eps < |phi| < c (derive/cohesive.py); the state has h(c) = h0 = m^2/s0.
+    |phi| < eps with the zone eps < |phi| < c (derive/cohesive.py); the state has
+    h(c) = h0 = m^2/s0.
     """
     x0 = eps**2
     x1 = c**2

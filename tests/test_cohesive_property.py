@@ -31,7 +31,9 @@ def test_two_ways(E, nu, E_I, nu_I, M, lam, eps):
     s = co.cohesive_state(eps, m, s0, theta, gb, ar, n=None if ar == 0 else 48)
     scale = max(1.0, abs(s.p))
     assert abs(s.k) < 1e-9 * max(1.0, m)
-    assert abs(s.s0 * s.fields.gap(s.c)[0] / (m * m) - 1) < 1e-10 or s.zones == "all"
+    # alpha* != 0: the gap off the contact carries the engine's fine-grid quadrature of the end enrichment
+    # (~1e-12 absolute, not smooth in c), against ranges h0 down to ~1e-3 here
+    assert abs(s.s0 * s.fields.gap(s.c)[0] / (m * m) - 1) < (1e-11 if ar == 0 else 1e-8) or s.zones == "all"
     t = np.pi / 2 * XG
     phi, jac = eps * np.sin(t), eps * np.cos(t) * np.pi / 2
     quad = np.sum(WG * jac * s.fields.pressure(phi) * np.cos(phi))
