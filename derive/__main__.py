@@ -3,7 +3,7 @@ import argparse
 import pathlib
 
 from . import approach, derivatives, gap, load, pressure
-from . import confined, green, special, state, zero_load
+from . import cohesive, confined, green, special, state, zero_load
 from .emit import module_source, package_init
 from .report import Report
 
@@ -19,6 +19,7 @@ MODULES = [
     (green, "Green's functions of (2.1) and (5.2) from Michell's solution, any alpha*; work-conjugate approach."),
     (confined, "Confined regime: the fold comes before h(pi) = 0; super-critical folds zip into full contact."),
     (state, "Fused equilibrium state: load_state, stress_intensity, approach and gap_pi in one kernel."),
+    (cohesive, "Cohesive zone (Maugis-Dugdale, issue 19): zone displacement and load, scales, half-plane limit."),
 ]
 
 

@@ -297,5 +297,5 @@ def _wrap_call(line, width=WIDTH):
 
 def package_init(modules):
     """generated/__init__.py: lists the emitted modules."""
-    names = ", ".join(f'"{m}"' for m in modules)
-    return BANNER.format(source="__main__") + f'"""Kernels emitted by make derive."""\n\n__all__ = [{names}]\n'
+    names = "\n".join(wrap_args("__all__ = [", [f'"{m}"' for m in modules], "]"))
+    return BANNER.format(source="__main__") + f'"""Kernels emitted by make derive."""\n\n{names}\n'

@@ -2,4 +2,5 @@
 # Regenerate: make derive
 """Kernels emitted by make derive."""
 
-__all__ = ["load", "approach", "gap", "derivatives", "special", "zero_load", "green", "state"]
+__all__ = ["load", "approach", "gap", "derivatives", "special", "zero_load", "green", "state",
+           "cohesive"]

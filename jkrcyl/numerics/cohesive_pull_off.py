@@ -1,0 +1,118 @@
+"""Load-control pull-off of the Maugis-Dugdale contact (issue 19, normalised; the model core wires it in).
+
+The states with one contact and one zone form curves in the plane (eps, d), d = c - eps the zone length: the
+zone end can turn back in eps (at lambda ~ 1-10 the first root of h(c) = h0 disappears at a fold and the curve
+returns with a longer zone).  So the branch is traced by pseudo-arclength continuation
+(jkrcyl.numerics.continuation) in (log eps, log d), from its end at eps -> 0 (the contact about to vanish,
+joined there to the contactless state that touches), until the load rises through p = 0 (the zero-load state)
+or the curve leaves the domain (the receding limit a_crit, or the zone reaching round).
+
+Under a fixed load a one-parameter family of equilibria changes stability only where p turns along it, so
+from the zero-load state (stable) the pull grows along the curve towards its touch end until p is minimal:
+the pull-off p* is the first minimum of p met going back from the zero-load state ('fold', JKR-like), or the
+touch end itself when p falls all the way ('touch': the contactless states beyond hold less, the pin detaches).
+With the range reaching round (h0 > 2 Delta less the uniform pull) p >= 0 all along: no adherence force.
+Collocation nodes: a function of eps only along the trace (the zone estimate m^2/(4 s0^2)), so that the residual
+is smooth for the continuation; the minimum is refined in eps (Brent) on the branch through the traced point.
+"""
+import functools
+import math
+from collections import namedtuple
+
+import numpy as np
+from scipy.optimize import brentq, minimize_scalar
+
+from . import arcs as _arcs
+from . import cohesive as _co
+from . import cohesive_kernels as _ck
+from . import cohesive_zones as _cz
+from . import continuation as _cont
+
+PullOff = namedtuple("PullOff", ["p", "eps", "kind", "state", "zero_load", "reason"])
+PullOff.__doc__ = """Load-control pull-off: p = P* beta*/(4 pi Delta) at detachment (None with a reason when the pin
+does not adhere or the branch has no zero-load state), eps there (0 for 'touch'), kind 'fold' | 'touch' | None,
+the state there (CohesiveState), the zero-load state (CohesiveState or None)."""
+
+EPS_MARGIN = 1e-3           # stay this far (relative) below the receding limit, where the unit problem is singular
+START = 1e-3                # the trace starts at eps = START times the half-plane scale 2 m^(2/3) (at most 1e-3)
+
+
+def _eps_max(theta, gb, ar):
+    if math.isinf(theta):
+        return math.pi - 0.05
+    return 2 * math.atan(_arcs.a_crit(theta, gb, ar)) * (1 - EPS_MARGIN)
+
+
+def pull_off_load(m, s0, theta, gb, ar=0.0):
+    """The load-control pull-off from the zero-load state (module docstring): m = M vartheta > 0, s0 > 0."""
+    m, s0, kernel = _co._law(m, s0, theta, gb, ar)
+    none = lambda reason, zero=None: PullOff(None, None, None, None, zero, reason)
+    if m == 0.0:
+        return none("no adhesion (m = 0)")
+    h0, d0 = m * m / s0, _co.dugdale_zone(m, s0)
+    eps_lo, eps_hi = min(START * 2 * m ** (2 / 3), 1e-3), _eps_max(theta, gb, ar)
+    nodes = lambda eps: _co.nodes_for(eps, d0, kernel.ar) // 8 * 8 + 8
+
+    @functools.lru_cache(maxsize=32)
+    def fixed(eps):
+        return _co.FixedContact(eps, kernel, nodes(eps))
+
+    def residual(x):
+        eps, d = math.exp(x[0]), math.exp(x[1])
+        fc = fixed(eps)
+        return _ck._residual(d, (fc.fx, eps, s0, h0, 0.0))
+
+    def load(x):
+        eps, d = math.exp(x[0]), math.exp(x[1])
+        fc = fixed(eps)
+        zones = _co.zones_of(eps + d)
+        dn, u = fc.solve(zones, s0)
+        return fc.ep @ u - s0 * _co.zone_load(zones)[0]
+
+    start = _co.cohesive_state(eps_lo, m, s0, theta, gb, ar, n=nodes(eps_lo))
+    if start.zones == "all":
+        return none("no adherence force: the zone reaches round (p >= 0)" if start.p >= 0 else
+                    "the contact branch starts in a zone reaching round")
+
+    def inside(x):
+        eps, d = math.exp(x[0]), math.exp(x[1])
+        return eps_lo * 0.999 <= eps < eps_hi and eps + d < math.pi * (1 - 1e-9) and load(x) < 0
+
+    x0 = np.array([math.log(eps_lo), math.log(start.c - eps_lo)])
+    path = _cont.trace(residual, x0, np.array([1.0, 0.0]), inside, lambda a, b: (None, None),
+                       h0=0.1, h_max=0.3, max_steps=1500)
+    pts = path.points
+    p = np.array([load(x) for x in pts])
+    eps_end, d_end = np.exp(pts[-1])
+    if not (eps_lo * 1.01 < eps_end < eps_hi * 0.999 and eps_end + d_end < math.pi * (1 - 1e-6)):
+        return none("no zero-load contact on the branch: p < 0 all along it (it ends at the receding limit, "
+                    "turns back to eps -> 0 or its zone reaches round)")
+    state = lambda e: _co.cohesive_state(e, m, s0, theta, gb, ar, n=nodes(eps_end), near=d_end)
+    zero = _zero_load(state, eps_end)
+    # back from the zero-load end: the first minimum of p, or the touch end
+    for j in range(len(p) - 2, 0, -1):
+        if p[j - 1] > p[j] < p[j + 1]:
+            eps_j, d_j = np.exp(pts[j])
+            on_branch = lambda e: _co.cohesive_state(e, m, s0, theta, gb, ar, n=nodes(eps_j), near=d_j)
+            f = lambda e: (lambda st: math.inf if st is None else st.p)(on_branch(e))
+            lo, hi = sorted((math.exp(pts[j - 1][0]), math.exp(pts[j + 1][0])))
+            res = minimize_scalar(f, bracket=(lo, eps_j, hi), method="brent", options=dict(xtol=1e-10))
+            st = on_branch(res.x)
+            return PullOff(st.p, res.x, "fold", st, zero, "")
+    touch = _cz.contactless_touch(m, s0, theta, gb, ar, eps_small=min(1e-6, eps_lo * 1e-3))
+    if touch is None:
+        return none("the branch ends in a zone reaching round (p -> 0)", zero)
+    return PullOff(touch.p, 0.0, "touch", touch, zero, "")
+
+
+def _zero_load(state, eps_end):
+    """The zero-load state just past the traced end (p < 0 there, >= 0 a little further in eps)."""
+    hi = eps_end
+    for _ in range(60):
+        hi *= 1.0005
+        s = state(hi)
+        if s is None or s.p >= 0:
+            break
+    if s is None:
+        return state(eps_end)
+    return state(brentq(lambda e: state(e).p, eps_end, hi, xtol=1e-13, rtol=1e-13))
