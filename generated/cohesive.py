@@ -15,7 +15,7 @@ BaneyHuiVariables = namedtuple("BaneyHuiVariables", ["abar", "Pbar"])
 HalfPlaneState = namedtuple("HalfPlaneState", ["p", "opening"])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def zone_displacement(ar, hi, k0, k1, lo, phi):
     """
     Displacement of a unit uniform traction on the arc lo < psi < hi (derive/cohesive.py):
@@ -55,7 +55,7 @@ def zone_displacement(ar, hi, k0, k1, lo, phi):
     return Z
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def zone_load(hi, lo):
     """
     Load and width of a unit zone traction on lo < psi < hi: int cos(psi) dpsi and hi - lo
@@ -66,7 +66,7 @@ def zone_load(hi, lo):
     return ZoneLoad(load, width)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def transition_parameter(Delta_over_R, m, s0):
     """
     Transition parameter lambda = 4 sigma0/(pi^2 E*^2 w/R_eff)^(1/3) (E* = 4/beta*,
@@ -77,7 +77,7 @@ def transition_parameter(Delta_over_R, m, s0):
     return lam
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def zone_strength(Delta_over_R, lam, m):
     """
     Zone strength s0 = sigma0 R beta*/(4 pi Delta) of the transition parameter lambda (inverse of
@@ -87,7 +87,7 @@ def zone_strength(Delta_over_R, lam, m):
     return s0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def zone_range(m, s0):
     """
     Range of the Dugdale law h0/Delta = m^2/s0 (w = sigma0 h0).
@@ -96,7 +96,7 @@ def zone_range(m, s0):
     return h0_over_Delta
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def baney_hui_variables(Delta_over_R, eps, m, p):
     """
     Baney-Hui's (1997) contact half-width abar and load Pbar from eps (a = R eps) and
@@ -109,7 +109,7 @@ def baney_hui_variables(Delta_over_R, eps, m, p):
     return BaneyHuiVariables(abar, Pbar)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def half_plane_state(c, eps, s0):
     """
     Half-plane limit (cylinder on a flat, Baney-Hui 1997) in the normalised variables: load
