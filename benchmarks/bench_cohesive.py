@@ -22,7 +22,8 @@ from pathlib import Path
 import numpy as np
 
 import jkrcyl
-from jkrcyl.numerics import arcs
+from jkrcyl.model.problem import Problem
+from jkrcyl.model.single_patch import solver
 from jkrcyl.numerics import cohesive as co
 from jkrcyl.numerics import cohesive_pull_off as po
 from jkrcyl.numerics import cohesive_scales as cs
@@ -80,7 +81,8 @@ def nodes_table():
 
 def jkr_table(quick):
     print("\n## JKR limit: lambda^2 (X - X_JKR) at eps = 0.8 (steady: the O(lambda^-2) approach)")
-    st = arcs.star(np.array([math.tan(EPS / 2)]), M, THETA, GB, 0.0)
+    sl = solver(Problem(M / THETA, THETA, GB)).states([math.tan(EPS / 2)])
+    st = {"p": sl.p, "dn": sl.dn, "h": sl.h}
     for lam in ((12.5, 25, 50) if quick else (12.5, 25, 50, 100, 200)):
         s = co.cohesive_state(EPS, M, cs.zone_strength(lam, M), THETA, GB)
         d = [(getattr(s, a) - st[b][0]) * lam ** 2 for a, b in (("p", "p"), ("delta_over_Delta", "dn"),
@@ -113,7 +115,7 @@ def contactless_table(repeats):
 def pull_off_table(quick):
     print("\n## load-control pull-off (M = 0.2, vartheta = 1): time, lambda^4 (p* - p*_JKR); half-plane vs Baney-Hui")
     from scipy.optimize import minimize_scalar
-    f = lambda eps: arcs.star(np.array([math.tan(eps / 2)]), 0.2, THETA, GB, 0.0)["p"][0]
+    f = lambda eps: solver(Problem(0.2 / THETA, THETA, GB)).states([math.tan(eps / 2)]).p[0]
     ref = minimize_scalar(f, bracket=(0.3, 0.5, 0.7), options=dict(xtol=1e-12)).fun
     times = []
     for lam in ((1, 3) if quick else (0.3, 1, 3, 10, 25)):

@@ -14,7 +14,8 @@ import jkrcyl
 from jkrcyl import equilibria as eq
 from jkrcyl.model import stability
 from jkrcyl.model.closed_form import ClosedForm
-from jkrcyl.model.collocation import Collocation, receding_contact
+from jkrcyl.model.collocation import Collocation
+from jkrcyl.numerics.one_arc import receding_contact
 from jkrcyl.model.problem import Problem
 from jkrcyl.numerics import arcs
 

@@ -18,16 +18,25 @@ from jkrcyl.numerics import arcs
 from jkrcyl.numerics import cohesive as co
 from jkrcyl.numerics import cohesive_scales as cs
 from jkrcyl.numerics import cohesive_zones as cz
+from jkrcyl.model.problem import Problem
+from jkrcyl.model.single_patch import solver
 from reference import baney_hui as bh
 
 THETA, GB = 1.0, 0.5            # identical bodies, nu = 1/3 -- any alpha* = 0 pair; pairs below
 XG, WG = np.polynomial.legendre.leggauss(200)
 
 
+def jkr_states(eps, m, theta, gb, ar=0.0):
+    """The Griffith (JKR) single patch at the contact half-angles eps (m = M vartheta): the library's single-patch
+    solver (closed forms at alpha* = 0, tests/test_arcs.py checks the collocation one against them)."""
+    M = m if math.isinf(theta) else m / theta
+    return solver(Problem(M, theta, gb, ar)).states(np.tan(np.atleast_1d(eps) / 2))
+
+
 def jkr(eps, m, theta=THETA, gb=GB, ar=0.0):
-    """The Griffith (JKR) state at the same contact: arcs.star (closed forms at alpha* = 0, tests/test_arcs.py)."""
-    st = arcs.star(np.array([math.tan(eps / 2)]), m, theta, gb, ar)
-    return dict(p=st["p"][0], dn=st["dn"][0], dw=st["dw"][0], h=st["h"][0])
+    """The Griffith (JKR) state at the same contact."""
+    st = jkr_states(eps, m, theta, gb, ar)
+    return dict(p=st.p[0], dn=st.dn[0], dw=st.dw[0], h=st.h[0])
 
 
 def values(s):

@@ -2,7 +2,7 @@
 
 References: Baney and Hui's (1997) pull-off (reference/baney_hui.py: the minimum of their load over the contact
 width, reproducing the printed -Pbar_c) in the half-plane limit; the JKR pull-off (the minimum of the Griffith
-states of jkrcyl.numerics.arcs.star, itself checked against the closed forms) for lambda -> inf; a dense scan of
+states of the library's single-patch solver, checked against the closed forms) for lambda -> inf; a dense scan of
 the states along the branch.
 """
 import math
@@ -11,7 +11,8 @@ import numpy as np
 import pytest
 from scipy.optimize import minimize_scalar
 
-from jkrcyl.numerics import arcs
+from jkrcyl.model.problem import Problem
+from jkrcyl.model.single_patch import solver
 from jkrcyl.numerics import cohesive as co
 from jkrcyl.numerics import cohesive_pull_off as po
 from jkrcyl.numerics import cohesive_scales as cs
@@ -33,7 +34,7 @@ def test_half_plane_pull_off_is_baney_hui(lam, kind):
 
 
 def _jkr_pull_off(M):
-    f = lambda eps: arcs.star(np.array([math.tan(eps / 2)]), M, THETA, GB, 0.0)["p"][0]
+    f = lambda eps: solver(Problem(M / THETA, THETA, GB)).states([math.tan(eps / 2)]).p[0]
     return minimize_scalar(f, bracket=(0.3, 0.5, 0.7), options=dict(xtol=1e-12)).fun
 
 

@@ -2,13 +2,11 @@
 coefficient, normalised (:class:`Collocation`) and physical (:class:`CollocationPhysical`)."""
 from __future__ import annotations
 
-import functools
 import math
 
 import numpy as np
 
 from ..numerics import one_arc as _one
-from ..numerics import roots as _roots
 from .patch import SinglePatch, Slice
 
 
@@ -45,23 +43,7 @@ class Collocation(SinglePatch):
     @property
     def a_crit(self) -> float:
         pb = self.problem
-        return receding_contact(pb.theta, pb.gb, pb.alpha_ratio)
-
-
-@functools.lru_cache(maxsize=64)
-def receding_contact(theta, gb, ar, search=(0.05, 1e4)):
-    """a_crit of the pair: the zero of 1/p on adhesionless states (p -> +inf below, -inf above); a sign change of
-    1/p through a pole (p = 0) is not a root.  inf when none lies in the search range (beyond 1e4: a contact
-    within 2e-4 rad of the full circle).  Independent of M and Delta."""
-    def f(x, _):
-        return 1.0 / _one.arc_state(x, 0.0, theta, gb, ar).p
-    grid = np.geomspace(*search, 60)
-    vals = np.array([f(x, ()) for x in grid])
-    for i in np.nonzero((vals[:-1] > 0) & (vals[1:] <= 0))[0]:
-        r = _roots.brent_or_pole(f, grid[i], grid[i + 1], (), vals[i], vals[i + 1])
-        if r is not None:
-            return float(r)
-    return math.inf
+        return _one.receding_contact(pb.theta, pb.gb, pb.alpha_ratio)
 
 
 class CollocationPhysical:

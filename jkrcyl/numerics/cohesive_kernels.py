@@ -17,6 +17,7 @@ from numba import njit
 
 from ..generated import cohesive as _gc
 from . import arcs_kernels as _ak
+from . import enrichment_kernels as _ek
 from . import roots
 
 PI = math.pi
@@ -145,7 +146,7 @@ def gap_rows(fx, phi):
     cen = np.zeros(phi.size)
     _ak.operator(cen, phi, ac, ae, s, D, k0, k1, ar, rows, 0)
     if m:
-        _ak.enrichment(cen, phi, ac, ae, s, k0, k1, ar, False, Lam, Sig, omega, gcs, gss, sfine, gfine, rows, n)
+        _ek.enrichment(cen, phi, ac, ae, s, k0, k1, ar, False, Lam, Sig, omega, gcs, gss, sfine, gfine, rows, n)
     return rows
 
 

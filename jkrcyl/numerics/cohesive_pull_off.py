@@ -22,7 +22,7 @@ from collections import namedtuple
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
-from . import arcs as _arcs
+from . import one_arc as _one
 from . import cohesive as _co
 from . import cohesive_kernels as _ck
 from . import cohesive_zones as _cz
@@ -38,9 +38,9 @@ START = 1e-3                # the trace starts at eps = START times the half-pla
 
 
 def _eps_max(theta, gb, ar):
-    if math.isinf(theta):
-        return math.pi - 0.05
-    return 2 * math.atan(_arcs.a_crit(theta, gb, ar)) * (1 - EPS_MARGIN)
+    """Below the receding limit (the pair's pole, numerics.one_arc.receding_contact: finite for a rigid cradle
+    at alpha* != 0), and clear of the full circle."""
+    return min(math.pi - 0.05, 2 * math.atan(_one.receding_contact(theta, gb, ar)) * (1 - EPS_MARGIN))
 
 
 def pull_off_load(m, s0, theta, gb, ar=0.0):

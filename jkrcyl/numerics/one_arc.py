@@ -25,6 +25,7 @@ from scipy.linalg.lapack import dgesv as _dgesv
 from . import arcs as _arcs
 from . import arcs_enrich as _en
 from . import one_arc_kernels as _ok
+from . import roots as _roots
 
 #: Per arc: load p = int nu cos, B* = int nu, d = delta/L, h_pi = h(pi)/L, k (edge coefficient, = the target),
 #: C* = int nu (dx/dphi) dphi, and the fixed-arc derivatives p_k = dp/dk, d_k = dd/dk.
@@ -178,3 +179,19 @@ def arc_states(a, k, theta, gb, ar, clearance=1.0, pole=math.inf, rel_step=5e-6)
                                            *_engine(int(n), theta, gb, ar))
     states = {f: out[:, i] for i, f in enumerate(ArcState._fields)}
     return states, {"dp_da": sl[:, 0], "dd_da": sl[:, 1]}
+
+
+@functools.lru_cache(maxsize=64)
+def receding_contact(theta, gb, ar, search=(0.05, 1e4)):
+    """a_crit of the pair: the zero of 1/p on adhesionless states (p -> +inf below, -inf above); a sign change of
+    1/p through a pole (p = 0) is not a root.  inf when none lies in the search range (beyond 1e4: a contact
+    within 2e-4 rad of the full circle).  Independent of M and Delta."""
+    def f(x, _):
+        return 1.0 / arc_state(x, 0.0, theta, gb, ar).p
+    grid = np.geomspace(*search, 60)
+    vals = np.array([f(x, ()) for x in grid])
+    for i in np.nonzero((vals[:-1] > 0) & (vals[1:] <= 0))[0]:
+        r = _roots.brent_or_pole(f, grid[i], grid[i + 1], (), vals[i], vals[i + 1])
+        if r is not None:
+            return float(r)
+    return math.inf
