@@ -44,38 +44,46 @@ def _domain(u):
     return u[0] >= LOG_AXIS and u[1] >= LOG_AXIS and math.exp(u[0]) + math.exp(u[1]) <= math.pi - GAP_FULL
 
 
-# the boundaries in log half-angles: (label, g(u) >= 0 inside, grad g)
+_T_MAX = math.log(math.pi - GAP_FULL - EPS_AXIS)       # largest log half-angle on a boundary
+
+
+def _full_top(t):
+    return math.log(max(math.pi - GAP_FULL - math.exp(t), 1e-300))
+
+
+# the boundaries in log half-angles: (label, g(u) >= 0 inside, the boundary as u(t), t of a point on it)
 _BOUNDARIES = (
-    ("single", lambda u: u[1] - LOG_AXIS, lambda u: np.array([0.0, 1.0])),        # a_top -> 0
-    ("mirror", lambda u: u[0] - LOG_AXIS, lambda u: np.array([1.0, 0.0])),        # a -> 0
+    ("single", lambda u: u[1] - LOG_AXIS, lambda t: np.array([t, LOG_AXIS]), lambda u: u[0]),       # a_top -> 0
+    ("mirror", lambda u: u[0] - LOG_AXIS, lambda t: np.array([LOG_AXIS, t]), lambda u: u[1]),       # a -> 0
     ("full", lambda u: math.pi - GAP_FULL - math.exp(min(u[0], 1.2)) - math.exp(min(u[1], 1.2)),   # arcs meet
-     lambda u: -np.exp(np.minimum(np.asarray(u), 1.2))),
+     lambda t: np.array([t, _full_top(t)]), lambda u: u[0]),
 )
 
 
 def _clipper(f):
-    """Exit point of the curve between u (inside) and v (outside): on the first boundary crossed."""
+    """Exit point of the curve between u (inside) and v (outside): where it meets the first boundary crossed --
+    the segment's crossing (bisection on the boundary function, no F), then a secant in the boundary's own
+    parameter onto F = 0 (a handful of residuals; None when it does not settle there)."""
     def clip(u, v):
         best = None
-        for label, g, grad in _BOUNDARIES:
+        for label, g, at, t_of in _BOUNDARIES:
             if g(v) < 0 <= g(u):
-                lo, hi = 0.0, 1.0                        # bisection for the crossing on the segment
+                lo, hi = 0.0, 1.0
                 for _ in range(60):
                     mid = 0.5 * (lo + hi)
                     lo, hi = (mid, hi) if g(u + mid * (v - u)) >= 0 else (lo, mid)
                 if best is None or lo < best[0]:
-                    best = (lo, label, g, grad)
+                    best = (lo, label, at, t_of)
         if best is None:
             return None, "domain"
-        s, label, g, grad = best
-        z = u + s * (v - u)
-        ok = False
-        for _ in range(3):                               # along the boundary onto F = 0, then back onto it
-            gz = grad(z)
-            z, ok = _cont.project(f, z, direction=np.array([-gz[1], gz[0]]) / np.linalg.norm(gz))
-            gz = grad(z)
-            z = z - g(z) * gz / (gz @ gz)
-        return (z if ok and abs(f(z)) < 1e-9 else None), label
+        s, label, at, t_of = best
+        t0 = min(t_of(u + s * (v - u)), _T_MAX)
+        phi = lambda t: f(at(t))
+        try:
+            t, ft = _roots.secant(phi, t0, t0 - 1e-4 * max(1.0, abs(t0)), LOG_AXIS, _T_MAX, tol=1e-10)
+        except ValueError:
+            return None, label
+        return (at(t) if np.isfinite(ft) and abs(ft) < 1e-9 else None), label
     return clip
 
 
