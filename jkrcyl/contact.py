@@ -3,7 +3,7 @@
 Units: any consistent set (SI: R, Delta [m], w [J/m^2], moduli [Pa], loads per unit length [N/m]).
 """
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 

@@ -53,13 +53,11 @@ def confined_events(pb: Problem) -> ConfinedEvents:
                   two_patch_stable_grip=any(b.stable_grip.any() for b in bs),
                   full_contact=any("full" in b.ends for b in bs), branches=bs, gb=pb.gb, alpha_ratio=pb.alpha_ratio)
     nan = math.nan
-    _, start, _ = _path.first_contact(pb, un, "load")
-    if start is None:
+    start, event, s = _path.pull_path(pb, un, "load")
+    if event in ("none", "elsewhere"):
         return ConfinedEvents(pb.M, pb.theta, "no-path", (nan, nan), nan, nan, **common)
-    if start.branch == "full-contact":
+    if event == "bonded":
         return ConfinedEvents(pb.M, pb.theta, "bonded", (math.inf, nan), nan, nan, **common)
-    track = _path.SingleTrack(pb, un, start.branch, "bottom", "load")
-    _, event, s = _path.walk(track, track.index(start.a), -math.inf)
     begin = (float(start.a), float(start.P_star))
     if event in ("fold", "end"):
         zip_full = _po.grows_under_pull(pb, s.a, "load")

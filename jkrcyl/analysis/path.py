@@ -206,3 +206,20 @@ def first_contact(pb: Problem, un: _fw.Units, control: str):
     sep = _fw.separated_state(pb, un, 0.0, control)
     to, kind = land(pb, un, sep, "touch", control, 0.0, True)
     return sep, to, kind
+
+
+def pull_path(pb: Problem, un: _fw.Units, control: str):
+    """The path of slow pulling from first contact: (start, event, state).  start is the state first contact
+    snaps into (None: no stable, feasible one); event: 'bonded' (start is full contact), 'elsewhere' (start is
+    not a bottom single patch), else the walk's event down the start's branch to -inf (fold, gap, end) and the
+    state where it ends.  pull_off, confined_events and the confined figure all read this one path."""
+    _, start, _ = first_contact(pb, un, control)
+    if start is None:
+        return None, "none", None
+    if start.branch == "full-contact":
+        return start, "bonded", start
+    if start.side != "bottom":
+        return start, "elsewhere", start
+    track = SingleTrack(pb, un, start.branch, "bottom", control)
+    _, event, state = walk(track, track.index(start.a), -math.inf)
+    return start, event, state

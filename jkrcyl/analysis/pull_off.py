@@ -30,18 +30,16 @@ def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
     """Detachment along the quasi-static path (module docstring) under ``control``."""
     if pb.M == 0:
         return PullOff(control, None, None, None, None, "no adhesion (w = 0): the contact vanishes at P = 0")
-    _, start, _ = _path.first_contact(pb, un, control)
-    if start is None:
+    start, event, s = _path.pull_path(pb, un, control)
+    if event == "none":
         return PullOff(control, None, None, None, None,
                        "no stable, feasible state at first contact: no path to follow")
-    if start.branch == "full-contact":
+    if event == "bonded":
         return PullOff(control, None, None, None, start,
-                       "no zero-load contact (M is above the largest M with one, (8.1)): at first touch the contact "
+                       "no stable zero-load contact (M above the largest M with one): at first touch the contact "
                        "zips round into full contact, and a pin bonded all round does not detach")
-    if start.side != "bottom":
+    if event == "elsewhere":
         return PullOff(control, None, None, None, start, f"first contact lands on the {start.branch} branch")
-    track = _path.SingleTrack(pb, un, start.branch, "bottom", control)
-    _, event, s = _path.walk(track, track.index(start.a), float("-inf"))
     if event == "gap":
         return PullOff(control, None, None, None, s,
                        f"confined: the gap at phi = pi closes first (P = {s.P:.6g} N/m, delta = {s.delta:.4g} m); "

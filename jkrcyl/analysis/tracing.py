@@ -11,7 +11,6 @@ import math
 import numpy as np
 
 from .._validate import finite_scalar
-from ..model import stability as _stab
 from ..model import two_patch as _two
 from ..model.problem import Problem
 from ..model.single_patch import solver

@@ -189,7 +189,6 @@ def assemble(ac, ae, s, D, k0, k1, ar, xt, LD0, SD0, Lam, Sig, omega, gcs, gss, 
     Sg = np.empty(n)
     LD = np.empty(n)
     SD = np.empty(n)
-    reg = np.empty(n)
     acc = np.empty(max(m, 1))
     for ir in range(na):
         for p in range(npt):

@@ -7,7 +7,6 @@ import numpy as np
 from numba import njit
 
 from .arc_angles import arc_trig as _arc_trig
-from .arc_angles import ell_half as _ell_half
 from .arcs_kernels import NEAR_ARC, PI, _ell, _same_arc_enrichment, _sign, _wrap
 
 

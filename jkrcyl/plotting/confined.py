@@ -11,7 +11,6 @@ from first touch), its first event (fold or h(pi) = 0) and the jump at fixed loa
 """
 from __future__ import annotations
 
-import math
 import textwrap
 
 import numpy as np
@@ -52,11 +51,9 @@ def _load_path(pb):
     """(start, event, end, landing) of slow pulling under load, normalised (P = P*, delta = delta/Delta): the
     walk of jkrcyl.analysis.path from first contact (as confined_events), the jump's landing state or None."""
     un = _fw.Units(1.0, 1.0, 1.0, 1.0)
-    _, start, _ = _path.first_contact(pb, un, "load")
-    if start is None or start.branch == "full-contact":
+    start, event, end = _path.pull_path(pb, un, "load")
+    if event in ("none", "bonded", "elsewhere"):
         return start, None, None, None
-    track = _path.SingleTrack(pb, un, start.branch, "bottom", "load")
-    _, event, end = _path.walk(track, track.index(start.a), -math.inf)
     to = None
     if event in ("fold", "end"):
         to, _ = _path.land(pb, un, end, "fold", "load", end.P, False)
