@@ -139,13 +139,10 @@ def _half_tables(n, enriched):
             cut(Lam), cut(Sig), omega)
 
 
-def _engine(n, theta, gb, ar, even=True):
-    """The arguments of the numba kernels (numerics.one_arc_kernels) at n nodes: tables and kernel constants
-    (even=True: the half tables of the even kernels)."""
-    if even:
-        xt, LD0, SD0, Lam, Sig, omega = _half_tables(n, ar != 0.0)
-    else:
-        _, _, xt, _, Lam, Sig, omega, _, LD0, SD0 = _arcs._tables(n, ar != 0.0)
+def _engine(n, theta, gb, ar):
+    """The arguments of the numba kernels (numerics.one_arc_kernels) at n nodes: the half tables and the kernel
+    constants."""
+    xt, LD0, SD0, Lam, Sig, omega = _half_tables(n, ar != 0.0)
     sf, gf = _arcs._fine_grid()
     kernel = _arcs.Kernel(theta, gb, ar)
     return (_arcs._nodes(n), _arcs._cheb_matrix(n), xt, LD0, SD0, Lam, Sig, omega, _G_END[:omega.shape[0]], sf, gf,
@@ -153,11 +150,14 @@ def _engine(n, theta, gb, ar, even=True):
 
 
 def arc_state(a, k, theta, gb, ar, clearance=1.0, even=True):
-    """:data:`ArcState` at one contact parameter (no slopes; one kernel call; even=False: the full system)."""
+    """:data:`ArcState` at one contact parameter (no slopes): one call of the even kernel, or (even=False) the
+    full system of :class:`OneArc` (the reference the tests compare the kernel with)."""
     eps = 2 * math.atan(a)
+    n = nodes(eps, ar)
+    if not even:
+        return OneArc(eps, theta, gb, ar, n).state(k, clearance)[0]
     out = np.empty(_ok.N_OUT)
-    kernel = _ok.bordered_state_even if even else _ok.bordered_state
-    kernel(eps, k, clearance, *_engine(nodes(eps, ar), theta, gb, ar, even), out)
+    _ok.bordered_state_even(eps, k, clearance, *_engine(n, theta, gb, ar), out)
     return ArcState(*out)
 
 

@@ -50,75 +50,11 @@ def trig_coefficients(e, gc, gs):
 
 
 @njit(cache=True)
-def bordered_state(e, k_target, clearance, s, D, xt, LD0, SD0, Lam, Sig, omega, gend, sf, gf, k0, k1, ar,
-                   K, out):
-    """One arc of half-width e: out[:] = (p, B*, d, h(pi), k, C*, p_k, d_k) (numerics.one_arc.ArcState)."""
-    n = s.size
-    m = omega.shape[0]
-    N = n + m
-    ac, ae = np.zeros(1), np.full(1, e)
-    gcs, gss = np.zeros((1, K if m else 0)), np.zeros((1, K if m else 0))
-    if m:
-        trig_coefficients(e, gcs[0], gss[0])
-    A = np.empty((N, N))
-    rhs = np.empty((N, 2))
-    _ak.assemble(ac, ae, s, D, k0, k1, ar, xt, LD0, SD0, Lam, Sig, omega, gcs, gss, A, rhs)
-    B = np.zeros((N + 1, N + 1))
-    B[:N, :N] = A
-    r = 1.0 / math.sqrt(2 * e)
-    for i in range(N):
-        B[i, N] = -rhs[i, 1]
-    for k in range(n):
-        col = 0.0
-        for q in range(n):
-            col += D[q, k]
-        B[N, k] = -col * r
-    for j in range(m):
-        B[N, n + j] = -gend[j] * r
-    R = np.zeros((N + 1, 2))
-    for i in range(N):
-        R[i, 0] = clearance * rhs[i, 0]
-    R[N, 0] = k_target
-    R[N, 1] = 1.0
-    try:
-        X = np.linalg.solve(B, R)
-    except Exception:          # exactly singular: the receding-contact pole itself (p, delta -> inf)
-        out[:] = np.inf
-        return
-    # moment rows (cos, 1, dx/dphi) and the gap row at phi = pi
-    mom = np.zeros((3, N))
-    for k in range(n):
-        ph = e * s[k]
-        t = math.tan(0.5 * ph)
-        f = (math.cos(ph), 1.0, 0.5 * (1 + t * t))
-        for q in range(3):
-            mom[q, k] = PI / n * f[q]
-            for j in range(m):
-                mom[q, n + j] += omega[j, k] * f[q]
-    g = np.zeros((1, N))
-    cen, off = np.zeros(1), np.full(1, PI)
-    _ak.operator(cen, off, ac, ae, s, D, k0, k1, ar, g, 0)
-    if m:
-        _ek.enrichment(cen, off, ac, ae, s, k0, k1, ar, False, Lam, Sig, omega, gcs, gss, sf, gf, g, n)
-    p = B_ = C = kk = gv = pk = 0.0
-    for i in range(N):
-        v, vk = X[i, 0], X[i, 1]
-        p += mom[0, i] * v
-        B_ += mom[1, i] * v
-        C += mom[2, i] * v
-        kk += B[N, i] * v
-        gv += g[0, i] * v
-        pk += mom[0, i] * vk
-    d = X[N, 0]
-    out[0], out[1], out[2], out[3] = p, B_, d, 2 * clearance + d + gv
-    out[4], out[5], out[6], out[7] = kk, C, pk, X[N, 1]
-
-
-@njit(cache=True)
 def bordered_state_even(e, k_target, clearance, s, D, xt, LD0, SD0, Lam, Sig, omega, gend, sf, gf, k0, k1, ar,
                         K, out):
-    """:func:`bordered_state` on the even half (module docstring): xt, LD0, SD0, Lam, Sig restricted to the table
-    points x >= 0 (numerics.one_arc._half_tables), the node columns folded."""
+    """One arc of half-width e on the even half (module docstring): out[:] = (p, B*, d, h(pi), k, C*, p_k, d_k)
+    (numerics.one_arc.ArcState); xt, LD0, SD0, Lam, Sig restricted to the table points x >= 0
+    (numerics.one_arc._half_tables), the node columns folded."""
     n = s.size
     m = omega.shape[0]
     nh = (n + 1) // 2                      # node columns k < nh (k = n - 1 - k for the middle node, n odd)
@@ -195,7 +131,7 @@ def bordered_state_even(e, k_target, clearance, s, D, xt, LD0, SD0, Lam, Sig, om
 @njit(cache=True)
 def arc_states(a, k_target, clearance, pole, rel_step, s, D, xt, LD0, SD0, Lam, Sig, omega, gend, sf, gf, k0,
                k1, ar, K):
-    """States (N_OUT columns, as bordered_state) and slopes dp/da, dd/da at every contact parameter a[i] (all at
+    """States (N_OUT columns, as bordered_state_even) and slopes dp/da, dd/da at every contact parameter a[i] (all at
     the node count of the tables given): central differences of the physical state at a +- h,
     h = rel_step min(a, |a - pole|) (numerics.one_arc.arc_states)."""
     out = np.empty((a.size, N_OUT))
