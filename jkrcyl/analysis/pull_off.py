@@ -14,7 +14,6 @@ from __future__ import annotations
 
 from ..model.problem import Problem
 from ..model.single_patch import solver
-from ..model.stability import fixed_arc_derivatives
 from ..results import PullOff
 from . import forward as _fw
 from . import path as _path
@@ -22,14 +21,16 @@ from . import path as _path
 
 def grows_under_pull(pb: Problem, a: float, control: str) -> bool:
     """At the single patch a: does lowering the held quantity at fixed arc lower the edge coefficient (G < w),
-    so that the contact grows?  (dX/dk)|_a > 0 (jkrcyl.model.stability)."""
-    return bool(fixed_arc_derivatives(solver(pb).states([a]), pb.work_shift)[control][0] > 0)
+    so that the contact grows?  (dX/dk)|_a > 0 (jkrcyl.model.stability; the solver's rule for other edge laws)."""
+    return solver(pb).grows_under_pull(a, control)
 
 
 def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
     """Detachment along the quasi-static path (module docstring) under ``control``."""
     if pb.M == 0:
         return PullOff(control, None, None, None, None, "no adhesion (w = 0): the contact vanishes at P = 0")
+    if not solver(pb).adheres:
+        return PullOff(control, None, None, None, None, solver(pb).no_adherence_reason)
     _, start, _ = _path.first_contact(pb, un, control)
     if start is None:
         return PullOff(control, None, None, None, None,
@@ -42,6 +43,14 @@ def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
         return PullOff(control, None, None, None, start, f"first contact lands on the {start.branch} branch")
     track = _path.SingleTrack(pb, un, start.branch, "bottom", control)
     _, event, s = _path.walk(track, track.index(start.a), float("-inf"))
+    while event == "end":                         # a branch going on as another (cohesive: the zone-only pin)
+        nxt, kind = _path.land(pb, un, s, "end", control, s.held(), False)
+        if kind != "continue":
+            if nxt is None and s.P >= 0:
+                break
+            return _detached(control, s, kind, nxt)
+        track = _path.SingleTrack(pb, un, nxt.branch, "bottom", control)
+        _, event, s = _path.walk(track, track.index(nxt.a), float("-inf"))
     if event == "gap":
         return PullOff(control, None, None, None, s,
                        f"confined: the gap at phi = pi closes first (P = {s.P:.6g} N/m, delta = {s.delta:.4g} m); "
@@ -51,8 +60,18 @@ def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
         return PullOff(control, None, None, None, s,
                        f"no fold: along the stable branch the {what} decreases without bound (the contact grows "
                        f"towards a_crit or the full circle), so the pin does not detach; last state a = {s.a:.6g}")
+    if s.branch == "contactless":
+        return _detached(control, s, "pull-off", None)
     if grows_under_pull(pb, s.a, control):
         return PullOff(control, None, None, None, s,
                        f"fold at P = {s.P:.6g} N/m on the {s.branch} branch: a further pull lowers G, the contact "
                        "grows round into full contact (no detachment)")
     return PullOff(control, s.P, s.contact_width, s.delta, s, "detachment: the contact shrinks away (G > w)")
+
+
+def _detached(control, s, kind, landing):
+    """Detachment where a branch ends on an unstable continuation (the cohesive contact at its touch end under
+    load: the zone-only states beyond hold less) or where the zone-only pin lets go."""
+    where = ("the contact vanishes at its touch end (the zone-only states beyond are unstable)"
+             if s.branch.startswith("sub-critical") else "the zone-only pin lets go")
+    return PullOff(control, s.P, s.contact_width, s.delta, s, f"detachment: {where}")

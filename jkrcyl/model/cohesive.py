@@ -182,6 +182,17 @@ class Cohesive(SinglePatch):
     def models_confined(self):
         return False
 
+    @functools.cached_property
+    def adheres(self):
+        """Whether some feasible contact state pulls (p < 0); not when the range reaches round (h0 > 2 Delta)."""
+        s = self.states(self.grid("sub-critical", self.dense_points))
+        return bool(np.any((s.p < 0) & s.feasible))
+
+    @property
+    def no_adherence_reason(self):
+        return (f"no adherence force: every state of the cohesive law pushes (P >= 0) -- its range h0 = "
+                f"{self.law.h0:.6g} Delta reaches round the hole (a uniform traction has no resultant)")
+
     def floating(self):
         """(lo, hi) of delta/Delta of the pin floating in a range that reaches round (p = 0), or None."""
         return _cz.floating_range(self.law.m, self.law.s0, self.law.theta, self.law.gb, self.law.ar)

@@ -95,6 +95,9 @@ class SinglePatch:
         """Where a branch continues past its end at a: (regime, a) on another branch, or None."""
         return None
 
+    adheres = True               # some state pulls (P < 0) where M > 0
+    no_adherence_reason = ""
+
     @property
     def models_confined(self) -> bool:
         """Whether two-patch and full-contact states are modelled for this edge law."""

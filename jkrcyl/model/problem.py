@@ -118,6 +118,14 @@ class Problem:
                              f"{self.theta!r} (no material pair has more), got {self.alpha_ratio!r}")
         return self
 
+    def require_confined(self, what="two patches and full contact are", param="sigma0"):
+        """ValueError for an edge law whose two-patch and full-contact states are not modelled (the cohesive law);
+        returns the problem."""
+        if not isinstance(self.edge, Griffith):
+            raise ValueError(f"{param}: {what} not modelled for the cohesive (Maugis-Dugdale) law (two patches and "
+                             "full contact are JKR's only, issue 19); use sigma0=None")
+        return self
+
     @classmethod
     def of(cls, contact) -> "Problem":
         """The normalised problem of a :class:`jkrcyl.Contact` with Delta > 0, with its edge law (Griffith, or
