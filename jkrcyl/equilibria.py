@@ -71,7 +71,12 @@ def adherence(M: float, theta: float, control: str = "load", *, gb: float, regim
     """Adherence points, sub-critical branch first: per branch the lowest local minimum of P* (control 'load',
     the 'x' of Fig. 3), or every stationary point of the approach (the 'o'); under load ``outcome`` says what a
     further pull does (from the confined analysis where the point is infeasible, when confined=True)."""
-    pb = Problem(M, theta, gb, alpha_ratio)
+    return adherence_of(Problem(M, theta, gb, alpha_ratio), control, regimes, confined)
+
+
+def adherence_of(pb: Problem, control: str = "load", regimes: Optional[Sequence[str]] = None,
+                 confined: bool = True) -> List[Point]:
+    """:func:`adherence` of a validated Problem (any edge law: the cohesive law's branches too)."""
     _check_control(control)
     regs = solver(pb).regimes() if regimes is None else _regimes(regimes)
     out = []

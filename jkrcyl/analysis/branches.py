@@ -19,14 +19,15 @@ from ..model.single_patch import SLOPE_OF, solver
 from ..numerics import roots as _roots
 from ..results import Curve, Point
 
-REGIMES = ("sub-critical", "super-critical", "contactless")   # contactless: cohesive laws (zone only)
+REGIMES = ("sub-critical", "super-critical")
+ZONE_ONLY = "contactless"    # the pin held by its zone without contact: cohesive edge laws only
 RUBBERY_A_MAX = 3.0      # curve(): a branch without a_crit is drawn over 0 < a < 3 (Fig. 7)
 SMALL_A_POINTS = 200     # log-spaced points below the uniform grid (closed form; a tenth for collocation)
 
 
 def check_regime(pb: Problem, regime: str) -> str:
-    if regime not in REGIMES:
-        raise ValueError(f"regime must be one of {', '.join(REGIMES)}, got {regime!r}")
+    if regime not in REGIMES + (ZONE_ONLY,):
+        raise ValueError(f"regime must be one of {', '.join(REGIMES + (ZONE_ONLY,))}, got {regime!r}")
     if regime not in solver(pb).regimes():
         why = ("a_crit = inf, section 7.2" if regime == "super-critical" else
                "zone-only states exist for a cohesive edge law only")
