@@ -48,7 +48,7 @@ def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
         if kind != "continue":
             if nxt is None and s.P >= 0:
                 break
-            return _detached(control, s, kind, nxt)
+            return _detached(control, _path.continuation(pb, un, s, control) or s)
         track = _path.SingleTrack(pb, un, nxt.branch, "bottom", control)
         _, event, s = _path.walk(track, track.index(nxt.a), float("-inf"))
     if event == "gap":
@@ -61,7 +61,7 @@ def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
                        f"no fold: along the stable branch the {what} decreases without bound (the contact grows "
                        f"towards a_crit or the full circle), so the pin does not detach; last state a = {s.a:.6g}")
     if s.branch == "contactless":
-        return _detached(control, s, "pull-off", None)
+        return _detached(control, s)
     if grows_under_pull(pb, s.a, control):
         return PullOff(control, None, None, None, s,
                        f"fold at P = {s.P:.6g} N/m on the {s.branch} branch: a further pull lowers G, the contact "
@@ -69,9 +69,9 @@ def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
     return PullOff(control, s.P, s.contact_width, s.delta, s, "detachment: the contact shrinks away (G > w)")
 
 
-def _detached(control, s, kind, landing):
-    """Detachment where a branch ends on an unstable continuation (the cohesive contact at its touch end under
-    load: the zone-only states beyond hold less) or where the zone-only pin lets go."""
+def _detached(control, s):
+    """Detachment where a branch ends on an unstable continuation (the cohesive contact at its touch end, s the
+    touching zone-only state: under load the zone-only states hold less) or where the zone-only pin lets go."""
     where = ("the contact vanishes at its touch end (the zone-only states beyond are unstable)"
-             if s.branch.startswith("sub-critical") else "the zone-only pin lets go")
+             if s.a == 1.0 else "the zone-only pin lets go")
     return PullOff(control, s.P, s.contact_width, s.delta, s, f"detachment: {where}")

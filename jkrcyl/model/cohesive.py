@@ -5,12 +5,13 @@
 
 * ``sub-critical``: one contact |phi| < eps at the bottom with its zone |phi| < c (h(c) = h0), k = 0 at the
   contact end.  The branch can turn back in eps (several states per contact size), so a is NOT tan(eps/2) but
-  1 + t, t the arclength of the traced branch in (log eps, log(c - eps)) from its touch end (eps -> 0) up to
+  2 + t, t the arclength of the traced branch in (log eps, log(c - eps)) from its touch end (eps -> 0) up to
   p = P_CAP (towards the receding limit) -- jkrcyl.numerics.cohesive_branch; the Slice carries eps and c.  Where
   the range reaches round at the touch end (zones 'all') t = log(eps/eps_touch).
 * ``contactless``: the pin without contact, held by its bottom zone |phi| < c (closed form,
-  jkrcyl.numerics.cohesive_zones), a in (0, 1) with c = a c_touch: from the pin entering the range (c -> 0,
-  delta = -h0) to the touch (h(0) = 0), where the contact branch starts (:meth:`Cohesive.continues`).  Present
+  jkrcyl.numerics.cohesive_zones), a in (0, 1] with c = c_lo + a (c_touch - c_lo): from the pin entering the
+  range (c -> c_lo = 0, delta = -h0) to the touch (h(0) = 0), where the contact branch starts
+  (:meth:`Cohesive.continues`); a touch beyond pi/2 (the approach's pole) starts from c_lo = pi/2.  Present
   when the contact branch starts from a touch (not when the range reaches round there).
 
 Slopes are per point: along the branch's tangent (implicit differentiation of k = 0, h(c) = h0 with finite
@@ -57,8 +58,11 @@ class Cohesive(SinglePatch):
 
     @functools.cached_property
     def _contactless(self):
+        """(c_lo, c_touch) of the zone-only branch, or None."""
         c, touches = _cb.contactless_end(self.law)
-        return c if touches else None
+        if not touches:
+            return None
+        return (0.0, c) if c < math.pi / 2 else (math.pi / 2 * (1 + 1e-6), c)
 
     @property
     def dense_points(self):
@@ -67,13 +71,13 @@ class Cohesive(SinglePatch):
     @property
     def a_crit(self) -> float:
         """The end of the contact branch's parameter (not a receding contact: the pair's is Contact.a_crit)."""
-        return 1.0 + float(self._trace[1][-1]) * (1 + 1e-12)
+        return 2.0 + float(self._trace[1][-1]) * (1 + 1e-12)
 
     def regimes(self):
         return ("contactless", "sub-critical") if self._contactless is not None else ("sub-critical",)
 
     def regime_of(self, a: float) -> str:
-        return "contactless" if a < 1 else "sub-critical"
+        return "contactless" if a <= 1 else "sub-critical"
 
     def eps_star_of(self, s: Slice):
         """eps/pi (no receding contact on this parametrisation)."""
@@ -85,11 +89,11 @@ class Cohesive(SinglePatch):
             n = CONTACTLESS_POINTS if n == self.dense_points else n
             return (np.arange(n) + 0.5) / n
         t = self._trace[1]
-        return 1.0 + (t if n == self.dense_points else np.linspace(t[0], t[-1], n))
+        return 2.0 + (t if n == self.dense_points else np.linspace(t[0], t[-1], n))
 
     def on_branch(self, regime, a):
-        lo, hi = (0.0, 1.0) if regime == "contactless" else (1.0, self.a_crit)
-        bad = (a <= lo) | (a >= hi) if regime == "contactless" else (a < lo) | (a > hi)
+        lo, hi = (0.0, 1.0) if regime == "contactless" else (2.0, self.a_crit)
+        bad = (a <= lo) | (a > hi) if regime == "contactless" else (a < lo) | (a > hi)
         if regime not in self.regimes() or np.any(bad):
             raise ValueError(f"a must be in ({lo!r}, {hi!r}) on the {regime} branch of this cohesive law "
                              f"(a: the branch parameter), got {np.ravel(a)[0]!r}")
@@ -112,7 +116,7 @@ class Cohesive(SinglePatch):
             normal = np.array([-chord[1], chord[0]]) / np.hypot(*chord)
             xp = _cb.project(self.law, x[j] + f * chord, normal, np.hypot(*chord))
             if xp is None:
-                raise ValueError(f"a: no cohesive state found at the branch parameter {1 + t!r}")
+                raise ValueError(f"a: no cohesive state found at the branch parameter {2 + t!r}")
         eps, d = math.exp(xp[0]), math.exp(xp[1])
         de = eps * chord[0]
         return eps, eps + d, (de, de + d * chord[1])
@@ -127,10 +131,11 @@ class Cohesive(SinglePatch):
         """Per-point data (jkrcyl.numerics.cohesive_branch.Point) at the parameter a (cached)."""
         a = float(a)
         if a not in self._cache:
-            if a < 1:
-                pt = _cb.contactless_point(self.law, a * self._contactless)
+            if a <= 1:
+                lo, hi = self._contactless
+                pt = _cb.contactless_point(self.law, lo + a * (hi - lo))
             else:
-                eps, c, direction = self._where(a - 1.0)
+                eps, c, direction = self._where(a - 2.0)
                 pt = _cb.point(self.law, eps, c, direction)
             if len(self._cache) > 20000:
                 self._cache.clear()
@@ -141,7 +146,8 @@ class Cohesive(SinglePatch):
         a = np.atleast_1d(np.asarray(a, dtype=float))
         pts = [self.point(x) for x in a.tolist()]
         col = lambda name: np.array([getattr(q, name) for q in pts], dtype=float)
-        c_scale = np.where(a < 1, self._contactless or 1.0, 1.0)      # contactless: d/da = c_touch d/dc
+        span = self._contactless[1] - self._contactless[0] if self._contactless else 1.0
+        c_scale = np.where(a <= 1, span, 1.0)                           # contactless: d/da = (c_touch - c_lo) d/dc
         cw = self.problem.work_shift
         p, dn = col("p"), col("delta")
         dp, ddn = col("dp_dt") * c_scale, col("ddn_dt") * c_scale
@@ -155,13 +161,14 @@ class Cohesive(SinglePatch):
 
     # --- the branches' ends and what the analyses ask ------------------------------------------------------
     def continues(self, regime, a):
-        """The contact branch's touch end (a = 1) continues on the contactless one (a -> 1) and back."""
+        """The contact branch's touch end (a = 2) continues as the contactless one from the touch (a = 1) and
+        back."""
         if self._contactless is None:
             return None
-        if regime == "sub-critical" and a <= 1.0 + 1e-9 * max(1.0, self._trace[1][-1]):
-            return "contactless", 1.0 - 0.5 / CONTACTLESS_POINTS
+        if regime == "sub-critical" and a <= 2.0 + 1e-9 * max(1.0, self._trace[1][-1]):
+            return "contactless", 1.0
         if regime == "contactless" and a >= 1.0 - 1.0 / CONTACTLESS_POINTS:
-            return "sub-critical", 1.0
+            return "sub-critical", 2.0
         return None
 
     def grows_under_pull(self, a, control):
