@@ -64,6 +64,11 @@ class Dugdale:
         return m * m / self.s0
 
 
+def edge_law(s0=None):
+    """The edge law of a normalised cohesive strength s0: None -> Griffith (JKR), else Dugdale(s0)."""
+    return GRIFFITH if s0 is None else Dugdale(s0)
+
+
 @dataclass(frozen=True)
 class Problem:
     """A pin in a hole in the normalisation of section 6; frozen and hashable (the cache key of every solver).
