@@ -28,7 +28,7 @@ def run(args):
             out.write("\n")
         else:
             out.write(f"# M={inputs.number(pi.M)} theta={inputs.number(pi.theta)} {pi.gb_text} "
-                      f"alpha_ratio={inputs.number(pi.alpha_ratio)} s0={inputs.number(pi.s0)} regime={args.regime}\n")
+                      f"alpha_ratio={inputs.number(pi.alpha_ratio)} regime={args.regime} edge={pi.law_text}\n")
             out.write(inputs.header(table, inputs.PHYSICAL_UNITS) + "\n")
             for row in zip(*table.values()):
                 out.write(",".join(inputs.number(x) for x in row) + "\n")

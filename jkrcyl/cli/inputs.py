@@ -93,7 +93,7 @@ class ProblemInput:
     @property
     def law_text(self) -> str:
         """The edge law in words: JKR, or the cohesive law's s0 (and lambda in the half-plane convention)."""
-        return "JKR" if self.s0 is None else f"Maugis-Dugdale, s0 = {number(self.s0)}"
+        return "JKR" if self.s0 is None else f"Dugdale(s0={number(self.s0)})"
 
     @property
     def gb_text(self) -> str:
