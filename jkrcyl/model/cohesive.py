@@ -33,7 +33,7 @@ from ..numerics import cohesive_branch as _cb
 from ..numerics import cohesive_zones as _cz
 from .patch import SinglePatch, Slice
 
-CONTACTLESS_POINTS = 200
+CONTACTLESS_POINTS = 64
 
 
 class Cohesive(SinglePatch):
@@ -154,6 +154,24 @@ class Cohesive(SinglePatch):
         return Slice(a=a, p=p, dp_da=dp, dn=dn, ddn_da=ddn, dw=dn + cw * p, ddw_da=ddn + cw * dp, h=col("h_pi"),
                      p_k=col("D_p"), dn_k=col("D_dn"), B=col("B"), eps=col("eps"), c=col("c"),
                      c_top=np.zeros(a.size), total=col("potential"), feasible=col("feasible").astype(bool))
+
+    def value(self, field, a):
+        """p, dn, dw or h at one branch parameter without the slopes, feasibility and energy (root refinement)."""
+        if field not in ("p", "dn", "dw", "h"):
+            return super().value(field, a)
+        a = float(a)
+        if a in self._cache:
+            pt = self._cache[a]
+            p, dn, h = pt.p, pt.delta, pt.h_pi
+        elif a <= 1:
+            lo, hi = self._contactless
+            st = _cz.contactless_state(lo + a * (hi - lo), self.law.m, self.law.s0, self.law.theta, self.law.gb,
+                                       self.law.ar)
+            p, dn, h = st.p, st.delta_over_Delta, st.h_pi_over_Delta
+        else:
+            eps, c, _ = self._where(a - 2.0)
+            p, dn, h = _cb.state_values(self.law, eps, c)
+        return {"p": p, "dn": dn, "dw": dn + self.problem.work_shift * p, "h": h}[field]
 
     def release_rates(self, s):
         """No Griffith edge: NaN."""

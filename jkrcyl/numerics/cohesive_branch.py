@@ -114,7 +114,7 @@ def trace(law):
 
     x0 = np.array([math.log(law.eps_lo), math.log(start.c - law.eps_lo)])
     path = _cont.trace(lambda x: residual(law, x), x0, np.array([1.0, 0.0]), inside, lambda a, b: (None, "end"),
-                       h0=0.05, h_max=0.15, h_min=1e-5, max_steps=1500)
+                       h0=0.1, h_max=0.25, h_min=1e-5, max_steps=1500)
     return path.points, "zone"
 
 
@@ -138,6 +138,16 @@ def project(law, x_pred, normal, scale):
     eps = math.exp(x_pred[0])
     d = law.fixed(eps).zone_end_near(law.s0, law.h0, math.exp(x_pred[1]))
     return None if d is None else np.array([x_pred[0], math.log(d)])
+
+
+def state_values(law, eps, c):
+    """(p, delta/Delta, h(pi)/Delta) of the equilibrium (eps, c) (k = 0), without slopes."""
+    aff = affine(law, eps, c)
+    delta = -aff[0][0] / aff[0][1]
+    fc = law.fixed(eps)
+    zones = _co.zones_of(min(c, math.pi))
+    u = fc.fx[3] + delta * fc.fx[4] + law.s0 * _zone_solution(law, fc, zones)
+    return _at(aff[1], delta), delta, fc.gap(math.pi, delta, u, zones, law.s0)[0]
 
 
 def point(law, eps, c, direction):
