@@ -29,9 +29,9 @@ def check_regime(pb: Problem, regime: str) -> str:
     if regime not in REGIMES + (ZONE_ONLY,):
         raise ValueError(f"regime must be one of {', '.join(REGIMES + (ZONE_ONLY,))}, got {regime!r}")
     if regime not in solver(pb).regimes():
-        why = ("a_crit = inf, section 7.2" if regime == "super-critical" else
-               "zone-only states exist for a cohesive edge law only")
-        raise ValueError(f"regime: no {regime} equilibria for this problem ({why})")
+        raise ValueError(f"regime: no {regime} equilibria for this problem (its branches: "
+                         f"{', '.join(solver(pb).regimes())}; super-critical needs a finite a_crit, section 7.2, "
+                         "and a Griffith edge; contactless a cohesive law)")
     return regime
 
 
