@@ -10,7 +10,7 @@ export PYTHONHASHSEED := 0
 
 $(STAMP): pyproject.toml constraints.txt
 	test -x $(VPY) || $(PYTHON) -m venv $(VENV)
-	$(VPY) -m pip install --quiet -c constraints.txt -e '.[derive,test]'
+	$(VPY) -m pip install --quiet -c constraints.txt -e '.[derive,test,map]'
 	touch $(STAMP)
 
 ## make derive: re-derive every result with sympy and rewrite generated/ (kernels + DERIVATION.md)
@@ -22,7 +22,7 @@ test: $(STAMP)
 	$(VPY) -m pytest -q
 
 $(BENCH_STAMP): $(STAMP)
-	$(VPY) -m pip install --quiet -c constraints.txt -e '.[derive,test,bench]'
+	$(VPY) -m pip install --quiet -c constraints.txt -e '.[derive,test,map,bench]'
 	touch $(BENCH_STAMP)
 
 ## make bench: time the full state (n = 1e6) against lambdify, numpy, mpmath, quad and a floor

@@ -231,18 +231,29 @@ def half_plane(report):
                   "(Delta/R -> 0) the closure is (s0/m^2) h(c) = 1, i.e. h(c) = h0, and Pbar is p")
     report.proof("Baney-Hui's closure minus (s0/m^2) h(c) and their load times m^(4/3) minus p expand to 0")
     report.result("What is closed form and what is numerical (jkrcyl.numerics.cohesive*)",
-                  r"\text{closed: zone displacement and load, scales, contactless states, half-plane limit; "
-                  r"numerical: contact density, zone ends, pull-off}", NEW,
+                  r"\text{closed: zone displacement and load, scales, contactless states, half-plane limit, "
+                  r"dE/dc = 2(s_0 h(c) - m^2); numerical: contact density, zone ends, branch, slopes, pull-off}",
+                  NEW,
                   "closed form: the displacement and the load of every Dugdale zone (any arc, any alpha*), the "
                   "states without contact up to the root of h = h0 at a zone end (the approach is linear), "
-                  "lambda <-> s0 <-> h0, the half-plane limit (Baney-Hui). Numerical: the contact density of a "
-                  "finite contact (the Gauss-Chebyshev collocation of jkrcyl.numerics.arcs with the zone "
-                  "displacement as a third right-hand side; spectral, at the rate of the Bernstein ellipse "
+                  "lambda <-> s0 <-> h0, the half-plane limit (Baney-Hui: its closure and load; its pull-off is a "
+                  "1-D minimisation over them, jkrcyl.numerics.cohesive_half_plane), the affine dependence of "
+                  "every state on the approach at a fixed contact and zone (k, p, B, h(c)), the energy identity "
+                  "of the zone end: with the zone |phi| < c held, the minimum of the elastic plus interface "
+                  "energy has dE/dc = 2 (s0 h(c) - m^2) (envelope theorem; the stability rule of "
+                  "jkrcyl.model.cohesive is its second derivative, a Schur complement). Numerical: the contact "
+                  "density of a finite contact (the Gauss-Chebyshev collocation of jkrcyl.numerics.arcs with the "
+                  "zone displacement as a third right-hand side; spectral, at the rate of the Bernstein ellipse "
                   "through the zone end c/eps), the approach from k = 0 (linear), the zone ends from h = h0 "
-                  "(scalar roots), the load-control pull-off (continuation of the branch in (eps, c - eps)). "
-                  "Checked in tests/test_cohesive*.py: JKR as lambda -> inf (states O(lambda^-2), pull-off "
-                  "O(lambda^-4)), Baney-Hui at Delta/R -> 0 (states and pull-off to < 3e-6), the Dugdale "
-                  "energy stationary along the states (1e-8)")
+                  "(scalar roots), the branch as a 1-D family (pseudo-arclength continuation in "
+                  "(log eps, log(c - eps)): it turns back in eps and in c), the per-point tangent slopes and "
+                  "the stability derivatives (central differences in eps and c at a fixed approach), the "
+                  "interface energy int h over the zone (Gauss-Legendre), the pull-off (walk on the traced "
+                  "branch; a stand-alone continuation as the second route). Checked in tests/test_cohesive*.py: "
+                  "JKR as lambda -> inf (contact width at a fixed load O(lambda^-2), approach, pull-off and the "
+                  "cycle's dissipated energy O(lambda^-4)), Baney-Hui at Delta/R -> 0 (states and pull-off to "
+                  "1e-4 through the public API), the Dugdale energy stationary along the states (1e-8), the "
+                  "stability flags against minima of the held-zone-end energy (random pairs)")
     doc = ("Half-plane limit (cylinder on a flat, Baney-Hui 1997) in the normalised variables: load\n"
            "p = eps^2/4 - 2 s0 sqrt(c^2 - eps^2) and the opening h(c)/Delta at the zone end c of a contact\n"
            "|phi| < eps with the zone eps < |phi| < c (derive/cohesive.py); the state has\n"

@@ -14,6 +14,7 @@ from .analysis import cycle as _cycle
 from .analysis import forward as _fw
 from .analysis import pull_off as _pull_off
 from .analysis import tracing as _tr
+from .contact_cohesive import CohesiveLaw
 from .materials import Materials
 from .model import two_patch as _two
 from .model.problem import Problem
@@ -24,13 +25,18 @@ PARALLEL_MIN = _k.PARALLEL_MIN   # state() uses the prange kernel from this many
 
 
 @dataclass(frozen=True)
-class Contact:
-    """Hole radius R, clearance Delta = R - R_D >= 0, work of adhesion w >= 0, and the materials."""
+class Contact(CohesiveLaw):
+    """Hole radius R, clearance Delta = R - R_D >= 0, work of adhesion w >= 0, the materials, and the edge law:
+    sigma0 = None (JKR: adhesion of zero range, the Griffith edge) or the Maugis-Dugdale cohesive strength
+    sigma0 > 0 [Pa] (the traction sigma0 wherever 0 < gap <= h0 = w/sigma0; needs w > 0 and Delta > 0; or give
+    the transition parameter: :meth:`with_lambda`).  Every analysis (solve, pull_off, cycle, curve, adherence)
+    uses the law; two patches and full contact are modelled for JKR only (ValueError with sigma0)."""
 
     R: float
     Delta: float
     w: float
     materials: Materials
+    sigma0: float = None
 
     def __post_init__(self):
         object.__setattr__(self, "R", finite_scalar("R", self.R, low=0.0, low_open=True))
@@ -41,6 +47,11 @@ class Contact:
         object.__setattr__(self, "w", finite_scalar("w", self.w, low=0.0))
         if not isinstance(self.materials, Materials):
             raise ValueError(f"materials must be a jkrcyl.Materials, got {type(self.materials).__name__}")
+        if self.sigma0 is not None:
+            object.__setattr__(self, "sigma0", finite_scalar("sigma0", self.sigma0, low=0.0, low_open=True))
+            if self.w == 0 or self.Delta == 0:
+                raise ValueError(f"sigma0: a cohesive law needs w > 0 and Delta > 0 (h0 = w/sigma0, lengths over "
+                                 f"Delta), got w = {self.w!r}, Delta = {self.Delta!r}")
 
     # --- parameters of sections 3-6 ---------------------------------------------------------------
     @property
@@ -99,6 +110,7 @@ class Contact:
         method: "closed-form" (the paper's (4.4)-(5.10); ValueError unless alpha* = 0), "numeric" (collocation
         solution of (2.1)/(5.2), jkrcyl.numerics.one_arc, any alpha*) or "auto" (closed form where alpha* = 0).
         """
+        self._require_griffith("state(a)")
         if method not in ("auto", "closed-form", "numeric"):
             raise ValueError(f"method must be 'auto', 'closed-form' or 'numeric', got {method!r}")
         if method == "closed-form":
@@ -127,18 +139,17 @@ class Contact:
         [N/m], delta and delta_work [m], and (load) what a further pull does, ``outcome``:
         jkrcyl.equilibria.adherence."""
         from . import equilibria
-        pb = self.problem
-        pts = equilibria.adherence(pb.M, pb.theta, control, gb=pb.gb, alpha_ratio=pb.alpha_ratio, confined=confined)
+        pts = equilibria.adherence_of(self.problem, control, confined=confined)
         return [p.with_units(self.load_scale, self.Delta) for p in pts]
 
     def two_patch(self, n=None):
         """Two-patch branches (second contact at the top of the hole), with P [N/m], delta, delta_work [m]."""
-        pb = _two.require_finite_theta(self.problem)
+        pb = _two.require_finite_theta(self.problem.require_confined("two_patch() is"))
         return tuple(b.with_units(self.load_scale, self.Delta) for b in _tr.branches(pb, n))
 
     def confined_events(self):
         """What follows when the gap closes at phi = pi under slow pulling: jkrcyl.analysis.confined."""
-        return _confined.confined_events(_two.require_finite_theta(self.problem))
+        return _confined.confined_events(_two.require_finite_theta(self.problem.require_confined("confined_events() is")))
 
     # --- forward problems and paths (jkrcyl.analysis) -----------------------------------------------------
     def solve(self, P=None, delta=None, branches=None, delta_work=None):
@@ -153,7 +164,7 @@ class Contact:
         (name, value), = given.items()
         control = {"P": "load", "delta": "grip", "delta_work": "grip-work"}[name]
         target = finite_scalar(name, value) / (self.load_scale if name == "P" else self.Delta)
-        names = _fw.check_branches(branches)
+        names = _fw.check_branches(branches, self.problem)
         return _fw.solve_normalised(self.problem, _fw.Units.of(self), control, target, names)
 
     def pull_off(self, control="load"):
@@ -200,6 +211,7 @@ class Contact:
         -------
         ndarray or float, or a tuple of two when parts=True
         """
+        self._require_griffith("pressure(a, phi)")
         a_arr, phi_arr = _broadcast(contact_parameter(a), angle(phi))
         if np.max(a_arr) > PRESSURE_A_MAX:
             raise ValueError(f"a must be <= {PRESSURE_A_MAX:g} in pressure() (the bounded part of (5.4) loses its "
@@ -218,6 +230,7 @@ class Contact:
 
     def gap(self, a, phi):
         """Gap h(phi) of (5.9) [m]: numpy-broadcast over a and phi; 0 inside the contact."""
+        self._require_griffith("gap(a, phi)")
         a_arr, phi_arr = _broadcast(contact_parameter(a), angle(phi))
         return _shaped(physical(self).gap(a_arr.ravel(), phi_arr.ravel()), a_arr.shape)
 

@@ -19,7 +19,8 @@ from .analysis import confined as _confined
 from .analysis import tracing as _tr
 from .model import full_contact as _full
 from .model import two_patch as _two
-from .model.problem import Problem
+from .model.problem import Problem, edge_law
+from .numerics import cohesive_scales as _scales
 from .model.single_patch import solver
 from .numerics.zero_load import zero_load_contact, zero_load_max_M   # noqa: F401  (public names)
 from .results import ConfinedEvents, Curve, FullContact, Point, TwoPatchCurve, TwoPatchState
@@ -36,9 +37,23 @@ def incompressible_gb(theta: float) -> float:
     return 1.0 if math.isinf(th) else 1.0 - 1.0 / (2.0 * th)
 
 
-def problem(M: float, theta: float, gb: float, alpha_ratio: float = 0.0) -> Problem:
-    """The validated :class:`~jkrcyl.model.problem.Problem`."""
-    return Problem(M, theta, gb, alpha_ratio)
+def problem(M: float, theta: float, gb: float, alpha_ratio: float = 0.0, s0: Optional[float] = None) -> Problem:
+    """The validated :class:`~jkrcyl.model.problem.Problem`; s0 = sigma0 R beta*/(4 pi Delta): the Maugis-Dugdale
+    cohesive law (jkrcyl.model.problem.Dugdale), None: JKR."""
+    return Problem(M, theta, gb, alpha_ratio, _law(s0))
+
+
+def _law(s0):
+    return edge_law(s0)
+
+
+def zone_strength(lam: float, M: float, theta: float) -> float:
+    """s0 of the transition parameter lambda at (M, vartheta) in the half-plane convention (Delta/R -> 0):
+    lambda = 4 s0/m^(2/3), m = M vartheta (M_R* for vartheta = inf); jkrcyl.numerics.cohesive_scales."""
+    pb = Problem(M, theta, 0.0)
+    if pb.M == 0:
+        raise ValueError("lambda: the transition parameter needs adhesion, M > 0 (w > 0), got M = 0")
+    return _scales.zone_strength(finite_scalar("lambda", lam, low=0.0, low_open=True), pb.m)
 
 
 def a_crit(M: float, theta: float, gb: float, alpha_ratio: float = 0.0) -> float:
@@ -47,31 +62,37 @@ def a_crit(M: float, theta: float, gb: float, alpha_ratio: float = 0.0) -> float
 
 
 def curve(M: float, theta: float, regime: str = "sub-critical", n: int = 2000, *, gb: float, a=None,
-          alpha_ratio: float = 0.0) -> Curve:
+          alpha_ratio: float = 0.0, s0: Optional[float] = None) -> Curve:
     """The equilibrium branch ``regime`` at (M, vartheta): n points uniform in eps* = 2 atan(a/a_crit)/pi (over
     0 < a < 3 where a_crit = inf, Fig. 7), or at the given contact parameters a on the branch.  P* (section 6),
-    delta/Delta (5.8), h(pi)/Delta (5.10), stability at fixed P, delta and delta_work (section 8.3) per point."""
-    pb = Problem(M, theta, gb, alpha_ratio)
+    delta/Delta (5.8), h(pi)/Delta (5.10), stability at fixed P, delta and delta_work (section 8.3) per point.
+    s0: the cohesive law (:func:`problem`; its branches 'sub-critical' and 'contactless', a the branch parameter)."""
+    pb = Problem(M, theta, gb, alpha_ratio, _law(s0))
     return _br.curve(pb, regime, count("n", n, low=2) if a is None else n, a=a)
 
 
 def stationary_points(M: float, theta: float, control: str = "load", regime: str = "sub-critical", *, gb: float,
-                      alpha_ratio: float = 0.0, n: Optional[int] = None) -> List[Point]:
+                      alpha_ratio: float = 0.0, n: Optional[int] = None, s0: Optional[float] = None) -> List[Point]:
     """All points of one branch where P* (control 'load'), delta/Delta ('grip') or delta_work/Delta
     ('grip-work') is stationary, increasing in a; ``kind`` says 'min' or 'max'.  n: a root grid of n points
     instead of the branch's dense table."""
-    pb = Problem(M, theta, gb, alpha_ratio)
+    pb = Problem(M, theta, gb, alpha_ratio, _law(s0))
     _check_control(control)
     _br.check_regime(pb, regime)
     return _br.stationary_points(pb, control, regime, n=None if n is None else count("n", n, low=2))
 
 
 def adherence(M: float, theta: float, control: str = "load", *, gb: float, regimes: Optional[Sequence[str]] = None,
-              alpha_ratio: float = 0.0, confined: bool = True) -> List[Point]:
+              alpha_ratio: float = 0.0, confined: bool = True, s0: Optional[float] = None) -> List[Point]:
     """Adherence points, sub-critical branch first: per branch the lowest local minimum of P* (control 'load',
     the 'x' of Fig. 3), or every stationary point of the approach (the 'o'); under load ``outcome`` says what a
     further pull does (from the confined analysis where the point is infeasible, when confined=True)."""
-    pb = Problem(M, theta, gb, alpha_ratio)
+    return adherence_of(Problem(M, theta, gb, alpha_ratio, _law(s0)), control, regimes, confined)
+
+
+def adherence_of(pb: Problem, control: str = "load", regimes: Optional[Sequence[str]] = None,
+                 confined: bool = True) -> List[Point]:
+    """:func:`adherence` of a validated Problem (any edge law: the cohesive law's branches too)."""
     _check_control(control)
     regs = solver(pb).regimes() if regimes is None else _regimes(regimes)
     out = []
@@ -85,9 +106,9 @@ def adherence(M: float, theta: float, control: str = "load", *, gb: float, regim
 
 
 def solve_load(M: float, theta: float, P_star: float, regime: str = "sub-critical", *, gb: float,
-               alpha_ratio: float = 0.0, n: Optional[int] = None) -> List[float]:
+               alpha_ratio: float = 0.0, n: Optional[int] = None, s0: Optional[float] = None) -> List[float]:
     """Contact parameters a on a branch where P*(a) = P_star (sorted; [] if none)."""
-    return _solve_field("p", "P_star", P_star, M, theta, regime, gb, alpha_ratio, n)
+    return _solve_field("p", "P_star", P_star, M, theta, regime, gb, alpha_ratio, n, s0)
 
 
 def solve_approach(M: float, theta: float, delta_over_Delta: float, regime: str = "sub-critical", *, gb: float,
@@ -96,8 +117,8 @@ def solve_approach(M: float, theta: float, delta_over_Delta: float, regime: str 
     return _solve_field("dn", "delta_over_Delta", delta_over_Delta, M, theta, regime, gb, alpha_ratio, n)
 
 
-def _solve_field(field, name, value, M, theta, regime, gb, alpha_ratio, n):
-    pb = Problem(M, theta, gb, alpha_ratio)
+def _solve_field(field, name, value, M, theta, regime, gb, alpha_ratio, n, s0=None):
+    pb = Problem(M, theta, gb, alpha_ratio, _law(s0))
     _br.check_regime(pb, regime)
     target = finite_scalar(name, value) * (pb.scale if field == "p" else 1.0)
     return [r for r, _ in _br.roots(pb, regime, field, target, n=None if n is None else count("n", n, low=2))]

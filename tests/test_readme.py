@@ -206,3 +206,25 @@ def test_fit_example_as_stated(namespace):
     assert f"E* = {true_E:.5g}".replace("e+09", "e9") in text
     assert res.intervals["w"][0] < 0.05 < res.intervals["w"][1] and true_E < res.intervals["E"][0]
     assert (namespace["_cwd"] / "fit.png").stat().st_size > 1000
+
+
+def test_cohesive_as_stated(namespace):
+    """README "Cohesive-zone adhesion": the numbers in the comments are what the library returns; the JKR values
+    quoted beside them are the README pin's own (sigma0 = None); lambda is Baney-Hui's definition recomputed here
+    from sigma0, E* = 4/beta* and R_eff = R R_D/Delta."""
+    text = README[README.index("## Cohesive-zone adhesion"):]
+    md, pin = namespace["md"], namespace["pin"]
+    E, R_eff = 4 / md.beta, md.R * (md.R - md.Delta) / md.Delta
+    assert 4 * md.sigma0 / (math.pi ** 2 * E ** 2 * md.w / R_eff) ** (1 / 3) == pytest.approx(3.0, rel=1e-12)
+    assert "about 162 kPa" in text and md.sigma0 == pytest.approx(162e3, rel=2e-3)
+    assert "0.31 um" in text and md.h0 == pytest.approx(0.31e-6, rel=0.02)
+    assert "about -1553 N/m (JKR: -1555)" in text and md.pull_off("load").P == pytest.approx(-1553, abs=0.5)
+    assert pin.pull_off("load").P == pytest.approx(-1555, abs=0.5)
+    po = md.pull_off("grip-work")
+    assert "about -930 N/m (JKR: -839)" in text and po.P == pytest.approx(-930, abs=0.5) and "touch end" in po.reason
+    assert "about 0.00798 J/m" in text and namespace["cy_md"].dissipated == pytest.approx(0.00798, abs=5e-6)
+    weak = namespace["weak"]
+    assert "lambda = 0.37, h0 = 2.5 Delta" in text and weak.lambda_ == pytest.approx(0.37, abs=0.005)
+    assert weak.h0 / weak.Delta == pytest.approx(2.5, rel=1e-12) and "no adherence force" in weak.pull_off().reason
+    f, s = namespace["f"], namespace["near_md"][1]
+    assert f.pressure(s.eps + 1e-3 * (s.extra["c"] - s.eps)) == pytest.approx(-md.sigma0, rel=1e-12)

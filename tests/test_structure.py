@@ -12,6 +12,11 @@ MAX_LINES = 350
 # where alpha* may decide what happens: the solver factory, the engine, the materials' own definition
 ALPHA_ALLOWED = {"jkrcyl/model/single_patch.py", "jkrcyl/materials.py", "jkrcyl/model/problem.py"}   # + validation
 ALPHA_NAMES = {"alpha_ratio", "alpha_star", "ar", "closed_form", "ALPHA_TOLERANCE", "require_closed_form"}
+# where the edge law may decide what happens (issue 19): the solver factory, the law's definition and validation,
+# the Contact fields that define it (sigma0, its guards of the JKR-only state/pressure/gap), the input parser
+EDGE_ALLOWED = {"jkrcyl/model/single_patch.py", "jkrcyl/model/problem.py", "jkrcyl/contact.py",
+                "jkrcyl/contact_cohesive.py", "jkrcyl/cli/inputs.py"}
+EDGE_NAMES = {"Dugdale", "Griffith", "GRIFFITH", "sigma0", "s0", "edge", "lambda_", "Cohesive"}
 
 
 def _files(root=ROOT):
@@ -82,8 +87,9 @@ def test_every_module_is_short():
     assert not long, f"modules over {MAX_LINES} lines: {long}"
 
 
-def _alpha_branches(path):
-    """Lines where a condition (if, while, conditional expression, comprehension filter, assert) reads alpha*."""
+def _alpha_branches(path, forbidden=ALPHA_NAMES):
+    """Lines where a condition (if, while, conditional expression, comprehension filter, assert) reads alpha*
+    (or another set of forbidden names)."""
     tree = ast.parse(path.read_text())
     tests = []
     for node in ast.walk(tree):
@@ -95,7 +101,7 @@ def _alpha_branches(path):
     for t in tests:
         names = {n.id for n in ast.walk(t) if isinstance(n, ast.Name)}
         names |= {n.attr for n in ast.walk(t) if isinstance(n, ast.Attribute)}
-        if names & ALPHA_NAMES:
+        if names & forbidden:
             hits.append(t.lineno)
     return hits
 
@@ -109,6 +115,19 @@ def test_only_the_solver_interface_branches_on_alpha():
         if hits := _alpha_branches(p):
             offenders[rel] = hits
     assert not offenders, f"branch on alpha* outside jkrcyl.model.single_patch (file: lines): {offenders}"
+
+
+def test_only_the_solver_interface_branches_on_the_edge_law():
+    """No switch on the edge law (Griffith/Dugdale, sigma0, s0) outside the solver factory and the law's
+    definition: the analyses go through the single-patch interface for either law."""
+    offenders = {}
+    for p in _files():
+        rel = p.relative_to(ROOT).as_posix()
+        if rel in EDGE_ALLOWED or rel.startswith("jkrcyl/numerics/"):
+            continue
+        if hits := _alpha_branches(p, EDGE_NAMES):
+            offenders[rel] = hits
+    assert not offenders, f"branch on the edge law outside jkrcyl.model.single_patch (file: lines): {offenders}"
 
 
 def test_the_checks_see_planted_violations(tmp_path):
@@ -126,6 +145,8 @@ def test_the_checks_see_planted_violations(tmp_path):
     assert _alpha_branches(probe) == [2]
     probe.write_text("def f(pb):\n    return pb.alpha_ratio * 2\n")
     assert _alpha_branches(probe) == []
+    probe.write_text("def f(pb):\n    if isinstance(pb.edge, Dugdale):\n        return 1\n")
+    assert _alpha_branches(probe, EDGE_NAMES) == [2] and _alpha_branches(probe) == []
     (pkg / "sub" / "four.py").write_text("from .. import sub\nfrom . import one\n")
     g = _graph(tmp_path)
     assert g["jkrcyl.sub.four"] == {"jkrcyl.sub", "jkrcyl.sub.one"}

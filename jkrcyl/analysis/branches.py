@@ -20,47 +20,39 @@ from ..numerics import roots as _roots
 from ..results import Curve, Point
 
 REGIMES = ("sub-critical", "super-critical")
+ZONE_ONLY = "contactless"    # the pin held by its zone without contact: cohesive edge laws only
 RUBBERY_A_MAX = 3.0      # curve(): a branch without a_crit is drawn over 0 < a < 3 (Fig. 7)
-A_SMALLEST = 1e-15       # the dense tables reach down to this contact parameter (or below, for tiny M)
 SMALL_A_POINTS = 200     # log-spaced points below the uniform grid (closed form; a tenth for collocation)
 
 
 def check_regime(pb: Problem, regime: str) -> str:
-    if regime not in REGIMES:
-        raise ValueError(f"regime must be one of {', '.join(REGIMES)}, got {regime!r}")
+    if regime not in REGIMES + (ZONE_ONLY,):
+        raise ValueError(f"regime must be one of {', '.join(REGIMES + (ZONE_ONLY,))}, got {regime!r}")
     if regime not in solver(pb).regimes():
-        raise ValueError("regime: no super-critical equilibria for this pair (a_crit = inf, section 7.2)")
+        raise ValueError(f"regime: no {regime} equilibria for this problem (its branches: "
+                         f"{', '.join(solver(pb).regimes())}; super-critical needs a finite a_crit, section 7.2, "
+                         "and a Griffith edge; contactless a cohesive law)")
     return regime
 
 
 def grid(pb: Problem, regime: str, n: int, small=0, a_max=None) -> np.ndarray:
-    """n contact parameters uniform in eps* over a branch (midpoints; eps* <= that of a_max if given), with
-    ``small`` log-spaced ones below (sub-critical): down to A_SMALLEST or a hundredth of the half-plane contact
-    (vartheta M/2)^(2/3) (7.3b)."""
-    sv = solver(pb)
-    lo, hi = sv.eps_star_range(regime)
-    if a_max is not None:
-        hi = min(hi, float(sv.eps_star(a_max)))
-    a = sv.a_of(lo + (hi - lo) * (np.arange(n) + 0.5) / n)
-    if small and regime == "sub-critical":
-        bottom = max(min(A_SMALLEST, (pb.m / 2) ** (2 / 3) / 100), 1e-100)
-        if bottom < a[0]:
-            a = np.concatenate([np.geomspace(bottom, a[0], small, endpoint=False), a])
-    return a[a <= min(A_MAX, sv.a_max)]
+    """n contact parameters over a branch, with ``small`` log-spaced ones below (the solver's grid,
+    jkrcyl.model.patch.SinglePatch.grid)."""
+    return solver(pb).grid(regime, n, small, a_max)
 
 
 def _curve(pb: Problem, regime: str, a) -> Curve:
     sv = solver(pb)
     s = sv.states(a)
     flags = _stab.single_patch_flags(s, pb.work_shift)
-    rates = _stab.release_rates(s, pb.m, pb.work_shift)
+    rates = sv.release_rates(s)
     k = pb.scale
-    return Curve(M=pb.M, theta=pb.theta, gb=pb.gb, regime=regime, a=s.a, eps=2 * np.arctan(s.a),
-                 eps_star=sv.eps_star(s.a), P_star=s.p / k, delta_over_Delta=s.dn, h_pi_over_Delta=s.h,
-                 feasible=s.h >= 0, stable_load=flags["load"], stable_grip=flags["grip"], dP_star_da=s.dp_da / k,
+    return Curve(M=pb.M, theta=pb.theta, gb=pb.gb, regime=regime, a=s.a, eps=s.contact,
+                 eps_star=sv.eps_star_of(s), P_star=s.p / k, delta_over_Delta=s.dn, h_pi_over_Delta=s.h,
+                 feasible=s.gap_open, stable_load=flags["load"], stable_grip=flags["grip"], dP_star_da=s.dp_da / k,
                  ddelta_da=s.ddn_da, dG_da_P=rates["load"], dG_da_delta=rates["grip"], delta_work_over_Delta=s.dw,
                  ddelta_work_da=s.ddw_da, dG_da_delta_work=rates["grip-work"], stable_grip_work=flags["grip-work"],
-                 alpha_ratio=pb.alpha_ratio)
+                 alpha_ratio=pb.alpha_ratio, c=s.c, c_top=s.c_top)
 
 
 def curve(pb: Problem, regime: str = "sub-critical", n: int = 2000, a=None) -> Curve:
@@ -77,13 +69,7 @@ def curve(pb: Problem, regime: str = "sub-critical", n: int = 2000, a=None) -> C
 
 
 def on_branch(pb: Problem, regime: str, a):
-    a = contact_parameter(a)
-    ac = solver(pb).a_crit
-    off = a >= ac if regime == "sub-critical" else a <= ac
-    if off.any():
-        side = "<" if regime == "sub-critical" else ">"
-        raise ValueError(f"a must be {side} a_crit = {ac!r} on the {regime} branch, got {a[off].flat[0]!r}")
-    return a
+    return solver(pb).on_branch(regime, contact_parameter(a))
 
 
 @functools.lru_cache(maxsize=64)
@@ -121,7 +107,7 @@ def stationary_points(pb: Problem, control: str, regime: str, n=None):
     for r, sgn in roots(pb, regime, SLOPE_OF[held], n=n):
         c = values_at(pb, regime, r)
         out.append(Point(control=control, regime=regime, kind="min" if sgn > 0 else "max", M=pb.M, theta=pb.theta,
-                         a=r, eps=2 * math.atan(r), eps_star=float(c.eps_star[0]), P_star=float(c.P_star[0]),
+                         a=r, eps=float(c.eps[0]), eps_star=float(c.eps_star[0]), P_star=float(c.P_star[0]),
                          delta_over_Delta=float(c.delta_over_Delta[0]), h_pi_over_Delta=float(c.h_pi_over_Delta[0]),
                          feasible=bool(c.feasible[0]), delta_work_over_Delta=float(c.delta_work_over_Delta[0]),
                          gb=pb.gb, alpha_ratio=pb.alpha_ratio))

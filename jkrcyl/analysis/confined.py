@@ -72,11 +72,12 @@ def confined_events(pb: Problem) -> ConfinedEvents:
 def outcomes(pb: Problem, points):
     """Point.outcome of fixed-load adherence points: what a further pull does there -- the fold rule where
     feasible (the fixed-arc dp/dk: 'detachment' or 'zip-full'), the confined analysis where the gap closes
-    first ('gap-closes-first' where it does not apply: vartheta = inf or M = 0)."""
+    first ('gap-closes-first' where it does not apply: vartheta = inf, M = 0, or a cohesive law)."""
     from dataclasses import replace
     regime = None
     if any(not p.feasible for p in points):
-        regime = "gap-closes-first" if pb.rigid_cradle or pb.M == 0 else confined_events(pb).regime
+        regime = ("gap-closes-first" if pb.rigid_cradle or pb.M == 0 or not _br.solver(pb).models_confined
+                  else confined_events(pb).regime)
     return [replace(p, outcome=(regime if not p.feasible else
                                 "zip-full" if _po.grows_under_pull(pb, p.a, "load") else "detachment"))
             for p in points]

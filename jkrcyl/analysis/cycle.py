@@ -55,13 +55,15 @@ class _Run:
                 return s, ""
             value = s.held()
             if s.branch == "separated" and self.control != "load":
-                value = 0.0 if up else -2 * self.un.Delta
+                lo, hi = _fw.solver(self.pb).free_range()      # where the free pin touches a side (or its range)
+                value = (hi if up else lo) * self.un.Delta
                 s = _fw.separated_state(self.pb, self.un, value / self.un.Delta, self.control)
                 self.add(s, leg)
             to, kind = _path.land(self.pb, self.un, s, event, self.control, value, up)
             if to is None:
                 return None, f"leg {leg}: no stable state to jump to after the {kind} at {s!r}"
-            self.jumps.append(Jump(kind, leg, s, to))
+            if kind != "continue":                           # a branch going on as another is no jump
+                self.jumps.append(Jump(kind, leg, s, to))
             s = to
             self.add(s, leg)
         return None, f"leg {leg}: more than {MAX_JUMPS} jumps"
@@ -75,7 +77,8 @@ class _Run:
             self.add(e, leg)
             return e, "target"
         if s.branch == "separated":
-            if ctl != "load" and -2 * un.Delta < target < 0:
+            lo, hi = _fw.solver(pb).free_range()
+            if ctl != "load" and lo * un.Delta < target < hi * un.Delta:
                 e = _fw.separated_state(pb, un, target / un.Delta, ctl)
                 self.add(e, leg)
                 return e, "target"

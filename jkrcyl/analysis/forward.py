@@ -9,7 +9,15 @@
 * ``two-patch``: contact at the bottom and the top at once (jkrcyl.analysis.tracing), present when a single patch
   can close the gap at phi = pi (the confined regime, :func:`confined`);
 * ``full-contact``: the pin bonded all round (no edge, always stable), confined regime only;
-* ``separated``: the free pin (no contact, P = 0), for a given approach -2 Delta < delta < 0 only.
+* ``separated``: the free pin (no contact, P = 0), for a given approach -2 Delta < delta < 0 only (within
+  -2 Delta + h0 < delta < -h0 for a cohesive law of range h0);
+* ``contactless``, ``contactless-top``: cohesive law only -- the pin without contact held by its zone at the
+  bottom (top) of the hole (jkrcyl.model.cohesive), a saddle under load, stable under grip where the zone's
+  opening grows with it.
+
+With a cohesive (Maugis-Dugdale) edge law the single-patch branches are the solver's (jkrcyl.model.cohesive) and
+two patches and full contact are not modelled: those branches return no state in a search of every branch, and
+asking for them by name raises ValueError.
 
 Stability is that of the control (jkrcyl.results.states.CONTROLS): fixed load for P, fixed paper's approach for
 delta ('grip'), fixed work-conjugate approach for delta_work ('grip-work').  Signs as in section 6: P and delta
@@ -50,7 +58,8 @@ class Units:
 
     @classmethod
     def of(cls, contact) -> "Units":
-        return cls(contact.R, contact.Delta, contact.load_scale, math.sqrt(8 * contact.w / contact.beta),
+        return cls(contact.R, contact.Delta, contact.load_scale,
+                   contact.problem.edge.stress_intensity(contact.w, contact.beta),
                    4 * math.pi * contact.Delta ** 2 / contact.beta)
 
 
@@ -61,11 +70,12 @@ def check_control(control) -> str:
 
 
 def _state(pb, un, branch, control, side, a, eps, P_star, dn, h, flags, U, a_top=0.0, eps_top=0.0, K=None,
-           extra=None) -> Equilibrium:
+           extra=None, total=None) -> Equilibrium:
     """U: the elastic energy in the kernel scale (units 4 pi Delta^2/beta*); the state's total potential is
-    U - 2 m^2 (eps + eps_top) there (the work of adhesion over the contact length 2 R (eps + eps_top))."""
+    U - 2 m^2 (eps + eps_top) there (the work of adhesion over the contact length 2 R (eps + eps_top)), or
+    ``total`` when the single-patch solver gives it (jkrcyl.model.patch.SinglePatch.potential)."""
     dw = dn + pb.work_shift * pb.scale * P_star
-    energy = un.energy_scale * (U - 2 * pb.m ** 2 * (eps + eps_top))
+    energy = un.energy_scale * (U - 2 * pb.m ** 2 * (eps + eps_top) if total is None else total)
     return Equilibrium(branch=branch, control=control, a=a, eps=eps, contact_width=2 * un.R * (eps + eps_top),
                        P=P_star * un.load_scale, delta=dn * un.Delta, delta_work=dw * un.Delta, h_pi=h * un.Delta,
                        K=un.K_edge if K is None else K, P_star=P_star, delta_over_Delta=dn,
@@ -80,17 +90,19 @@ def single_patch_states(pb: Problem, un: Units, regime: str, a, control: str, si
     a = _br.on_branch(pb, regime, np.atleast_1d(np.asarray(a, dtype=float))) if np.size(a) else np.zeros(0)
     if a.size == 0:
         return []
-    s = solver(pb).states(a)
+    sv = solver(pb)
+    s = sv.states(a)
     flags = _stab.single_patch_flags(s, pb.work_shift)
-    U = s.energy
+    total, eps, feasible = sv.potential(s), s.contact, s.gap_open
     sgn, name = (-1.0, regime + "-top") if side == "top" else (1.0, regime)
     out = []
     for i in range(a.size):
         P, d = sgn * float(s.p[i]) / pb.scale, float(s.dn[i])
         d = -2.0 - d if side == "top" else d
-        fl = (s.h[i] >= 0, flags["load"][i], flags["grip"][i], flags["grip-work"][i])
-        out.append(_state(pb, un, name, control, side, float(a[i]), 2 * math.atan(a[i]), P, d, float(s.h[i]), fl,
-                          float(U[i])))
+        fl = (feasible[i], flags["load"][i], flags["grip"][i], flags["grip-work"][i])
+        extra = {} if s.c is None else {"c": float(s.c[i]), "c_top": float(s.c_top[i])}
+        out.append(_state(pb, un, name, control, side, float(a[i]), float(eps[i]), P, d, float(s.h[i]), fl,
+                          float(s.energy[i]), extra=extra, total=float(total[i])))
     return out
 
 
@@ -109,8 +121,8 @@ def _single(regime: str, side: str = "bottom"):
 
 def confined(pb: Problem) -> bool:
     """True when some single-patch state closes the gap at phi = pi (h(pi) = 0 of (5.10)): two-patch states
-    exist (finite vartheta, M > 0)."""
-    return bool(_tr.onset_angles(pb))
+    exist (finite vartheta, M > 0).  False where two patches are not modelled (the cohesive law)."""
+    return solver(pb).models_confined and bool(_tr.onset_angles(pb))
 
 
 def two_patch_state(pb: Problem, un: Units, s, control) -> Equilibrium:
@@ -154,7 +166,8 @@ def separated_state(pb: Problem, un: Units, delta_over_Delta: float, control: st
 
 
 def _separated_solver(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
-    if key == "P_star" or not -2.0 < target < 0.0:       # P = 0: delta_work = delta
+    lo, hi = solver(pb).free_range()                     # (-2, 0), or within the cohesive range's reach
+    if key == "P_star" or not lo < target < hi:          # P = 0: delta_work = delta
         return []
     return [separated_state(pb, un, target, control)]
 
@@ -167,13 +180,17 @@ BRANCH_SOLVERS: Dict[str, BranchSolver] = {
     "super-critical": _single("super-critical"),
     "sub-critical-top": _single("sub-critical", "top"),
     "super-critical-top": _single("super-critical", "top"),
+    "contactless": _single("contactless"),
+    "contactless-top": _single("contactless", "top"),
     "two-patch": _two_patch_solver,
     "full-contact": _full_contact_solver,
     "separated": _separated_solver,
 }
 
 
-def check_branches(branches) -> list:
+def check_branches(branches, pb: Problem = None) -> list:
+    """The branch names to search (None: all); naming two-patch or full-contact for an edge law that does not
+    model them (the cohesive law) is a ValueError."""
     if branches is None:
         return list(BRANCH_SOLVERS)
     if isinstance(branches, str) or not hasattr(branches, "__iter__"):
@@ -182,6 +199,8 @@ def check_branches(branches) -> list:
     for b in names:
         if not isinstance(b, str) or b not in BRANCH_SOLVERS:
             raise ValueError(f"branches: unknown branch {b!r} (choose from {', '.join(BRANCH_SOLVERS)})")
+    if pb is not None and {"two-patch", "full-contact"} & set(names):
+        pb.require_confined("the two-patch and full-contact branches are", "branches")
     return names
 
 

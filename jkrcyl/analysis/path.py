@@ -148,9 +148,26 @@ def _other(side):
     return {"bottom": "top", "top": "bottom"}.get(side, side)
 
 
+def continuation(pb: Problem, un: _fw.Units, s, control: str):
+    """The state where the branch of s continues past its end (the cohesive contact branch's touch end and the
+    zone-only branch, jkrcyl.model.patch.SinglePatch.continues), or None."""
+    regime = s.branch.replace("-top", "")
+    nxt = solver(pb).continues(regime, s.a) if regime in solver(pb).regimes() else None
+    if nxt is None:
+        return None
+    return _fw.single_patch_states(pb, un, nxt[0], [nxt[1]], control, s.side)[0]
+
+
 def land(pb: Problem, un: _fw.Units, s, event: str, control: str, value: float, up: bool):
     """The state a jump from s lands on, at the same held value, and the jump's kind ('snap-in', 'pull-off',
-    'zip', 'top-contact'); (None, kind) when no stable, feasible state is there."""
+    'zip', 'top-contact'; 'continue' where a branch goes on as another, without a jump); (None, kind) when no
+    stable, feasible state is there."""
+    if event == "end":
+        nxt = continuation(pb, un, s, control)
+        if nxt is not None:
+            if nxt.stable and nxt.feasible:
+                return nxt, "continue"
+            event = "fold"           # its continuation is unstable: the path jumps from the branch's end
     # two-patch states are traced by continuation: only where the contact grows or the top closes
     quick = event == "touch" or (event == "fold" and s.branch.startswith("sub-critical"))
     names = [b for b in _fw.BRANCH_SOLVERS if not (quick and b == "two-patch")]
@@ -162,6 +179,12 @@ def land(pb: Problem, un: _fw.Units, s, event: str, control: str, value: float, 
             ("bottom" if value >= -un.Delta else "top")
         on = [x for x in cands if x.side == side] or [x for x in cands if x.side == "both"]
         return (min(on, key=lambda x: x.size), "snap-in") if on else (None, "snap-in")
+    if event in ("fold", "end") and s.branch.startswith("contactless"):    # the zone-only pin (cohesive)
+        if up:
+            into = [x for x in cands if x.side == s.side and x.size > 0]
+            return (min(into, key=lambda x: x.size), "snap-in") if into else (None, "snap-in")
+        off = [x for x in cands if x.branch == "separated" or x.side == _other(s.side)]
+        return (min(off, key=lambda x: x.size), "pull-off") if off else (None, "pull-off")
     if event == "fold" and s.branch.startswith("sub-critical"):
         same = [x for x in cands if x.side == s.side and x.size < s.size]
         if same:
@@ -202,9 +225,15 @@ def _land_on_top_contact(pb, s, cands, control, target):
 
 def first_contact(pb: Problem, un: _fw.Units, control: str):
     """(free pin touching the bottom, the state it snaps into, kind): at P = 0 under load control (the zero-load
-    contact (8.1); full contact when there is none, M > M_max), at the held approach 0 under grip."""
-    sep = _fw.separated_state(pb, un, 0.0, control)
-    to, kind = land(pb, un, sep, "touch", control, 0.0, True)
+    contact (8.1); full contact when there is none, M > M_max), at the held approach 0 under grip.
+
+    A cohesive law attracts the pin before it touches: the free pin reaches the range of the bottom at
+    delta = -h0 (the top of the solver's free range); under grip that is where it snaps in (the zone-only
+    states there are unstable under grip for a thin zone) onto the stable state at that approach, under load
+    it is drawn in at P = 0 onto the zero-load contact (the zone-only pin is a saddle under load)."""
+    hi = solver(pb).free_range()[1]
+    sep = _fw.separated_state(pb, un, hi, control)
+    to, kind = land(pb, un, sep, "touch", control, 0.0 if control == "load" else hi * un.Delta, True)
     return sep, to, kind
 
 
@@ -212,7 +241,9 @@ def pull_path(pb: Problem, un: _fw.Units, control: str):
     """The path of slow pulling from first contact: (start, event, state).  start is the state first contact
     snaps into (None: no stable, feasible one); event: 'bonded' (start is full contact), 'elsewhere' (start is
     not a bottom single patch), else the walk's event down the start's branch to -inf (fold, gap, end) and the
-    state where it ends.  pull_off, confined_events and the confined figure all read this one path."""
+    state where it ends; 'let-go' where a branch ends on an unstable continuation under a pull (the cohesive
+    contact at its touch end: the pin lets go there).  pull_off, confined_events and the confined figure all read
+    this one path."""
     _, start, _ = first_contact(pb, un, control)
     if start is None:
         return None, "none", None
@@ -222,4 +253,12 @@ def pull_path(pb: Problem, un: _fw.Units, control: str):
         return start, "elsewhere", start
     track = SingleTrack(pb, un, start.branch, "bottom", control)
     _, event, state = walk(track, track.index(start.a), -math.inf)
+    while event == "end":                  # a branch going on as another (cohesive: contact -> zone-only pin)
+        nxt = continuation(pb, un, state, control)
+        if nxt is None:
+            break                          # the branch just ends (JKR: the contact grows towards a_crit)
+        if not (nxt.stable and nxt.feasible):
+            return start, ("end" if state.P >= 0 else "let-go"), nxt    # let-go: detaches at the branch's end
+        track = SingleTrack(pb, un, nxt.branch, "bottom", control)
+        _, event, state = walk(track, track.index(nxt.a), -math.inf)
     return start, event, state

@@ -14,7 +14,6 @@ from __future__ import annotations
 
 from ..model.problem import Problem
 from ..model.single_patch import solver
-from ..model.stability import fixed_arc_derivatives
 from ..results import PullOff
 from . import forward as _fw
 from . import path as _path
@@ -22,14 +21,16 @@ from . import path as _path
 
 def grows_under_pull(pb: Problem, a: float, control: str) -> bool:
     """At the single patch a: does lowering the held quantity at fixed arc lower the edge coefficient (G < w),
-    so that the contact grows?  (dX/dk)|_a > 0 (jkrcyl.model.stability)."""
-    return bool(fixed_arc_derivatives(solver(pb).states([a]), pb.work_shift)[control][0] > 0)
+    so that the contact grows?  (dX/dk)|_a > 0 (jkrcyl.model.stability; the solver's rule for other edge laws)."""
+    return solver(pb).grows_under_pull(a, control)
 
 
 def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
     """Detachment along the quasi-static path (module docstring) under ``control``."""
     if pb.M == 0:
         return PullOff(control, None, None, None, None, "no adhesion (w = 0): the contact vanishes at P = 0")
+    if not solver(pb).adheres:
+        return PullOff(control, None, None, None, None, solver(pb).no_adherence_reason)
     start, event, s = _path.pull_path(pb, un, control)
     if event == "none":
         return PullOff(control, None, None, None, None,
@@ -40,6 +41,8 @@ def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
                        "zips round into full contact, and a pin bonded all round does not detach")
     if event == "elsewhere":
         return PullOff(control, None, None, None, start, f"first contact lands on the {start.branch} branch")
+    if event == "let-go":
+        return _detached(control, s)
     if event == "gap":
         return PullOff(control, None, None, None, s,
                        f"confined: the gap at phi = pi closes first (P = {s.P:.6g} N/m, delta = {s.delta:.4g} m); "
@@ -49,8 +52,18 @@ def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
         return PullOff(control, None, None, None, s,
                        f"no fold: along the stable branch the {what} decreases without bound (the contact grows "
                        f"towards a_crit or the full circle), so the pin does not detach; last state a = {s.a:.6g}")
+    if s.branch == "contactless":
+        return _detached(control, s)
     if grows_under_pull(pb, s.a, control):
         return PullOff(control, None, None, None, s,
                        f"fold at P = {s.P:.6g} N/m on the {s.branch} branch: a further pull lowers G, the contact "
                        "grows round into full contact (no detachment)")
     return PullOff(control, s.P, s.contact_width, s.delta, s, "detachment: the contact shrinks away (G > w)")
+
+
+def _detached(control, s):
+    """Detachment where a branch ends on an unstable continuation (the cohesive contact at its touch end, s the
+    touching zone-only state: under load the zone-only states hold less) or where the zone-only pin lets go."""
+    where = ("the contact vanishes at its touch end (the zone-only states beyond are unstable)"
+             if s.a == 1.0 else "the zone-only pin lets go")
+    return PullOff(control, s.P, s.contact_width, s.delta, s, f"detachment: {where}")

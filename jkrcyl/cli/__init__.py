@@ -10,6 +10,9 @@ command line.
     jkrcyl solve | pull-off | cycle --E ... --w ...   # forward problems in physical units
     jkrcyl fit data.csv --free w,E          # fit w and the moduli to measured load against width or approach
     jkrcyl atlas --out atlas                # regime map over (M, vartheta): atlas.npz, atlas.csv, PNG, PDF
+    jkrcyl cohesive --out figures           # Maugis-Dugdale: pull-off against lambda, the (lambda, M) map
+
+Every command taking a problem takes the edge law too: --sigma0 [Pa] (physical inputs) or --lambda.
 
 Normalised input (--M, --theta, --gb, --alpha-ratio) or physical input (--E --nu --E-I --nu-I --R --Delta --w):
 jkrcyl.cli.inputs.  gb = (1/G_I)/beta* defaults to an incompressible pin, 1 - 1/(2 vartheta), and every answer
@@ -19,10 +22,10 @@ import argparse
 import re
 import sys
 
-from . import adherence, atlas, curve, cycle, figures, fit, pull_off, solve, two_patch
+from . import adherence, atlas, cohesive, curve, cycle, figures, fit, pull_off, solve, two_patch
 
 EXIT_USAGE = 2
-COMMANDS = (figures, curve, adherence, two_patch, solve, pull_off, cycle, fit, atlas)
+COMMANDS = (figures, curve, adherence, two_patch, solve, pull_off, cycle, fit, atlas, cohesive)
 
 
 class _Parser(argparse.ArgumentParser):
@@ -43,7 +46,8 @@ def build_parser():
     from .. import __version__
     p.add_argument("--version", action="version", version=f"jkrcyl {__version__}")
     sub = p.add_subparsers(dest="command", metavar="command", parser_class=_Parser,
-                           title="commands (figures, curve, adherence, two-patch, solve, pull-off, cycle, fit, atlas)")
+                           title="commands (figures, curve, adherence, two-patch, solve, pull-off, cycle, fit, atlas, "
+                                 "cohesive)")
     sub.required = True
     for module in COMMANDS:
         module.register(sub)

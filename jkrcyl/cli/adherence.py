@@ -35,15 +35,15 @@ def _zero_load(pi):
     """(contact parameters a0 with P* = 0 on every branch, from the pair's single-patch solver (closed form or
     collocation: jkrcyl.model.single_patch decides), and the largest M with a zero-load contact by (8.1), an
     alpha* = 0 result (inf for vartheta = inf))."""
-    pb = eq.problem(pi.M, pi.theta, pi.gb, pi.alpha_ratio)
+    pb = eq.problem(pi.M, pi.theta, pi.gb, pi.alpha_ratio, s0=pi.s0)
     roots = [r for regime in solver(pb).regimes()
-             for r in eq.solve_load(pi.M, pi.theta, 0.0, regime, gb=pi.gb, alpha_ratio=pi.alpha_ratio)]
+             for r in eq.solve_load(pi.M, pi.theta, 0.0, regime, gb=pi.gb, alpha_ratio=pi.alpha_ratio, s0=pi.s0)]
     return sorted(roots), eq.zero_load_max_M(pi.theta)[0]
 
 
 def _print_text(pi, load, grip, a0, Mmax, confined):
     print(f"M = {pi.M:.10g}, theta = {pi.theta:g}, gb = {pi.gb:.10g} ({pi.gb_source}), "
-          f"alpha*/beta* = {pi.alpha_ratio:.6g}")
+          f"alpha*/beta* = {pi.alpha_ratio:.6g}, edge law: {pi.law_text}")
     print("fixed-load adherence (minimum of P* per branch):")
     for p in load:
         print(f"  {p.regime:14s} a = {p.a:.10g}  eps = {p.eps:.10g}  P* = {p.P_star:.10g}  "
@@ -75,11 +75,13 @@ def _print_text(pi, load, grip, a0, Mmax, confined):
 
 def run(args):
     pi = inputs.resolve(args)
-    want_confined = not math.isinf(pi.theta) and pi.M > 0 and not args.no_confined
+    modelled = solver(eq.problem(pi.M, pi.theta, pi.gb, pi.alpha_ratio, s0=pi.s0)).models_confined
+    want_confined = not math.isinf(pi.theta) and pi.M > 0 and not args.no_confined and modelled
     common = dict(gb=pi.gb, alpha_ratio=pi.alpha_ratio)
-    load = eq.adherence(pi.M, pi.theta, "load", confined=want_confined, **common)
-    grip = eq.adherence(pi.M, pi.theta, "grip", **common)
+    load = eq.adherence(pi.M, pi.theta, "load", confined=want_confined, s0=pi.s0, **common)
+    grip = eq.adherence(pi.M, pi.theta, "grip", s0=pi.s0, **common)
     a0, Mmax = _zero_load(pi)
+    Mmax = Mmax if modelled else math.inf       # (8.1) is JKR's (cohesive law: two patches not modelled either)
     confined = confined_dict(eq.confined_events(pi.M, pi.theta, **common)) if want_confined else None
     if args.format == "json":
         json.dump({**pi.meta(), "confined": confined, "load": [point_dict(p) for p in load],

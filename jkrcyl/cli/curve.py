@@ -13,8 +13,9 @@ from . import inputs
 def run(args):
     pi = inputs.resolve(args)
     n = count("n", args.n, low=2)
-    cv = eq.curve(pi.M, pi.theta, regime=args.regime, n=n, gb=pi.gb, alpha_ratio=pi.alpha_ratio)
+    cv = eq.curve(pi.M, pi.theta, regime=args.regime, n=n, gb=pi.gb, alpha_ratio=pi.alpha_ratio, s0=pi.s0)
     table = {k: getattr(cv, k) for k in cv.COLUMNS}          # booleans stay booleans (true/false)
+    table.update({k: getattr(cv, k) for k in ("c", "c_top") if getattr(cv, k) is not None})   # cohesive zone ends
     c = pi.contact
     if c is not None:
         table.update(P=cv.P_star * c.load_scale, delta=cv.delta_over_Delta * c.Delta,
@@ -27,7 +28,7 @@ def run(args):
             out.write("\n")
         else:
             out.write(f"# M={inputs.number(pi.M)} theta={inputs.number(pi.theta)} {pi.gb_text} "
-                      f"alpha_ratio={inputs.number(pi.alpha_ratio)} regime={args.regime}\n")
+                      f"alpha_ratio={inputs.number(pi.alpha_ratio)} regime={args.regime} edge={pi.law_text}\n")
             out.write(inputs.header(table, inputs.PHYSICAL_UNITS) + "\n")
             for row in zip(*table.values()):
                 out.write(",".join(inputs.number(x) for x in row) + "\n")
@@ -43,7 +44,8 @@ def register(sub):
                                    " (feasible, stable_* as true/false; with physical inputs also P [N/m], "
                                    "delta, delta_work [m]). The first line names the problem, with the gb used.")
     inputs.add_problem(c)
-    c.add_argument("--regime", choices=eq.REGIMES, default="sub-critical", help="branch (default sub-critical)")
+    c.add_argument("--regime", choices=eq.REGIMES + ("contactless",), default="sub-critical",
+                   help="branch (default sub-critical; contactless: the cohesive law's zone-only pin)")
     c.add_argument("--n", type=int, default=200, help="number of points (default 200)")
     c.add_argument("--format", choices=("csv", "json"), default="csv", help="output format (default csv)")
     c.add_argument("--output", "-o", default=None, help="file to write (default: stdout)")

@@ -7,6 +7,10 @@ Problem inputs come in one of two sets:
 * physical (SI units): ``--E --nu --E-I --nu-I --R --Delta --w``; M, vartheta, gb and alpha*/beta* are then the
   pair's, and the outputs carry physical columns too.
 
+The edge law (both sets): JKR by default; the Maugis-Dugdale cohesive law with ``--sigma0`` [Pa] (physical inputs
+only) or ``--lambda`` (the transition parameter; with normalised inputs lambda = 4 s0/m^(2/3), the half-plane
+convention at Delta/R -> 0, s0 = sigma0 R beta*/(4 pi Delta), m = M vartheta).
+
 gb: only delta/Delta, delta_work/Delta and the stability at fixed approach depend on it (never the load, the
 contact size, h(pi) or the stability under load).  The library requires it; the command line keeps a default
 for normalised input -- an incompressible pin, gb = 1 - 1/(2 vartheta) (:data:`GB_DEFAULT`) -- and prints the gb
@@ -51,6 +55,13 @@ def add_physical(p, title="physical inputs (SI units)"):
     g = p.add_argument_group(title)
     for name, helptext in PHYSICAL:
         g.add_argument(f"--{name}", type=number_arg, help=helptext)
+    law = p.add_argument_group("edge law (default JKR; the Maugis-Dugdale cohesive law with one of)")
+    law.add_argument("--sigma0", type=number_arg, default=None,
+                     help="cohesive strength sigma0 [Pa] > 0 (physical inputs): traction sigma0 wherever "
+                          "0 < gap <= h0 = w/sigma0")
+    law.add_argument("--lambda", dest="lambda_", type=number_arg, default=None,
+                     help="transition parameter lambda > 0 (Baney-Hui's, R_eff = R R_D/Delta; with --M: the "
+                          "half-plane convention, s0 = lambda (M vartheta)^(2/3)/4)")
 
 
 def add_problem(p):
@@ -77,6 +88,12 @@ class ProblemInput:
     alpha_ratio: float
     gb_source: str
     contact: Optional[object] = None
+    s0: Optional[float] = None        # the cohesive law (normalised), None: JKR
+
+    @property
+    def law_text(self) -> str:
+        """The edge law in words: JKR, or the cohesive law's s0 (and lambda in the half-plane convention)."""
+        return "JKR" if self.s0 is None else f"Dugdale(s0={number(self.s0)})"
 
     @property
     def gb_text(self) -> str:
@@ -85,7 +102,7 @@ class ProblemInput:
     def meta(self) -> dict:
         """The JSON fields naming the problem."""
         return {"M": json_value(self.M), "theta": json_value(self.theta), "gb": json_value(self.gb),
-                "gb_source": self.gb_source, "alpha_ratio": json_value(self.alpha_ratio)}
+                "gb_source": self.gb_source, "alpha_ratio": json_value(self.alpha_ratio), "s0": json_value(self.s0)}
 
 
 def _physical_values(args):
@@ -106,7 +123,13 @@ def contact_from(args):
         if v is None:
             raise ValueError(f"{name}: --{name} is required ({', '.join('--' + n for n, _ in PHYSICAL)})")
     E, nu, E_I, nu_I, R, Delta, w = values
-    return Contact(R=R, Delta=Delta, w=w, materials=Materials.from_young(E, nu, E_I, nu_I))
+    mats = Materials.from_young(E, nu, E_I, nu_I)
+    sigma0, lam = getattr(args, "sigma0", None), getattr(args, "lambda_", None)
+    if sigma0 is not None and lam is not None:
+        raise ValueError("sigma0: give either --sigma0 or --lambda, not both")
+    if lam is not None:
+        return Contact.with_lambda(R, Delta, w, mats, lam)
+    return Contact(R=R, Delta=Delta, w=w, materials=mats, sigma0=sigma0)
 
 
 def resolve(args) -> ProblemInput:
@@ -118,14 +141,18 @@ def resolve(args) -> ProblemInput:
         if c.Delta == 0:
             raise ValueError("Delta must be > 0 here (M and P* divide by Delta; neat fit: see jkrcyl.special)")
         M, th, gb = eq.from_contact(c)
-        return ProblemInput(M, th, gb, c.materials.alpha_ratio, "physical inputs: (1/G_I)/beta* of the pair", c)
+        return ProblemInput(M, th, gb, c.materials.alpha_ratio, "physical inputs: (1/G_I)/beta* of the pair", c,
+                            getattr(c.problem.edge, "s0", None))
     if args.M is None:
         raise ValueError("M is required (--M, or the physical inputs --E --nu --E-I --nu-I --R --Delta --w)")
     given = args.gb is not None
     th = eq.problem(args.M, args.theta, 0.0).theta           # validates M and theta before gb
     gb = args.gb if given else eq.incompressible_gb(th)
-    pb = eq.problem(args.M, th, gb, args.alpha_ratio)
-    return ProblemInput(pb.M, pb.theta, pb.gb, pb.alpha_ratio, "--gb" if given else GB_DEFAULT)
+    if args.sigma0 is not None:
+        raise ValueError("sigma0: --sigma0 [Pa] needs the physical inputs; with --M give --lambda")
+    s0 = None if args.lambda_ is None else eq.zone_strength(args.lambda_, args.M, th)
+    pb = eq.problem(args.M, th, gb, args.alpha_ratio, s0=s0)
+    return ProblemInput(pb.M, pb.theta, pb.gb, pb.alpha_ratio, "--gb" if given else GB_DEFAULT, s0=s0)
 
 
 def number(x) -> str:

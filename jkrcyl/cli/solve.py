@@ -16,7 +16,8 @@ def run(args):
     states = c.solve(**given, branches=branches)
     control = next(k for k, spec in CONTROLS.items() if spec[3] in given)
     pb = c.problem
-    meta = {"M": pb.M, "theta": pb.theta, "gb": pb.gb, "alpha_ratio": pb.alpha_ratio, "control": control}
+    meta = {"M": pb.M, "theta": pb.theta, "gb": pb.gb, "alpha_ratio": pb.alpha_ratio, "control": control,
+            "edge": pb.edge.name, "h0": c.h0}
     inputs.write_rows([s.as_dict() for s in states], args.format, meta=meta)
     return 0
 

@@ -8,8 +8,12 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .._validate import A_MAX
 from ..numerics import roots as _roots
+from . import stability as _stab
 from .problem import Problem
+
+A_SMALLEST = 1e-15       # the dense tables reach down to this contact parameter (or below, for tiny M)
 
 FIELDS = ("p", "dp_da", "dn", "ddn_da", "dw", "ddw_da", "h")
 SLOPE_OF = {"p": "dp_da", "dn": "ddn_da", "dw": "ddw_da"}
@@ -29,12 +33,29 @@ class Slice(NamedTuple):
     p_k: np.ndarray
     dn_k: np.ndarray
     B: np.ndarray
+    # edge laws beyond Griffith's (jkrcyl.model.cohesive): the contact half-angle when a is a branch parameter
+    # (None: eps = 2 atan(a)), the zone ends, the total potential, the feasibility (None: h(pi) >= 0)
+    eps: np.ndarray = None
+    c: np.ndarray = None
+    c_top: np.ndarray = None
+    total: np.ndarray = None
+    feasible: np.ndarray = None
 
     @property
     def energy(self):
         """Elastic energy [(1 + delta/Delta) p - B]/2 (units 4 pi Delta^2/beta*: the pressure's work on the rigid
-        overlap (5.1)); the total potential subtracts 2 m^2 eps (jkrcyl.analysis.forward)."""
+        overlap (5.1))."""
         return 0.5 * ((1 + self.dn) * self.p - self.B)
+
+    @property
+    def contact(self):
+        """The contact half-angle eps [rad] of each state."""
+        return 2 * np.arctan(self.a) if self.eps is None else self.eps
+
+    @property
+    def gap_open(self):
+        """Feasibility: the gap inequality (h(pi) >= 0 for one Griffith patch) and, for a cohesive law, the law."""
+        return self.h >= 0 if self.feasible is None else self.feasible
 
 
 class SinglePatch:
@@ -52,6 +73,59 @@ class SinglePatch:
     def a_crit(self) -> float:                          # pragma: no cover - interface
         raise NotImplementedError
 
+    def potential(self, s: Slice):
+        """Total potential of the states (kernel scale, units 4 pi Delta^2/beta*): the elastic energy less the work
+        of adhesion over the contact, 2 m^2 eps (Griffith), so that dE = p d(delta/Delta) along the branch."""
+        return s.energy - 2 * self.problem.m ** 2 * s.contact if s.total is None else s.total
+
+    def release_rates(self, s: Slice):
+        """{control: (1/w) dG/da at fixed X} (section 8.3; jkrcyl.model.stability)."""
+        return _stab.release_rates(s, self.problem.m, self.problem.work_shift)
+
+    def grows_under_pull(self, a: float, control: str) -> bool:
+        """At a fold at a: does a further pull (the held quantity lowered) make the contact grow (G < w, the
+        fixed-arc derivative (dX/dk)|_a > 0, jkrcyl.model.stability) rather than shrink away?"""
+        return bool(_stab.fixed_arc_derivatives(self.states([a]), self.problem.work_shift)[control][0] > 0)
+
+    def free_range(self):
+        """(lo, hi) of delta/Delta where the free pin (no contact, no traction) is an equilibrium."""
+        return -2.0, 0.0
+
+    def continues(self, regime: str, a: float):
+        """Where a branch continues past its end at a: (regime, a) on another branch, or None."""
+        return None
+
+    adheres = True               # some state pulls (P < 0) where M > 0
+    no_adherence_reason = ""
+
+    @property
+    def models_confined(self) -> bool:
+        """Whether two-patch and full-contact states are modelled for this edge law."""
+        return True
+
+    def grid(self, regime: str, n: int, small=0, a_max=None) -> np.ndarray:
+        """n contact parameters uniform in eps* over a branch (midpoints; eps* <= that of a_max if given), with
+        ``small`` log-spaced ones below (sub-critical): down to A_SMALLEST or a hundredth of the half-plane contact
+        (vartheta M/2)^(2/3) (7.3b)."""
+        lo, hi = self.eps_star_range(regime)
+        if a_max is not None:
+            hi = min(hi, float(self.eps_star(a_max)))
+        a = self.a_of(lo + (hi - lo) * (np.arange(n) + 0.5) / n)
+        if small and regime == "sub-critical":
+            bottom = max(min(A_SMALLEST, (self.problem.m / 2) ** (2 / 3) / 100), 1e-100)
+            if bottom < a[0]:
+                a = np.concatenate([np.geomspace(bottom, a[0], small, endpoint=False), a])
+        return a[a <= min(A_MAX, self.a_max)]
+
+    def on_branch(self, regime: str, a):
+        """ValueError unless every a lies on the branch."""
+        ac = self.a_crit
+        off = a >= ac if regime == "sub-critical" else a <= ac
+        if np.any(off):
+            side = "<" if regime == "sub-critical" else ">"
+            raise ValueError(f"a must be {side} a_crit = {ac!r} on the {regime} branch, got {a[off].flat[0]!r}")
+        return a
+
     def value(self, field: str, a: float) -> float:
         """One field of :data:`FIELDS` at one contact parameter."""
         return float(getattr(self.states(np.array([a])), field)[0])
@@ -67,6 +141,10 @@ class SinglePatch:
 
     def eps_star(self, a):
         return 2 * np.arctan(np.asarray(a, dtype=float) / self.a_norm) / np.pi
+
+    def eps_star_of(self, s: Slice):
+        """eps* of the states of a Slice."""
+        return self.eps_star(s.a)
 
     def a_of(self, eps_star):
         return self.a_norm * np.tan(np.pi * np.asarray(eps_star, dtype=float) / 2)

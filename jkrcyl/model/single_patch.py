@@ -13,6 +13,8 @@ alpha*).  Both give, at contact parameters a = tan(eps/2) of one bottom patch at
     nu ~ -k/sqrt(eps - |phi|) (jkrcyl.model.stability turns them into the stability flags),
 
 and the pole a_crit (the receding contact: adhesionless P -> inf), for every pair, rigid bodies included.
+The edge law decides first: a Dugdale law gets :class:`Cohesive` (jkrcyl.model.cohesive: the Maugis-Dugdale
+branches, a the branch parameter, the Slice carrying eps, the zone end c and the total potential).
 """
 from __future__ import annotations
 
@@ -20,9 +22,10 @@ import functools
 
 from ..materials import ALPHA_TOLERANCE
 from .closed_form import ClosedForm, ClosedFormPhysical
+from .cohesive import Cohesive
 from .collocation import Collocation, CollocationPhysical
 from .patch import FIELDS, SLOPE_OF, SinglePatch, Slice  # noqa: F401  (the interface's names)
-from .problem import Problem
+from .problem import Dugdale, Problem
 
 
 def closed_form(alpha_ratio: float) -> bool:
@@ -32,7 +35,10 @@ def closed_form(alpha_ratio: float) -> bool:
 
 @functools.lru_cache(maxsize=64)
 def solver(problem: Problem) -> SinglePatch:
-    """The single-patch solver of a problem (cached: a_crit and the branch tables are computed once)."""
+    """The single-patch solver of a problem (cached: a_crit and the branch tables are computed once): the
+    Maugis-Dugdale branches for a Dugdale edge law (any pair), else the closed forms where alpha* = 0."""
+    if isinstance(problem.edge, Dugdale):
+        return Cohesive(problem)
     return ClosedForm(problem) if closed_form(problem.alpha_ratio) else Collocation(problem)
 
 

@@ -43,14 +43,19 @@ def _eps_max(theta, gb, ar):
     return min(math.pi - 0.05, 2 * math.atan(_one.receding_contact(theta, gb, ar)) * (1 - EPS_MARGIN))
 
 
-def pull_off_load(m, s0, theta, gb, ar=0.0):
-    """The load-control pull-off from the zero-load state (module docstring): m = M vartheta > 0, s0 > 0."""
+def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=1e-10, zero_load=True):
+    """The load-control pull-off from the zero-load state (module docstring): m = M vartheta > 0, s0 > 0.
+    steps: the first and the largest continuation step in (log eps, log(c - eps)) (the minimum is refined by
+    Brent on the branch either way; larger steps, fewer states: the (lambda, M) map uses (0.3, 1.2)); start: where
+    the trace starts, relative to the half-plane scale (a minimum of p below it is taken for the touch end);
+    xtol: of the minimum in eps (p* is flat there: 1e-6 gives p* to ~1e-12); zero_load=False skips refining the
+    zero-load state (PullOff.zero_load is then None)."""
     m, s0, kernel = _co._law(m, s0, theta, gb, ar)
     none = lambda reason, zero=None: PullOff(None, None, None, None, zero, reason)
     if m == 0.0:
         return none("no adhesion (m = 0)")
     h0, d0 = m * m / s0, _co.dugdale_zone(m, s0)
-    eps_lo, eps_hi = min(START * 2 * m ** (2 / 3), 1e-3), _eps_max(theta, gb, ar)
+    eps_lo, eps_hi = min(start * 2 * m ** (2 / 3), 1e-3), _eps_max(theta, gb, ar)
     nodes = lambda eps: _co.nodes_for(eps, d0, kernel.ar) // 8 * 8 + 8
 
     @functools.lru_cache(maxsize=32)
@@ -80,7 +85,7 @@ def pull_off_load(m, s0, theta, gb, ar=0.0):
 
     x0 = np.array([math.log(eps_lo), math.log(start.c - eps_lo)])
     path = _cont.trace(residual, x0, np.array([1.0, 0.0]), inside, lambda a, b: (None, None),
-                       h0=0.1, h_max=0.3, max_steps=1500)
+                       h0=steps[0], h_max=steps[1], max_steps=1500)
     pts = path.points
     p = np.array([load(x) for x in pts])
     eps_end, d_end = np.exp(pts[-1])
@@ -88,7 +93,7 @@ def pull_off_load(m, s0, theta, gb, ar=0.0):
         return none("no zero-load contact on the branch: p < 0 all along it (it ends at the receding limit, "
                     "turns back to eps -> 0 or its zone reaches round)")
     state = lambda e: _co.cohesive_state(e, m, s0, theta, gb, ar, n=nodes(eps_end), near=d_end)
-    zero = _zero_load(state, eps_end)
+    zero = _zero_load(state, eps_end) if zero_load else None
     # back from the zero-load end: the first minimum of p, or the touch end
     for j in range(len(p) - 2, 0, -1):
         if p[j - 1] > p[j] < p[j + 1]:
@@ -96,7 +101,10 @@ def pull_off_load(m, s0, theta, gb, ar=0.0):
             on_branch = lambda e: _co.cohesive_state(e, m, s0, theta, gb, ar, n=nodes(eps_j), near=d_j)
             f = lambda e: (lambda st: math.inf if st is None else st.p)(on_branch(e))
             lo, hi = sorted((math.exp(pts[j - 1][0]), math.exp(pts[j + 1][0])))
-            res = minimize_scalar(f, bracket=(lo, eps_j, hi), method="brent", options=dict(xtol=1e-10))
+            try:
+                res = minimize_scalar(f, bracket=(lo, eps_j, hi), method="brent", options=dict(xtol=xtol))
+            except ValueError:           # the traced point is not below its neighbours on the re-solved branch
+                res = minimize_scalar(f, bounds=(lo, hi), method="bounded", options=dict(xatol=xtol * 1e-2))
             st = on_branch(res.x)
             return PullOff(st.p, res.x, "fold", st, zero, "")
     touch = _cz.contactless_touch(m, s0, theta, gb, ar, eps_small=min(1e-6, eps_lo * 1e-3))

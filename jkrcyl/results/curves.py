@@ -24,6 +24,9 @@ class Curve:
     M = 0, where w = 0).  delta_work = delta + P/(8 pi G_I) is the work-conjugate approach (derive/green.py:
     the pin's centroid, load spread over the pin; the paper's delta is the rims' approach).  P [N/m], delta,
     delta_work [m]: set when the curve comes from a Contact.  gb = (1/G_I)/beta*, alpha_ratio = alpha*/beta*.
+    Cohesive (Maugis-Dugdale) law (jkrcyl.model.cohesive): a is the branch parameter (the arclength of the
+    traced branch, not tan(eps/2)), eps the contact half-angle (0 for zone-only states), c and c_top the zone
+    ends [rad] (None for JKR), feasible the gap inequality and the law, dG_da_* NaN (no Griffith edge).
     """
 
     M: float
@@ -51,6 +54,8 @@ class Curve:
     delta: np.ndarray = None
     delta_work: np.ndarray = None
     alpha_ratio: float = 0.0
+    c: np.ndarray = None
+    c_top: np.ndarray = None
 
     COLUMNS = ("a", "eps", "eps_star", "P_star", "delta_over_Delta", "delta_work_over_Delta", "h_pi_over_Delta",
                "feasible", "stable_load", "stable_grip", "stable_grip_work")
@@ -63,6 +68,7 @@ class Curve:
         """Columns of :attr:`COLUMNS` (plus P [N/m], delta, delta_work [m] when dimensional) as a dict of arrays
         (booleans as 0/1)."""
         cols = self.COLUMNS + (("P", "delta", "delta_work") if self.P is not None else ())
+        cols += tuple(k for k in ("c", "c_top") if getattr(self, k) is not None)
         return {k: np.asarray(getattr(self, k), dtype=float) for k in cols}
 
     def __repr__(self):

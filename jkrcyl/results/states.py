@@ -31,6 +31,9 @@ class Equilibrium:
     outside the contact; stable_load, stable_grip, stable_grip_work; side: 'bottom', 'top', 'both' or 'none';
     energy [J/m]: the total potential U - w 2 R (eps + eps_top) (elastic energy of the paper's approach delta, less
     the work of adhesion over the contact), so that dE = P d(delta) along every equilibrium branch.
+    Cohesive (Maugis-Dugdale) law: branches 'sub-critical' (one contact with its zone) and 'contactless' (the zone
+    alone), with '-top'; a is the branch parameter (jkrcyl.model.cohesive), K = 0 (finite stress at the edge),
+    extra['c'] the zone end [rad], energy adds the Dugdale interface energy, feasible includes the law.
     """
 
     branch: str

@@ -1,0 +1,95 @@
+"""Benchmark (not a test): the cohesive law in the model core (issue 19, phase 2).
+
+Run: python benchmarks/bench_cohesive_core.py [--repeats 20] [--map 100]     (smoke: --repeats 2 --map 0 --quick)
+
+Prints, in one run (the README pin's pair, R = 10 mm, Delta = 1 um, w = 0.05 J/m^2, lambda = 3 unless said):
+  * one state: the phase-1 solver (jkrcyl.numerics.cohesive.cohesive_state) and one point of the branch table
+    (state + tangent slopes + stability derivatives + feasibility + energy, jkrcyl.model.cohesive);
+  * the branch: trace and table of a fresh contact (cold: what the first call on a contact costs);
+  * a pull-off through the public API, cold (trace, table, walk) and warm; the stand-alone continuation;
+  * a load cycle (P = +-2000 N/m), warm;
+  * the (lambda, M) pull-off map (n x n, lambda in [0.01, 10], M in [0.01, 1], Dask on 2 processes).
+Goals (issue 19): one state <= 1 ms, a pull-off <= 100 ms, the 100 x 100 map <= 60 s on 2 cores.
+"""
+import argparse
+import math
+import platform
+import time
+
+import numpy as np
+
+import jkrcyl
+from jkrcyl.analysis.cohesive_map import pull_off_map
+from jkrcyl.model.single_patch import solver
+from jkrcyl.numerics import cohesive as co
+from jkrcyl.numerics import cohesive_pull_off as cpo
+
+PAIR = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+
+
+def best(f, repeats):
+    f()
+    out = math.inf
+    for _ in range(repeats):
+        t = time.perf_counter()
+        f()
+        out = min(out, time.perf_counter() - t)
+    return out
+
+
+def fresh(lam, k):
+    """A contact never seen before (the solver cache is per problem): w nudged by k ulps-worth."""
+    return jkrcyl.Contact.with_lambda(10e-3, 1e-6, 0.05 * (1 + 1e-9 * k), PAIR, lam)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--repeats", type=int, default=20)
+    ap.add_argument("--map", type=int, default=100, help="map points per axis (0: skip)")
+    ap.add_argument("--quick", action="store_true", help="skip lambda = 50 (10 s)")
+    args = ap.parse_args()
+    print(f"# {platform.processor() or platform.machine()}, python {platform.python_version()}")
+    c = fresh(3.0, 0)
+    pb = c.problem
+    sv = solver(pb)
+    t_state = best(lambda: co.cohesive_state(0.8, pb.m, pb.edge.s0, pb.theta, pb.gb), args.repeats)
+    print(f"one state (phase-1 solver, eps = 0.8): {t_state * 1e3:.3f} ms")
+    a = sv.grid("sub-critical", sv.dense_points)
+    mid = float(a[len(a) // 2])
+    t_point = best(lambda: (sv._cache.clear(), sv.point(mid)), args.repeats)
+    print(f"one table point (state, slopes, stability derivatives, feasibility, energy): {t_point * 1e3:.3f} ms")
+    k = [1]
+
+    def cold(f):
+        k[0] += 1
+        t = time.perf_counter()
+        f(fresh(3.0, k[0]))
+        return time.perf_counter() - t
+    t_cold = min(cold(lambda x: x.pull_off("load")) for _ in range(3))
+    print(f"pull-off (load), public API, cold (trace + table + walk): {t_cold * 1e3:.0f} ms "
+          f"({solver(fresh(3.0, k[0]).problem).dense_points} table points)")
+    t_warm = best(lambda: c.pull_off("load"), args.repeats)
+    print(f"pull-off (load), public API, warm: {t_warm * 1e3:.1f} ms")
+    t_two = best(lambda: cpo.pull_off_load(pb.m, pb.edge.s0, pb.theta, pb.gb), max(2, args.repeats // 4))
+    print(f"pull-off (load), stand-alone continuation: {t_two * 1e3:.1f} ms")
+    for lam in (1.0, 10.0) if args.quick else (1.0, 10.0, 50.0):
+        k[0] += 1
+        x = jkrcyl.Contact.with_lambda(10e-3, 1e-6, 0.05 * (1 + 1e-9 * k[0]), PAIR, lam)
+        t = time.perf_counter()
+        x.pull_off("load")
+        print(f"  lambda = {lam:4g}: public pull-off cold {time.perf_counter() - t:.2f} s")
+    t_cycle = best(lambda: c.cycle(P_max=2000.0, P_min=-2000.0, n=400), max(2, args.repeats // 4))
+    print(f"cycle (load, +-2000 N/m), warm: {t_cycle * 1e3:.1f} ms")
+    if args.map:
+        t = time.perf_counter()
+        pm = pull_off_map(np.geomspace(0.01, 10, args.map), np.geomspace(0.01, 1.0, args.map), workers=2)
+        t_map = time.perf_counter() - t
+        print(f"map {args.map} x {args.map} (Dask, 2 processes): {t_map:.1f} s; outcomes "
+              f"{dict(zip(*np.unique(pm.outcome, return_counts=True)))}")
+    print(f"\ngoals: one state <= 1 ms -- {t_state * 1e3:.2f} ms (a table point {t_point * 1e3:.2f} ms); a pull-off "
+          f"<= 100 ms -- warm {t_warm * 1e3:.0f} ms, cold {t_cold * 1e3:.0f} ms, stand-alone {t_two * 1e3:.0f} ms"
+          + (f"; the {args.map} x {args.map} map <= 60 s -- {t_map:.0f} s" if args.map else ""))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,221 @@
+"""The contact branch of one Maugis-Dugdale law as a 1-D family (issue 19, phase 2), and its per-point data.
+
+Notation of jkrcyl.numerics.cohesive (kernel scale: p = P beta*/(4 pi Delta), lengths over Delta, m, s0, h0 = m^2/s0).
+At a fixed contact |phi| < eps and zone end c every state is affine in the approach delta/Delta (the LU of the
+contact is reused): the edge coefficient k at the contact end, the load p, B = int nu and the zone-end residual
+g = h(c) - h0.  Equilibrium is k = 0 and g = 0: a curve in (eps, delta, c) that can turn back in eps and in c
+(phase 1), so the branch is traced by pseudo-arclength continuation (jkrcyl.numerics.continuation) in
+x = (log eps, log(c - eps)) from its touch end (eps -> 0) and parametrised by the arclength t of the traced
+polyline.  A state at any t is the curve's point on the normal through the polyline (:func:`project`).
+Where the range reaches round at the touch end (zones 'all': no zone end, c = pi) the branch is sampled in eps
+(t = log eps).
+
+Stability (the rule of jkrcyl.model.stability, (dX/dt)(dX/dk) < 0): the reduced energy E(c) -- the minimum of the
+elastic plus interface energy over every field with the zone |phi| < c, the contact edge then at k = 0 -- has
+dE/dc = 2 (s0 h(c) - m^2) (Dugdale's J-integral), so a state is stable under a held X (p, delta or delta_work)
+when dg/dc at fixed X and k = 0 is > 0.  With the Jacobian M of (k, X, g) in (eps, delta, c) and M12 its (k, X)
+block in (eps, delta): dg/dc = det M/det M12 (Schur complement) and, along T = grad k x grad g, dX/dT = -det M.
+So the 'fixed-arc derivative' the rule reads is D_X = sigma det M12 (sigma: the orientation of t along T), linear
+in X as the rule needs (delta_work = delta + c p).  Zones 'all': the problem is convex; D_X = X_delta/k_delta,
+the contact edge's fixed-arc derivative.
+"""
+import functools
+import math
+from collections import namedtuple
+
+import numpy as np
+from scipy.optimize import brentq
+
+from . import cohesive as _co
+from . import cohesive_kernels as _ck
+from . import cohesive_zones as _cz
+from . import continuation as _cont
+from . import one_arc as _one
+
+START = 1e-3            # the trace starts at eps = START times the half-plane scale 2 m^(2/3) (at most 1e-3)
+EPS_MARGIN = 1e-3       # below the receding limit (the pair's pole)
+P_CAP = 20.0            # the branch is traced up to p = P_CAP m^(4/3) (20 times the adhesion load scale)
+FD_REL = 2e-4           # finite-difference steps in eps and c, relative to min(eps, c - eps)
+GAP_POINTS = 96         # Gauss-Legendre points of int h over the zone (the interface energy)
+ALL_POINTS = 160        # eps samples of a branch whose zone reaches round at the touch end
+_XG, _WG = np.polynomial.legendre.leggauss(GAP_POINTS)
+
+Point = namedtuple("Point", "eps c delta p B dp_dt ddn_dt D_p D_dn h_pi potential feasible zones fields")
+Point.__doc__ = """Per-point data (kernel scale): the state, its slopes along t, the derivatives D_X the stability
+rule reads, h(pi)/Delta, the total potential, feasibility (jkrcyl.numerics.cohesive.gap_check), zones, fields."""
+
+
+class Law:
+    """A validated Dugdale law with its kernel, node policy and cached fixed contacts."""
+
+    def __init__(self, m, s0, theta, gb, ar):
+        self.m, self.s0, self.kernel = _co._law(m, s0, theta, gb, ar)
+        self.theta, self.gb, self.ar = theta, gb, ar
+        self.h0 = self.m ** 2 / self.s0
+        self.d0 = _co.dugdale_zone(self.m, self.s0)
+        self.eps_lo = min(START * 2 * self.m ** (2 / 3), 1e-3)
+        self.eps_hi = min(math.pi - 0.05, 2 * math.atan(_one.receding_contact(theta, gb, ar)) * (1 - EPS_MARGIN))
+        self.p_cap = P_CAP * self.m ** (4 / 3)
+        self.fixed = functools.lru_cache(maxsize=256)(self._fixed)
+
+    def nodes(self, eps):
+        """Nodes as a function of eps only (a smooth residual along the trace: jkrcyl.numerics.cohesive_pull_off)."""
+        return _co.nodes_for(eps, self.d0, self.ar) // 8 * 8 + 8
+
+    def _fixed(self, eps):
+        return _co.FixedContact(eps, self.kernel, self.nodes(eps))
+
+
+def _zone_solution(law, fc, zones):
+    lu, perm, phin = fc.fx[:3]
+    return _ck.lu_solve(lu, perm, -_co.zone_displacement(phin, zones, law.kernel))
+
+
+def affine(law, eps, c):
+    """[k, p, B, g] at the contact eps, zone end c (c >= pi: zones 'all'), each (value at delta = 0, d/d delta);
+    g = h(c) - h0 (None for 'all')."""
+    fc = law.fixed(eps)
+    zones = _co.zones_of(min(c, math.pi))
+    ua, ub = fc.fx[3] + law.s0 * _zone_solution(law, fc, zones), fc.fx[4]
+    load, width = _co.zone_load(zones)
+    out = [(fc.ek @ ua, fc.ek @ ub), (fc.ep @ ua - law.s0 * load, fc.ep @ ub), (fc.eb @ ua - law.s0 * width, fc.eb @ ub)]
+    if c < math.pi:
+        g0 = fc.gap(c, 0.0, ua, zones, law.s0)[0] - law.h0
+        g1 = fc.gap(c, 1.0, ub, zones, 0.0)[0] - fc.gap(c, 0.0, np.zeros_like(ub), zones, 0.0)[0]
+        out.append((g0, g1))
+    else:
+        out.append(None)
+    return out
+
+
+def _at(pair, delta):
+    return pair[0] + delta * pair[1]
+
+
+def residual(law, x):
+    """h(c) - h0 at x = (log eps, log(c - eps)) with k = 0 (delta eliminated)."""
+    eps, d = math.exp(x[0]), math.exp(x[1])
+    return _ck._residual(d, (law.fixed(eps).fx, eps, law.s0, law.h0, 0.0))
+
+
+def trace(law):
+    """The branch as (x points (n, 2), kind): 'zone' (x = (log eps, log(c - eps))) or 'all' (x = (log eps, 0))."""
+    start = _co.cohesive_state(law.eps_lo, law.m, law.s0, law.theta, law.gb, law.ar, n=law.nodes(law.eps_lo))
+    if start.zones == "all":
+        eps = np.geomspace(law.eps_lo, law.eps_hi, ALL_POINTS)
+        return np.column_stack([np.log(eps), np.zeros(eps.size)]), "all"
+
+    def inside(x):
+        eps, d = math.exp(x[0]), math.exp(x[1])
+        if not (law.eps_lo * 0.999 <= eps < law.eps_hi and eps + d < math.pi * (1 - 1e-9)):
+            return False
+        aff = affine(law, eps, eps + d)
+        return _at(aff[1], -aff[0][0] / aff[0][1]) < law.p_cap
+
+    x0 = np.array([math.log(law.eps_lo), math.log(start.c - law.eps_lo)])
+    path = _cont.trace(lambda x: residual(law, x), x0, np.array([1.0, 0.0]), inside, lambda a, b: (None, "end"),
+                       h0=0.1, h_max=0.25, h_min=1e-5, max_steps=1500)
+    return path.points, "zone"
+
+
+def arclength(x):
+    return np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(x, axis=0).T))])
+
+
+def project(law, x_pred, normal, scale):
+    """The curve's point x_pred + tau normal (|tau| <= 4 scale), else the zone end nearest to the predicted one
+    at the predicted eps (jkrcyl.numerics.cohesive), or None."""
+    f = lambda tau: residual(law, x_pred + tau * normal)
+    f0 = f(0.0)
+    if f0 == 0.0:
+        return x_pred
+    for w in scale * np.array([0.05, 0.25, 1.0, 4.0]):
+        for side in (1, -1):
+            fs = f(side * w)
+            if np.isfinite(fs) and fs * f0 < 0:
+                tau = brentq(f, *sorted((0.0, side * w)), xtol=1e-15, rtol=1e-14)
+                return x_pred + tau * normal
+    eps = math.exp(x_pred[0])
+    d = law.fixed(eps).zone_end_near(law.s0, law.h0, math.exp(x_pred[1]))
+    return None if d is None else np.array([x_pred[0], math.log(d)])
+
+
+def state_values(law, eps, c):
+    """(p, delta/Delta, h(pi)/Delta) of the equilibrium (eps, c) (k = 0), without slopes."""
+    aff = affine(law, eps, c)
+    delta = -aff[0][0] / aff[0][1]
+    fc = law.fixed(eps)
+    zones = _co.zones_of(min(c, math.pi))
+    u = fc.fx[3] + delta * fc.fx[4] + law.s0 * _zone_solution(law, fc, zones)
+    return _at(aff[1], delta), delta, fc.gap(math.pi, delta, u, zones, law.s0)[0]
+
+
+def point(law, eps, c, direction):
+    """The per-point data at an equilibrium (eps, c) (c = pi: zones 'all'); direction = (d eps, d c) of
+    increasing t (its orientation only)."""
+    aff = affine(law, eps, c)
+    delta = -aff[0][0] / aff[0][1]
+    k_d, p_d = aff[0][1], aff[1][1]
+    he = FD_REL * (min(eps, c - eps) if c < math.pi else eps)
+    de = [affine(law, eps + s * he, c) for s in (1, -1)]
+    dv = lambda i, pair, h: (_at(pair[0][i], delta) - _at(pair[1][i], delta)) / (2 * h)
+    k_e, p_e = dv(0, de, he), dv(1, de, he)
+    if c < math.pi:
+        hc = FD_REL * min(c - eps, math.pi - c)
+        dc = [affine(law, eps, c + s * hc) for s in (1, -1)]
+        k_c, p_c, g_c = dv(0, dc, hc), dv(1, dc, hc), dv(3, dc, hc)
+        g_e, g_d = dv(3, de, he), aff[3][1]
+        T = np.cross([k_e, k_d, k_c], [g_e, g_d, g_c])          # (d eps, d delta, d c)
+        sigma = 1.0 if T[0] * direction[0] + T[2] * direction[1] >= 0 else -1.0
+        D_p, D_dn = sigma * (k_e * p_d - k_d * p_e), sigma * k_e
+        rate = math.hypot(T[0] / eps, (T[2] - T[0]) / (c - eps))   # dt/dT: t is arclength in x
+        dp_dt, ddn_dt = sigma * (p_e * T[0] + p_d * T[1] + p_c * T[2]) / rate, sigma * T[1] / rate
+    else:
+        D_p, D_dn = p_d / k_d, 1.0 / k_d
+        ddn_deps = -k_e / k_d                                    # t = log eps
+        dp_dt, ddn_dt = eps * (p_e + p_d * ddn_deps), eps * ddn_deps
+    fc = law.fixed(eps)
+    zones = _co.zones_of(min(c, math.pi))
+    u = fc.fx[3] + delta * fc.fx[4] + law.s0 * _zone_solution(law, fc, zones)
+    st = _co._state(eps, c, fc, delta, u, zones, law.m, law.s0, law.kernel, law.gb, fc.sys.n)
+    return Point(eps, st.c, delta, st.p, st.B, dp_dt, ddn_dt, D_p, D_dn, st.h_pi_over_Delta, potential(st),
+                 _co.gap_check(st, 120).feasible, st.zones, st.fields)
+
+
+def potential(st):
+    """Total potential in the kernel scale (units 4 pi Delta^2/beta*): the elastic energy (Clapeyron) plus the
+    Dugdale interface energy int (s0 h - m^2) over the zones and -m^2 over the contact:
+    [(1 + delta/Delta) p - B]/2 + (s0/2) int_zones h - m^2 (length of contact and zones)."""
+    eps, c = st.eps, min(st.c, math.pi)
+    t = np.pi * (_XG + 1) / 2
+    shape, jac = (1 - np.cos(t)) / 2, np.sin(t) * np.pi / 4
+    H = 2 * (c - eps) * np.sum(_WG * jac * st.fields.gap(eps + (c - eps) * shape))
+    length = 2 * c
+    if st.c_top > 0:
+        H += 2 * st.c_top * np.sum(_WG * jac * st.fields.gap(math.pi - st.c_top + st.c_top * shape))
+        length += 2 * st.c_top
+    return 0.5 * ((1 + st.delta_over_Delta) * st.p - st.B) + 0.5 * st.s0 * H - st.m ** 2 * length
+
+
+# --- contactless states (closed form) -----------------------------------------------------------------------
+def contactless_end(law):
+    """(c, touches): where the contactless states (one bottom zone) end -- the touch c (h(0) = 0, joined to the
+    contact branch), or just below pi/2 (the approach's pole) when the contact branch starts with zones 'all'."""
+    touch = _cz.contactless_touch(law.m, law.s0, law.theta, law.gb, law.ar)
+    if touch is None or abs(touch.c - math.pi / 2) < 1e-6 or abs(touch.fields.gap(0.0)[0]) > 1e-8 * (1 + law.h0):
+        return math.pi / 2 * (1 - 1e-6), False         # no touch (or a sign change through the pole pi/2)
+    return touch.c, True
+
+
+def contactless_point(law, c):
+    """Per-point data of the contactless state with the zone |phi| < c, slopes d/dc (central differences of the
+    closed form).  Rows (X, g) in (delta, c): along T = (-g_c, g_delta), dX/dT = -det, stable where
+    dg/dc|_X = det/X_delta > 0, so D_X = sigma X_delta: D_p = 0 (the pin, a rigid body held by its zone, is a
+    saddle under load), D_dn = sigma = sign(dc/dT) = sign(g_delta) = -sign(cos c)."""
+    st = _cz.contactless_state(c, law.m, law.s0, law.theta, law.gb, law.ar)
+    hc = 1e-5 * min(c, abs(math.pi / 2 - c))
+    plus, minus = (_cz.contactless_state(c + s * hc, law.m, law.s0, law.theta, law.gb, law.ar) for s in (1, -1))
+    dp, ddn = (plus.p - minus.p) / (2 * hc), (plus.delta_over_Delta - minus.delta_over_Delta) / (2 * hc)
+    sigma = -1.0 if math.cos(c) > 0 else 1.0
+    return Point(0.0, c, st.delta_over_Delta, st.p, st.B, dp, ddn, 0.0, sigma, st.h_pi_over_Delta, potential(st),
+                 _co.gap_check(st, 120).feasible, st.zones, st.fields)
