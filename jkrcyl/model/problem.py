@@ -105,7 +105,7 @@ class Problem:
                              "fixed delta depend on it; e.g. 1/2.8 for identical nu = 0.3 bodies, "
                              "1 - 1/(2 theta) for an incompressible pin)")
         object.__setattr__(self, "gb", finite_scalar("gb", self.gb, low=0.0, high=1.0, **tiny))
-        ar = finite_scalar("alpha_ratio", self.alpha_ratio, low=-1.0, high=1.0, low_open=True)
+        ar = finite_scalar("alpha_ratio", self.alpha_ratio, low=-1.0, high=1.0, low_open=True, **tiny)
         if ar == 1.0:
             raise ValueError("alpha_ratio must be in (-1, 1) (|alpha*| < beta* for every elastic pair), got 1")
         object.__setattr__(self, "alpha_ratio", ar)
