@@ -107,7 +107,7 @@ def cycle(pb: Problem, un: _fw.Units, control: str, hi: float, lo: float, n: int
     sep, to, kind = _path.first_contact(pb, un, control)
     run.add(sep, 0)
     if to is None:
-        return _finish(run, n, None, "no stable contact at first touch", delta_work_of, (lo, hi))
+        return _finish(run, n, None, _path.no_first_contact_reason(pb), delta_work_of, (lo, hi))
     run.jumps.append(Jump(kind, 0, sep, to))
     run.add(to, 0)
     s, note = run.leg(to, hi, 0)

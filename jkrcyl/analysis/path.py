@@ -237,6 +237,15 @@ def first_contact(pb: Problem, un: _fw.Units, control: str):
     return sep, to, kind
 
 
+def no_first_contact_reason(pb: Problem) -> str:
+    """Why first contact snaps into no state: the reason pull_off and cycle print."""
+    why = "no stable, feasible state at first contact"
+    if pb.rigid_cradle:      # full contact and two patches need a finite vartheta (model.full_contact)
+        why += (" (a rigid cradle, vartheta = inf: a pin that zips round into full contact at first touch is not "
+                "modelled, full contact and two patches needing a finite vartheta)")
+    return why
+
+
 def pull_path(pb: Problem, un: _fw.Units, control: str):
     """The path of slow pulling from first contact: (start, event, state).  start is the state first contact
     snaps into (None: no stable, feasible one); event: 'bonded' (start is full contact), 'elsewhere' (start is

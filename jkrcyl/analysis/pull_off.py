@@ -33,8 +33,7 @@ def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
         return PullOff(control, None, None, None, None, solver(pb).no_adherence_reason)
     start, event, s = _path.pull_path(pb, un, control)
     if event == "none":
-        return PullOff(control, None, None, None, None,
-                       "no stable, feasible state at first contact: no path to follow")
+        return PullOff(control, None, None, None, None, _path.no_first_contact_reason(pb) + ": no path to follow")
     if event == "bonded":
         return PullOff(control, None, None, None, start,
                        "no stable zero-load contact (M above the largest M with one): at first touch the contact "
