@@ -113,9 +113,91 @@ def trace(law):
         return _at(aff[1], -aff[0][0] / aff[0][1]) < law.p_cap
 
     x0 = np.array([math.log(law.eps_lo), math.log(start.c - law.eps_lo)])
-    path = _cont.trace(lambda x: residual(law, x), x0, np.array([1.0, 0.0]), inside, lambda a, b: (None, "end"),
-                       h0=0.1, h_max=0.25, h_min=1e-5, max_steps=1500)
-    return path.points, "zone"
+    return follow(law, x0, inside), "zone"
+
+
+TURN = 0.9              # follow: the largest turn of the branch per step, as the cosine between tangents
+H_MIN = 1e-5            # follow: the smallest step in (log eps, log(c - eps))
+SECANT_STEPS = 12       # follow: secant iterations on a line of fixed zone length
+FIXED_EPS_SLOPE = 0.01  # follow: correct at fixed eps where the unit tangent has |d log eps| >= this
+FD_STEP = 1e-6          # follow: finite-difference step of the tangent in (log eps, log(c - eps))
+
+
+def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500):
+    """The branch k = 0, h(c) = h0 through x0 = (log eps, log(c - eps)) (on it), towards growing eps, up to
+    where it leaves the domain inside(x): the points (n, 2).
+
+    Natural-parameter continuation with a switching parameter: predict along the tangent and correct on the
+    line of fixed eps (the zone end at a fixed contact, one LU) unless the branch runs almost along the zone
+    length or that point is not on the same side of a fold in eps (the residual's slope in c changes sign
+    across a fold); then on the line of fixed zone length (secant in log eps, one LU per iterate).  A step is
+    taken when the corrected point lies within half a step of the predictor's line and the tangent turns less
+    than acos(TURN) (else it is halved; it grows by 1.5 up to h_max), as in jkrcyl.numerics.continuation.  A
+    step that leaves the domain is cut by 4 (and not grown after the next step taken) down to 64 H_MIN: the
+    last point lies that close to the edge.  (Pseudo-arclength with Newton, jkrcyl.numerics.continuation,
+    needs a new LU at every iterate and every finite difference in eps: 3-4 times the LUs.)"""
+    pts = [np.asarray(x0, dtype=float)]
+    t, side = _tangent(law, pts[0], np.array([1.0, 0.0]))
+    h, edge = h0, False
+    for _ in range(max_steps):
+        x = pts[-1]
+        pred = x + h * t
+        near = lambda y: y is not None and abs(t[0] * (y[1] - pred[1]) - t[1] * (y[0] - pred[0])) <= 0.5 * h
+        y = _fixed_eps(law, pred) if abs(t[0]) >= FIXED_EPS_SLOPE else None
+        if not (near(y) and _tangent(law, y, t)[1] == side):
+            y = _fixed_zone(law, pred, h)
+        ok = near(y)
+        if ok and not inside(y):
+            if h <= 64 * H_MIN:
+                break
+            h, edge = h / 4, True
+            continue
+        t_new, side_new = _tangent(law, y, t) if ok else (None, None)
+        if t_new is None or t_new @ t < TURN:
+            h /= 2
+            if h < H_MIN:
+                break
+            continue
+        pts.append(y)
+        t, side, h, edge = t_new, side_new, (h if edge else min(1.5 * h, h_max)), False
+    return np.array(pts)
+
+
+def _tangent(law, x, prev):
+    """(unit tangent of the branch at x, oriented along prev; the sign of the residual's slope in c at fixed
+    eps, opposite on a fold's two sides): one LU for the slope in eps (forward difference), none in c."""
+    f = lambda dx: residual(law, x + np.asarray(dx))
+    e, ec = FD_STEP, 0.1 * FD_STEP
+    g = np.array([(f((e, 0.0)) - f((0.0, 0.0))) / e, (f((0.0, ec)) - f((0.0, -ec))) / (2 * ec)])
+    t = np.array([-g[1], g[0]]) / math.hypot(*g)
+    return (-t if t @ prev < 0 else t), math.copysign(1.0, g[1])
+
+
+def _fixed_eps(law, pred):
+    """The branch's point at the predicted eps with the zone length nearest to the predicted one, or None."""
+    eps = math.exp(pred[0])
+    if eps + math.exp(pred[1]) >= math.pi:
+        return None
+    d = law.fixed(eps).zone_end_near(law.s0, law.h0, math.exp(pred[1]))
+    return None if d is None else np.array([pred[0], math.log(d)])
+
+
+def _fixed_zone(law, pred, h):
+    """The branch's point at the predicted zone length with log eps within h of the predicted one, or None."""
+    top = math.log(math.pi - math.exp(pred[1])) - 1e-9
+    f = lambda le: residual(law, np.array([le, pred[1]])) if le < top else math.nan
+    a, b = pred[0], pred[0] + 1e-3 * h              # secant in log eps (each iterate one LU)
+    fa, fb = f(a), f(b)
+    for _ in range(SECANT_STEPS):
+        if not (np.isfinite(fa) and np.isfinite(fb)) or fb == fa:
+            return None
+        a, fa, b = b, fb, b - fb * (b - a) / (fb - fa)
+        if abs(b - pred[0]) > h:
+            return None
+        if abs(b - a) <= 1e-13 * max(1.0, abs(b)):
+            return np.array([b, pred[1]])
+        fb = f(b)
+    return None
 
 
 def arclength(x):
@@ -123,8 +205,14 @@ def arclength(x):
 
 
 def project(law, x_pred, normal, scale):
-    """The curve's point x_pred + tau normal (|tau| <= 4 scale), else the zone end nearest to the predicted one
-    at the predicted eps (jkrcyl.numerics.cohesive), or None."""
+    """The curve's point near x_pred between two traced points: on the line of fixed eps where the chord runs
+    more along eps (|normal_c| >= 1/2; one LU), else x_pred + tau normal (|tau| <= 4 scale); else the zone end
+    nearest to the predicted one at the predicted eps (jkrcyl.numerics.cohesive), or None."""
+    eps = math.exp(x_pred[0])
+    if abs(normal[1]) >= 0.5:
+        d = law.fixed(eps).zone_end_near(law.s0, law.h0, math.exp(x_pred[1]))
+        if d is not None and abs(math.log(d) - x_pred[1]) <= 4 * scale:
+            return np.array([x_pred[0], math.log(d)])
     f = lambda tau: residual(law, x_pred + tau * normal)
     f0 = f(0.0)
     if f0 == 0.0:
@@ -135,7 +223,6 @@ def project(law, x_pred, normal, scale):
             if np.isfinite(fs) and fs * f0 < 0:
                 tau = brentq(f, *sorted((0.0, side * w)), xtol=1e-15, rtol=1e-14)
                 return x_pred + tau * normal
-    eps = math.exp(x_pred[0])
     d = law.fixed(eps).zone_end_near(law.s0, law.h0, math.exp(x_pred[1]))
     return None if d is None else np.array([x_pred[0], math.log(d)])
 
