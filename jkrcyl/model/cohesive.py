@@ -34,6 +34,7 @@ from ..numerics import cohesive_zones as _cz
 from .patch import SinglePatch, Slice
 
 CONTACTLESS_POINTS = 64
+_SLOPES = ("dp_da", "ddn_da", "ddw_da")
 
 
 class Cohesive(SinglePatch):
@@ -156,10 +157,15 @@ class Cohesive(SinglePatch):
                      c_top=np.zeros(a.size), total=col("potential"), feasible=col("feasible").astype(bool))
 
     def value(self, field, a):
-        """p, dn, dw or h at one branch parameter without the slopes, feasibility and energy (root refinement)."""
+        """p, dn, dw or h at one branch parameter without the slopes, feasibility and energy, or a slope of p, dn
+        or dw without the feasibility and energy (root refinement)."""
+        a = float(a)
+        if field in _SLOPES and a > 1 and a not in self._cache:
+            eps, c, direction = self._where(a - 2.0)
+            dp, ddn = _cb.slopes(self.law, eps, c, direction)
+            return {"dp_da": dp, "ddn_da": ddn, "ddw_da": ddn + self.problem.work_shift * dp}[field]
         if field not in ("p", "dn", "dw", "h"):
             return super().value(field, a)
-        a = float(a)
         if a in self._cache:
             pt = self._cache[a]
             p, dn, h = pt.p, pt.delta, pt.h_pi

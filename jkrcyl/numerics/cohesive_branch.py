@@ -130,7 +130,8 @@ def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500):
     Natural-parameter continuation with a switching parameter: predict along the tangent and correct on the
     line of fixed eps (the zone end at a fixed contact, one LU) unless the branch runs almost along the zone
     length or that point is not on the same side of a fold in eps (the residual's slope in c changes sign
-    across a fold); then on the line of fixed zone length (secant in log eps, one LU per iterate).  A step is
+    across a fold); else on the line of fixed zone length (secant in log eps, one LU per iterate); else on the
+    predictor's normal (secant, one LU per iterate: where neither line crosses the branch cleanly).  A step is
     taken when the corrected point lies within half a step of the predictor's line and the tangent turns less
     than acos(TURN) (else it is halved; it grows by 1.5 up to h_max), as in jkrcyl.numerics.continuation.  A
     step that leaves the domain is cut by 4 (and not grown after the next step taken) down to 64 H_MIN: the
@@ -143,9 +144,11 @@ def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500):
         x = pts[-1]
         pred = x + h * t
         near = lambda y: y is not None and abs(t[0] * (y[1] - pred[1]) - t[1] * (y[0] - pred[0])) <= 0.5 * h
-        y = _fixed_eps(law, pred) if abs(t[0]) >= FIXED_EPS_SLOPE else None
+        y = _fixed_eps(law, pred, h) if abs(t[0]) >= FIXED_EPS_SLOPE else None
         if not (near(y) and _tangent(law, y, t)[1] == side):
             y = _fixed_zone(law, pred, h)
+        if not near(y):
+            y = _normal_line(law, pred, t, h)
         ok = near(y)
         if ok and not inside(y):
             if h <= 64 * H_MIN:
@@ -173,13 +176,32 @@ def _tangent(law, x, prev):
     return (-t if t @ prev < 0 else t), math.copysign(1.0, g[1])
 
 
-def _fixed_eps(law, pred):
-    """The branch's point at the predicted eps with the zone length nearest to the predicted one, or None."""
+def _fixed_eps(law, pred, h):
+    """The branch's point at the predicted eps with log(c - eps) within h of the predicted one (secant from
+    it: the branch through the prediction, also next to a fold), or None."""
     eps = math.exp(pred[0])
     if eps + math.exp(pred[1]) >= math.pi:
         return None
-    d = law.fixed(eps).zone_end_near(law.s0, law.h0, math.exp(pred[1]))
-    return None if d is None else np.array([pred[0], math.log(d)])
+    d = _ck.zone_end_secant(law.fixed(eps).fx, eps, law.s0, law.h0, float(pred[1]), float(h), 0.0)
+    return None if d < 0 else np.array([pred[0], math.log(d)])
+
+
+def _normal_line(law, pred, t, h):
+    """The branch's point on the normal to t through pred within h/2 (secant; one LU per iterate), or None."""
+    n = np.array([-t[1], t[0]])
+    f = lambda tau: residual(law, pred + tau * n)
+    a, b = 0.0, 1e-3 * h
+    fa, fb = f(a), f(b)
+    for _ in range(SECANT_STEPS):
+        if not (np.isfinite(fa) and np.isfinite(fb)) or fb == fa:
+            return None
+        a, fa, b = b, fb, b - fb * (b - a) / (fb - fa)
+        if abs(b) > 0.5 * h:
+            return None
+        if abs(b - a) <= 1e-13 * max(1.0, np.abs(pred).max()):
+            return pred + b * n
+        fb = f(b)
+    return None
 
 
 def _fixed_zone(law, pred, h):
@@ -206,13 +228,13 @@ def arclength(x):
 
 def project(law, x_pred, normal, scale):
     """The curve's point near x_pred between two traced points: on the line of fixed eps where the chord runs
-    more along eps (|normal_c| >= 1/2; one LU), else x_pred + tau normal (|tau| <= 4 scale); else the zone end
-    nearest to the predicted one at the predicted eps (jkrcyl.numerics.cohesive), or None."""
+    more along eps (|normal_c| >= 1/2; one LU; the root by secant from the prediction), else x_pred + tau normal
+    (|tau| <= 4 scale); else the zone end nearest to the predicted one at the predicted eps, or None."""
     eps = math.exp(x_pred[0])
     if abs(normal[1]) >= 0.5:
-        d = law.fixed(eps).zone_end_near(law.s0, law.h0, math.exp(x_pred[1]))
-        if d is not None and abs(math.log(d) - x_pred[1]) <= 4 * scale:
-            return np.array([x_pred[0], math.log(d)])
+        y = _fixed_eps(law, x_pred, 4 * scale)
+        if y is not None:
+            return y
     f = lambda tau: residual(law, x_pred + tau * normal)
     f0 = f(0.0)
     if f0 == 0.0:
@@ -237,9 +259,14 @@ def state_values(law, eps, c):
     return _at(aff[1], delta), delta, fc.gap(math.pi, delta, u, zones, law.s0)[0]
 
 
-def point(law, eps, c, direction):
-    """The per-point data at an equilibrium (eps, c) (c = pi: zones 'all'); direction = (d eps, d c) of
-    increasing t (its orientation only)."""
+def slopes(law, eps, c, direction):
+    """(dp/dt, d(delta/Delta)/dt) at an equilibrium (eps, c) as :func:`point` gives them, without the state's
+    fields, feasibility and energy (the refinement of a fold)."""
+    return _slopes(law, eps, c, direction)[1:3]
+
+
+def _slopes(law, eps, c, direction):
+    """(delta/Delta, dp/dt, d(delta/Delta)/dt, D_p, D_dn) at an equilibrium (eps, c) (:func:`point`)."""
     aff = affine(law, eps, c)
     delta = -aff[0][0] / aff[0][1]
     k_d, p_d = aff[0][1], aff[1][1]
@@ -261,6 +288,13 @@ def point(law, eps, c, direction):
         D_p, D_dn = p_d / k_d, 1.0 / k_d
         ddn_deps = -k_e / k_d                                    # t = log eps
         dp_dt, ddn_dt = eps * (p_e + p_d * ddn_deps), eps * ddn_deps
+    return delta, dp_dt, ddn_dt, D_p, D_dn
+
+
+def point(law, eps, c, direction):
+    """The per-point data at an equilibrium (eps, c) (c = pi: zones 'all'); direction = (d eps, d c) of
+    increasing t (its orientation only)."""
+    delta, dp_dt, ddn_dt, D_p, D_dn = _slopes(law, eps, c, direction)
     fc = law.fixed(eps)
     zones = _co.zones_of(min(c, math.pi))
     u = fc.fx[3] + delta * fc.fx[4] + law.s0 * _zone_solution(law, fc, zones)

@@ -75,6 +75,9 @@ def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=
     zero = _zero_load(state, eps_end) if zero_load else None
     # back from the zero-load end: the first minimum of p, or the touch end
     for j in range(len(p) - 2, 0, -1):
+        if p[j - 1] > p[j] < p[j + 1] and (pts[j, 0] - pts[j - 1, 0]) * (pts[j + 1, 0] - pts[j, 0]) <= 0:
+            st = _fold_past_eps_fold(law, pts, j, load, xtol)      # the three points straddle a fold in eps
+            return PullOff(st.p, st.eps, "fold", st, zero, "")
         if p[j - 1] > p[j] < p[j + 1]:
             eps_j, d_j = np.exp(pts[j])
             on_branch = lambda e: _co.cohesive_state(e, m, s0, theta, gb, ar, n=nodes(eps_j), near=d_j)
@@ -90,6 +93,26 @@ def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=
     if touch is None:
         return none("the branch ends in a zone reaching round (p -> 0)", zero)
     return PullOff(touch.p, 0.0, "touch", touch, zero, "")
+
+
+def _fold_past_eps_fold(law, pts, j, load, xtol):
+    """The state of least p near the traced point j whose neighbours straddle a fold of the branch in eps (eps is
+    no parameter there): refined in log(c - eps), which runs through such a fold, eps by secant at each."""
+    span = 2 * np.abs(pts[j + 1] - pts[j - 1]).max()
+    on = lambda ld: _cb._fixed_zone(law, np.array([pts[j, 0], ld]), span)
+    f = lambda ld: (lambda y: math.inf if y is None else load(y))(on(ld))
+    lo, hi = sorted((pts[j - 1, 1], pts[j + 1, 1]))
+    try:
+        res = minimize_scalar(f, bracket=(lo, pts[j, 1], hi), method="brent", options=dict(xtol=xtol))
+    except ValueError:
+        res = minimize_scalar(f, bounds=(lo, hi), method="bounded", options=dict(xatol=xtol * 1e-2))
+    y = on(res.x)
+    if y is None:
+        y = pts[j]
+    eps, c = math.exp(y[0]), math.exp(y[0]) + math.exp(y[1])
+    fc, zones = law.fixed(eps), _co.zones_of(c)
+    dn, u = fc.solve(zones, law.s0)
+    return _co._state(eps, c, fc, dn, u, zones, law.m, law.s0, law.kernel, law.gb, fc.sys.n)
 
 
 def _zero_load(state, eps_end):
