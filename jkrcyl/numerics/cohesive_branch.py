@@ -123,7 +123,7 @@ FIXED_EPS_SLOPE = 0.01  # follow: correct at fixed eps where the unit tangent ha
 FD_STEP = 1e-6          # follow: finite-difference step of the tangent in (log eps, log(c - eps))
 
 
-def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500):
+def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None):
     """The branch k = 0, h(c) = h0 through x0 = (log eps, log(c - eps)) (on it), towards growing eps, up to
     where it leaves the domain inside(x): the points (n, 2).
 
@@ -135,7 +135,7 @@ def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500):
     taken when the corrected point lies within half a step of the predictor's line and the tangent turns less
     than acos(TURN) (else it is halved; it grows by 1.5 up to h_max), as in jkrcyl.numerics.continuation.  A
     step that leaves the domain is cut by 4 (and not grown after the next step taken) down to 64 H_MIN: the
-    last point lies that close to the edge.  (Pseudo-arclength with Newton, jkrcyl.numerics.continuation,
+    last point lies that close to the edge -- unless done(y) says the trace may end at that exit.  (Pseudo-arclength with Newton, jkrcyl.numerics.continuation,
     needs a new LU at every iterate and every finite difference in eps: 3-4 times the LUs.)"""
     pts = [np.asarray(x0, dtype=float)]
     t, side = _tangent(law, pts[0], np.array([1.0, 0.0]))
@@ -145,13 +145,13 @@ def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500):
         pred = x + h * t
         near = lambda y: y is not None and abs(t[0] * (y[1] - pred[1]) - t[1] * (y[0] - pred[0])) <= 0.5 * h
         y = _fixed_eps(law, pred, h) if abs(t[0]) >= FIXED_EPS_SLOPE else None
-        if not (near(y) and _tangent(law, y, t)[1] == side):
+        if not (near(y) and _side(law, y) == side):
             y = _fixed_zone(law, pred, h)
         if not near(y):
             y = _normal_line(law, pred, t, h)
         ok = near(y)
         if ok and not inside(y):
-            if h <= 64 * H_MIN:
+            if h <= 64 * H_MIN or (done is not None and done(y)):
                 break
             h, edge = h / 4, True
             continue
@@ -164,6 +164,12 @@ def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500):
         pts.append(y)
         t, side, h, edge = t_new, side_new, (h if edge else min(1.5 * h, h_max)), False
     return np.array(pts)
+
+
+def _side(law, x):
+    """The sign of the residual's slope in c at fixed eps (no new LU): opposite on a fold's two sides."""
+    e = 0.1 * FD_STEP
+    return math.copysign(1.0, residual(law, x + np.array([0.0, e])) - residual(law, x - np.array([0.0, e])))
 
 
 def _tangent(law, x, prev):

@@ -60,15 +60,24 @@ def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=
         return none("no adherence force: the zone reaches round (p >= 0)" if start.p >= 0 else
                     "the contact branch starts in a zone reaching round")
 
+    left_by_load = [False, None]        # whether the last step out of the domain crossed p = 0, and to where
+
     def inside(x):
         eps, d = math.exp(x[0]), math.exp(x[1])
-        return eps_lo * 0.999 <= eps < eps_hi and eps + d < math.pi * (1 - 1e-9) and load(x) < 0
+        in_box = eps_lo * 0.999 <= eps < eps_hi and eps + d < math.pi * (1 - 1e-9)
+        left_by_load[:] = in_box and load(x) >= 0, x
+        return in_box and not left_by_load[0]
 
     x0 = np.array([math.log(eps_lo), math.log(start.c - eps_lo)])
-    pts = _cb.follow(law, x0, inside, h0=steps[0], h_max=steps[1])
-    p = np.array([load(x) for x in pts])
+    # without the zero-load state the trace need not creep up to p = 0: a step out of it ends the trace
+    pts = _cb.follow(law, x0, inside, h0=steps[0], h_max=steps[1],
+                     done=None if zero_load else lambda y: left_by_load[0])
     eps_end, d_end = np.exp(pts[-1])
-    if not (eps_lo * 1.01 < eps_end < eps_hi * 0.999 and eps_end + d_end < math.pi * (1 - 1e-6)):
+    if left_by_load[0]:                 # the branch's point past p = 0 closes the search for a minimum of p
+        pts = np.vstack([pts, left_by_load[1]])
+    p = np.array([load(x) for x in pts])
+    if not (left_by_load[0] and eps_lo * 1.01 < eps_end and (not zero_load or (
+            eps_end < eps_hi * 0.999 and eps_end + d_end < math.pi * (1 - 1e-6)))):
         return none("no zero-load contact on the branch: p < 0 all along it (it ends at the receding limit, "
                     "turns back to eps -> 0 or its zone reaches round)")
     state = lambda e: _co.cohesive_state(e, m, s0, theta, gb, ar, n=nodes(eps_end), near=d_end)
