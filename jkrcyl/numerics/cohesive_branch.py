@@ -135,7 +135,8 @@ def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None):
     taken when the corrected point lies within half a step of the predictor's line and the tangent turns less
     than acos(TURN) (else it is halved; it grows by 1.5 up to h_max), as in jkrcyl.numerics.continuation.  A
     step that leaves the domain is cut by 4 (and not grown after the next step taken) down to 64 H_MIN: the
-    last point lies that close to the edge -- unless done(y) says the trace may end at that exit.  (Pseudo-arclength with Newton, jkrcyl.numerics.continuation,
+    last point lies that close to the edge -- unless done(y) says the trace may end at that exit (a step on the
+    same branch: its tangent turns less than acos(TURN)).  (Pseudo-arclength with Newton, jkrcyl.numerics.continuation,
     needs a new LU at every iterate and every finite difference in eps: 3-4 times the LUs.)"""
     pts = [np.asarray(x0, dtype=float)]
     t, side = _tangent(law, pts[0], np.array([1.0, 0.0]))
@@ -151,7 +152,7 @@ def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None):
             y = _normal_line(law, pred, t, h)
         ok = near(y)
         if ok and not inside(y):
-            if h <= 64 * H_MIN or (done is not None and done(y)):
+            if h <= 64 * H_MIN or (done is not None and done(y) and _tangent(law, y, t)[0] @ t >= TURN):
                 break
             h, edge = h / 4, True
             continue
