@@ -28,13 +28,16 @@ import functools
 import math
 
 import numpy as np
+from scipy.optimize import brentq
 
 from ..numerics import cohesive_branch as _cb
 from ..numerics import cohesive_zones as _cz
+from ..numerics import roots as _roots
 from .patch import SinglePatch, Slice
 
 CONTACTLESS_POINTS = 64
 _SLOPES = ("dp_da", "ddn_da", "ddw_da")
+ROOT_XTOL = 1e-12         # roots on the branch parameter a = 2 + t (t: arclength in log space, O(1-10))
 
 
 class Cohesive(SinglePatch):
@@ -178,6 +181,17 @@ class Cohesive(SinglePatch):
             eps, c, _ = self._where(a - 2.0)
             p, dn, h = _cb.state_values(self.law, eps, c)
         return {"p": p, "dn": dn, "dw": dn + self.problem.work_shift * p, "h": h}[field]
+
+    def root(self, field, lo, hi, flo, fhi, target=0.0):
+        """The root of field - target in [lo, hi] (a sign change; None where it is a pole): Brent to ROOT_XTOL in
+        a -- the states carry ~1e-10 of noise, so the bisection to adjacent doubles of the other solvers buys
+        nothing but evaluations (each a state, and for a slope two more contacts)."""
+        if flo == 0.0 or fhi == 0.0:
+            return lo if flo == 0.0 else hi
+        seen = {lo: flo, hi: fhi}
+        f = lambda x: seen[x] if x in seen else seen.setdefault(x, self.value(field, x) - target)
+        x = brentq(f, lo, hi, xtol=ROOT_XTOL, rtol=4 * np.finfo(float).eps)
+        return None if _roots.is_pole(f(x), flo, fhi) else x
 
     def release_rates(self, s):
         """No Griffith edge: NaN."""

@@ -2,7 +2,7 @@
 
 The states with one contact and one zone form curves in the plane (eps, d), d = c - eps the zone length: the
 zone end can turn back in eps (at lambda ~ 1-10 the first root of h(c) = h0 disappears at a fold and the curve
-returns with a longer zone).  So the branch is traced by continuation (jkrcyl.numerics.cohesive_branch.follow,
+returns with a longer zone).  So the branch is traced by continuation (jkrcyl.numerics.cohesive_follow.follow,
 the tracer of the model core's branch table) in (log eps, log d), from its end at eps -> 0 (the contact about to vanish,
 joined there to the contactless state that touches), until the load rises through p = 0 (the zero-load state)
 or the curve leaves the domain (the receding limit a_crit, or the zone reaching round).
@@ -23,6 +23,7 @@ from scipy.optimize import brentq, minimize_scalar
 
 from . import cohesive as _co
 from . import cohesive_branch as _cb
+from . import cohesive_follow as _fo
 from . import cohesive_zones as _cz
 
 PullOff = namedtuple("PullOff", ["p", "eps", "kind", "state", "zero_load", "reason"])
@@ -70,7 +71,7 @@ def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=
 
     x0 = np.array([math.log(eps_lo), math.log(start.c - eps_lo)])
     # without the zero-load state the trace need not creep up to p = 0: a step out of it ends the trace
-    pts = _cb.follow(law, x0, inside, h0=steps[0], h_max=steps[1],
+    pts = _fo.follow(law, x0, inside, h0=steps[0], h_max=steps[1],
                      done=None if zero_load else lambda y: left_by_load[0])
     eps_end, d_end = np.exp(pts[-1])
     if left_by_load[0]:                 # the branch's point past p = 0 closes the search for a minimum of p
@@ -108,7 +109,7 @@ def _fold_past_eps_fold(law, pts, j, load, xtol):
     """The state of least p near the traced point j whose neighbours straddle a fold of the branch in eps (eps is
     no parameter there): refined in log(c - eps), which runs through such a fold, eps by secant at each."""
     span = 2 * np.abs(pts[j + 1] - pts[j - 1]).max()
-    on = lambda ld: _cb._fixed_zone(law, np.array([pts[j, 0], ld]), span)
+    on = lambda ld: _fo.fixed_zone(law, np.array([pts[j, 0], ld]), span)
     f = lambda ld: (lambda y: math.inf if y is None else load(y))(on(ld))
     lo, hi = sorted((pts[j - 1, 1], pts[j + 1, 1]))
     try:
