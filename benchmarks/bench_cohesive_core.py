@@ -97,7 +97,7 @@ def main():
         print(f"map {args.map} x {args.map} (Dask, 2 processes): {t_map:.1f} s; outcomes "
               f"{dict(zip(*np.unique(pm.outcome, return_counts=True)))}")
     ok = lambda t, goal: "met" if t <= goal else "NOT met"
-    print(f"\ngoals (issue 19) vs measured, load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores:")
+    print(f"\ngoals: issue 19 vs measured (load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores)")
     print(f"  one state <= 1 ms: {t_state * 1e3:.2f} ms ({ok(t_state, 1e-3)}; a table point {t_point * 1e3:.2f} ms)")
     for lam, (t, _) in cold.items():
         print(f"  a pull-off <= 100 ms, lambda = {lam:g}: cold {t * 1e3:.0f} ms ({ok(t, 0.1)})")
