@@ -28,12 +28,17 @@ import functools
 import math
 
 import numpy as np
+from scipy.optimize import brentq
 
 from ..numerics import cohesive_branch as _cb
 from ..numerics import cohesive_zones as _cz
+from ..numerics import roots as _roots
 from .patch import SinglePatch, Slice
 
 CONTACTLESS_POINTS = 64
+_SLOPES = ("dp_da", "ddn_da", "ddw_da")
+ROOT_XTOL = 1e-12         # roots on the branch parameter a = 2 + t (t: arclength in log space, O(1-10))
+SLOPE_XTOL = 1e-9         # folds (roots of a slope): below, the slopes' noise moves the root (tested: 1e-6)
 
 
 class Cohesive(SinglePatch):
@@ -46,6 +51,7 @@ class Cohesive(SinglePatch):
         self.problem = problem
         self.law = _cb.Law(problem.m, problem.edge.s0, problem.theta, problem.gb, problem.alpha_ratio)
         self._cache = {}
+        self._values = {}            # (p, dn, h) at branch parameters off the table (root refinements)
 
     # --- the traced branch ---------------------------------------------------------------------------
     @functools.cached_property
@@ -156,10 +162,15 @@ class Cohesive(SinglePatch):
                      c_top=np.zeros(a.size), total=col("potential"), feasible=col("feasible").astype(bool))
 
     def value(self, field, a):
-        """p, dn, dw or h at one branch parameter without the slopes, feasibility and energy (root refinement)."""
+        """p, dn, dw or h at one branch parameter without the slopes, feasibility and energy, or a slope of p, dn
+        or dw without the feasibility and energy (root refinement)."""
+        a = float(a)
+        if field in _SLOPES and a > 1 and a not in self._cache:
+            eps, c, direction = self._where(a - 2.0)
+            dp, ddn = _cb.slopes(self.law, eps, c, direction)
+            return {"dp_da": dp, "ddn_da": ddn, "ddw_da": ddn + self.problem.work_shift * dp}[field]
         if field not in ("p", "dn", "dw", "h"):
             return super().value(field, a)
-        a = float(a)
         if a in self._cache:
             pt = self._cache[a]
             p, dn, h = pt.p, pt.delta, pt.h_pi
@@ -168,10 +179,27 @@ class Cohesive(SinglePatch):
             st = _cz.contactless_state(lo + a * (hi - lo), self.law.m, self.law.s0, self.law.theta, self.law.gb,
                                        self.law.ar)
             p, dn, h = st.p, st.delta_over_Delta, st.h_pi_over_Delta
+        elif a in self._values:
+            p, dn, h = self._values[a]
         else:
             eps, c, _ = self._where(a - 2.0)
-            p, dn, h = _cb.state_values(self.law, eps, c)
+            if len(self._values) > 20000:
+                self._values.clear()
+            p, dn, h = self._values.setdefault(a, _cb.state_values(self.law, eps, c))
         return {"p": p, "dn": dn, "dw": dn + self.problem.work_shift * p, "h": h}[field]
+
+    def root(self, field, lo, hi, flo, fhi, target=0.0):
+        """The root of field - target in [lo, hi] (a sign change; None where it is a pole): Brent to ROOT_XTOL in
+        a (SLOPE_XTOL for a slope: a fold) -- the states carry ~1e-10 of noise and the slopes (finite differences)
+        ~1e-9, so the bisection to adjacent doubles of the other solvers buys nothing but evaluations (each a
+        state, and for a slope two more contacts)."""
+        if flo == 0.0 or fhi == 0.0:
+            return lo if flo == 0.0 else hi
+        seen = {lo: flo, hi: fhi}
+        f = lambda x: seen[x] if x in seen else seen.setdefault(x, self.value(field, x) - target)
+        xtol = SLOPE_XTOL if field in _SLOPES else ROOT_XTOL
+        x = brentq(f, lo, hi, xtol=xtol, rtol=4 * np.finfo(float).eps)
+        return None if _roots.is_pole(f(x), flo, fhi) else x
 
     def release_rates(self, s):
         """No Griffith edge: NaN."""

@@ -4,7 +4,7 @@ Notation of jkrcyl.numerics.cohesive (kernel scale: p = P beta*/(4 pi Delta), le
 At a fixed contact |phi| < eps and zone end c every state is affine in the approach delta/Delta (the LU of the
 contact is reused): the edge coefficient k at the contact end, the load p, B = int nu and the zone-end residual
 g = h(c) - h0.  Equilibrium is k = 0 and g = 0: a curve in (eps, delta, c) that can turn back in eps and in c
-(phase 1), so the branch is traced by pseudo-arclength continuation (jkrcyl.numerics.continuation) in
+(phase 1), so the branch is traced by continuation (jkrcyl.numerics.cohesive_follow) in
 x = (log eps, log(c - eps)) from its touch end (eps -> 0) and parametrised by the arclength t of the traced
 polyline.  A state at any t is the curve's point on the normal through the polyline (:func:`project`).
 Where the range reaches round at the touch end (zones 'all': no zone end, c = pi) the branch is sampled in eps
@@ -29,7 +29,7 @@ from scipy.optimize import brentq
 from . import cohesive as _co
 from . import cohesive_kernels as _ck
 from . import cohesive_zones as _cz
-from . import continuation as _cont
+from . import cohesive_follow as _fo
 from . import one_arc as _one
 
 START = 1e-3            # the trace starts at eps = START times the half-plane scale 2 m^(2/3) (at most 1e-3)
@@ -92,12 +92,6 @@ def _at(pair, delta):
     return pair[0] + delta * pair[1]
 
 
-def residual(law, x):
-    """h(c) - h0 at x = (log eps, log(c - eps)) with k = 0 (delta eliminated)."""
-    eps, d = math.exp(x[0]), math.exp(x[1])
-    return _ck._residual(d, (law.fixed(eps).fx, eps, law.s0, law.h0, 0.0))
-
-
 def trace(law):
     """The branch as (x points (n, 2), kind): 'zone' (x = (log eps, log(c - eps))) or 'all' (x = (log eps, 0))."""
     start = _co.cohesive_state(law.eps_lo, law.m, law.s0, law.theta, law.gb, law.ar, n=law.nodes(law.eps_lo))
@@ -113,9 +107,7 @@ def trace(law):
         return _at(aff[1], -aff[0][0] / aff[0][1]) < law.p_cap
 
     x0 = np.array([math.log(law.eps_lo), math.log(start.c - law.eps_lo)])
-    path = _cont.trace(lambda x: residual(law, x), x0, np.array([1.0, 0.0]), inside, lambda a, b: (None, "end"),
-                       h0=0.1, h_max=0.25, h_min=1e-5, max_steps=1500)
-    return path.points, "zone"
+    return _fo.follow(law, x0, inside), "zone"
 
 
 def arclength(x):
@@ -123,9 +115,19 @@ def arclength(x):
 
 
 def project(law, x_pred, normal, scale):
-    """The curve's point x_pred + tau normal (|tau| <= 4 scale), else the zone end nearest to the predicted one
-    at the predicted eps (jkrcyl.numerics.cohesive), or None."""
-    f = lambda tau: residual(law, x_pred + tau * normal)
+    """The curve's point near x_pred between two traced points: on the line of fixed eps where the chord runs
+    more along eps (|normal_c| >= 1/2; one LU; the root by secant from the prediction), else x_pred + tau normal
+    (|tau| <= 4 scale: by secant, else bracketed); else the zone end nearest to the predicted one at the predicted
+    eps, or None."""
+    eps = math.exp(x_pred[0])
+    if abs(normal[1]) >= 0.5:
+        y = _fo.fixed_eps(law, x_pred, 4 * scale)
+        if y is not None:
+            return y
+    y = _fo.normal_line(law, x_pred, np.array([normal[1], -normal[0]]), 8 * scale)
+    if y is not None:
+        return y
+    f = lambda tau: _fo.residual(law, x_pred + tau * normal)
     f0 = f(0.0)
     if f0 == 0.0:
         return x_pred
@@ -135,7 +137,6 @@ def project(law, x_pred, normal, scale):
             if np.isfinite(fs) and fs * f0 < 0:
                 tau = brentq(f, *sorted((0.0, side * w)), xtol=1e-15, rtol=1e-14)
                 return x_pred + tau * normal
-    eps = math.exp(x_pred[0])
     d = law.fixed(eps).zone_end_near(law.s0, law.h0, math.exp(x_pred[1]))
     return None if d is None else np.array([x_pred[0], math.log(d)])
 
@@ -150,9 +151,14 @@ def state_values(law, eps, c):
     return _at(aff[1], delta), delta, fc.gap(math.pi, delta, u, zones, law.s0)[0]
 
 
-def point(law, eps, c, direction):
-    """The per-point data at an equilibrium (eps, c) (c = pi: zones 'all'); direction = (d eps, d c) of
-    increasing t (its orientation only)."""
+def slopes(law, eps, c, direction):
+    """(dp/dt, d(delta/Delta)/dt) at an equilibrium (eps, c) as :func:`point` gives them, without the state's
+    fields, feasibility and energy (the refinement of a fold)."""
+    return _slopes(law, eps, c, direction)[1:3]
+
+
+def _slopes(law, eps, c, direction):
+    """(delta/Delta, dp/dt, d(delta/Delta)/dt, D_p, D_dn) at an equilibrium (eps, c) (:func:`point`)."""
     aff = affine(law, eps, c)
     delta = -aff[0][0] / aff[0][1]
     k_d, p_d = aff[0][1], aff[1][1]
@@ -174,6 +180,13 @@ def point(law, eps, c, direction):
         D_p, D_dn = p_d / k_d, 1.0 / k_d
         ddn_deps = -k_e / k_d                                    # t = log eps
         dp_dt, ddn_dt = eps * (p_e + p_d * ddn_deps), eps * ddn_deps
+    return delta, dp_dt, ddn_dt, D_p, D_dn
+
+
+def point(law, eps, c, direction):
+    """The per-point data at an equilibrium (eps, c) (c = pi: zones 'all'); direction = (d eps, d c) of
+    increasing t (its orientation only)."""
+    delta, dp_dt, ddn_dt, D_p, D_dn = _slopes(law, eps, c, direction)
     fc = law.fixed(eps)
     zones = _co.zones_of(min(c, math.pi))
     u = fc.fx[3] + delta * fc.fx[4] + law.s0 * _zone_solution(law, fc, zones)

@@ -264,3 +264,31 @@ def zone_end_near(fx, eps, s0, h0, d_near, c_top):
             hi, fhi = hi2, fhi2
         lo, flo = lo2, flo2
     return -1.0
+
+
+@njit(cache=True)
+def zone_end_secant(fx, eps, s0, h0, log_d, span, c_top):
+    """The zone length d with h(eps + d) = h0 by the secant method in log d from log_d (and log_d + span/1000),
+    within span of log_d: the root of the branch through a predicted point, also where a fold of the zone end in
+    eps puts a second root close by (which a bracket search can step over); -1 when the iteration leaves that
+    interval or (pi - c_top - eps), stalls, or takes more than 30 steps."""
+    args = (fx, eps, s0, h0, c_top)
+    top = math.log(PI - c_top - eps)
+    a, b = log_d, log_d + 1e-3 * span
+    if b >= top:
+        return -1.0
+    fa, fb = _residual(math.exp(a), args), _residual(math.exp(b), args)
+    for _ in range(30):
+        if fb == 0.0:
+            return math.exp(b)
+        if fb == fa or not (math.isfinite(fa) and math.isfinite(fb)):
+            return -1.0
+        c = b - fb * (b - a) / (fb - fa)
+        if not abs(c - log_d) <= span or c >= top:
+            return -1.0
+        a, fa, b = b, fb, c
+        if abs(b - a) <= 1e-13 * max(1.0, abs(b)):
+            return math.exp(b)
+        fb = _residual(math.exp(b), args)
+    return -1.0
+

@@ -2,8 +2,8 @@
 
 The states with one contact and one zone form curves in the plane (eps, d), d = c - eps the zone length: the
 zone end can turn back in eps (at lambda ~ 1-10 the first root of h(c) = h0 disappears at a fold and the curve
-returns with a longer zone).  So the branch is traced by pseudo-arclength continuation
-(jkrcyl.numerics.continuation) in (log eps, log d), from its end at eps -> 0 (the contact about to vanish,
+returns with a longer zone).  So the branch is traced by continuation (jkrcyl.numerics.cohesive_follow.follow,
+the tracer of the model core's branch table) in (log eps, log d), from its end at eps -> 0 (the contact about to vanish,
 joined there to the contactless state that touches), until the load rises through p = 0 (the zero-load state)
 or the curve leaves the domain (the receding limit a_crit, or the zone reaching round).
 
@@ -15,32 +15,23 @@ With the range reaching round (h0 > 2 Delta less the uniform pull) p >= 0 all al
 Collocation nodes: a function of eps only along the trace (the zone estimate m^2/(4 s0^2)), so that the residual
 is smooth for the continuation; the minimum is refined in eps (Brent) on the branch through the traced point.
 """
-import functools
 import math
 from collections import namedtuple
 
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
-from . import one_arc as _one
 from . import cohesive as _co
-from . import cohesive_kernels as _ck
+from . import cohesive_branch as _cb
+from . import cohesive_follow as _fo
 from . import cohesive_zones as _cz
-from . import continuation as _cont
 
 PullOff = namedtuple("PullOff", ["p", "eps", "kind", "state", "zero_load", "reason"])
 PullOff.__doc__ = """Load-control pull-off: p = P* beta*/(4 pi Delta) at detachment (None with a reason when the pin
 does not adhere or the branch has no zero-load state), eps there (0 for 'touch'), kind 'fold' | 'touch' | None,
 the state there (CohesiveState), the zero-load state (CohesiveState or None)."""
 
-EPS_MARGIN = 1e-3           # stay this far (relative) below the receding limit, where the unit problem is singular
 START = 1e-3                # the trace starts at eps = START times the half-plane scale 2 m^(2/3) (at most 1e-3)
-
-
-def _eps_max(theta, gb, ar):
-    """Below the receding limit (the pair's pole, numerics.one_arc.receding_contact: finite for a rigid cradle
-    at alpha* != 0), and clear of the full circle."""
-    return min(math.pi - 0.05, 2 * math.atan(_one.receding_contact(theta, gb, ar)) * (1 - EPS_MARGIN))
 
 
 def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=1e-10, zero_load=True):
@@ -50,26 +41,17 @@ def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=
     the trace starts, relative to the half-plane scale (a minimum of p below it is taken for the touch end);
     xtol: of the minimum in eps (p* is flat there: 1e-6 gives p* to ~1e-12); zero_load=False skips refining the
     zero-load state (PullOff.zero_load is then None)."""
-    m, s0, kernel = _co._law(m, s0, theta, gb, ar)
+    m, s0, _ = _co._law(m, s0, theta, gb, ar)
     none = lambda reason, zero=None: PullOff(None, None, None, None, zero, reason)
     if m == 0.0:
         return none("no adhesion (m = 0)")
-    h0, d0 = m * m / s0, _co.dugdale_zone(m, s0)
-    eps_lo, eps_hi = min(start * 2 * m ** (2 / 3), 1e-3), _eps_max(theta, gb, ar)
-    nodes = lambda eps: _co.nodes_for(eps, d0, kernel.ar) // 8 * 8 + 8
-
-    @functools.lru_cache(maxsize=32)
-    def fixed(eps):
-        return _co.FixedContact(eps, kernel, nodes(eps))
-
-    def residual(x):
-        eps, d = math.exp(x[0]), math.exp(x[1])
-        fc = fixed(eps)
-        return _ck._residual(d, (fc.fx, eps, s0, h0, 0.0))
+    law = _cb.Law(m, s0, theta, gb, ar)
+    eps_lo, eps_hi = min(start * 2 * m ** (2 / 3), 1e-3), law.eps_hi
+    nodes = law.nodes
 
     def load(x):
         eps, d = math.exp(x[0]), math.exp(x[1])
-        fc = fixed(eps)
+        fc = law.fixed(eps)
         zones = _co.zones_of(eps + d)
         dn, u = fc.solve(zones, s0)
         return fc.ep @ u - s0 * _co.zone_load(zones)[0]
@@ -79,23 +61,33 @@ def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=
         return none("no adherence force: the zone reaches round (p >= 0)" if start.p >= 0 else
                     "the contact branch starts in a zone reaching round")
 
+    left_by_load = [False, None]        # whether the last step out of the domain crossed p = 0, and to where
+
     def inside(x):
         eps, d = math.exp(x[0]), math.exp(x[1])
-        return eps_lo * 0.999 <= eps < eps_hi and eps + d < math.pi * (1 - 1e-9) and load(x) < 0
+        in_box = eps_lo * 0.999 <= eps < eps_hi and eps + d < math.pi * (1 - 1e-9)
+        left_by_load[:] = in_box and load(x) >= 0, x
+        return in_box and not left_by_load[0]
 
     x0 = np.array([math.log(eps_lo), math.log(start.c - eps_lo)])
-    path = _cont.trace(residual, x0, np.array([1.0, 0.0]), inside, lambda a, b: (None, None),
-                       h0=steps[0], h_max=steps[1], max_steps=1500)
-    pts = path.points
-    p = np.array([load(x) for x in pts])
+    # without the zero-load state the trace need not creep up to p = 0: a step out of it ends the trace
+    pts = _fo.follow(law, x0, inside, h0=steps[0], h_max=steps[1],
+                     done=None if zero_load else lambda y: left_by_load[0])
     eps_end, d_end = np.exp(pts[-1])
-    if not (eps_lo * 1.01 < eps_end < eps_hi * 0.999 and eps_end + d_end < math.pi * (1 - 1e-6)):
+    if left_by_load[0]:                 # the branch's point past p = 0 closes the search for a minimum of p
+        pts = np.vstack([pts, left_by_load[1]])
+    p = np.array([load(x) for x in pts])
+    if not (left_by_load[0] and eps_lo * 1.01 < eps_end and (not zero_load or (
+            eps_end < eps_hi * 0.999 and eps_end + d_end < math.pi * (1 - 1e-6)))):
         return none("no zero-load contact on the branch: p < 0 all along it (it ends at the receding limit, "
                     "turns back to eps -> 0 or its zone reaches round)")
     state = lambda e: _co.cohesive_state(e, m, s0, theta, gb, ar, n=nodes(eps_end), near=d_end)
     zero = _zero_load(state, eps_end) if zero_load else None
     # back from the zero-load end: the first minimum of p, or the touch end
     for j in range(len(p) - 2, 0, -1):
+        if p[j - 1] > p[j] < p[j + 1] and (pts[j, 0] - pts[j - 1, 0]) * (pts[j + 1, 0] - pts[j, 0]) <= 0:
+            st = _fold_past_eps_fold(law, pts, j, load, xtol)      # the three points straddle a fold in eps
+            return PullOff(st.p, st.eps, "fold", st, zero, "")
         if p[j - 1] > p[j] < p[j + 1]:
             eps_j, d_j = np.exp(pts[j])
             on_branch = lambda e: _co.cohesive_state(e, m, s0, theta, gb, ar, n=nodes(eps_j), near=d_j)
@@ -111,6 +103,26 @@ def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=
     if touch is None:
         return none("the branch ends in a zone reaching round (p -> 0)", zero)
     return PullOff(touch.p, 0.0, "touch", touch, zero, "")
+
+
+def _fold_past_eps_fold(law, pts, j, load, xtol):
+    """The state of least p near the traced point j whose neighbours straddle a fold of the branch in eps (eps is
+    no parameter there): refined in log(c - eps), which runs through such a fold, eps by secant at each."""
+    span = 2 * np.abs(pts[j + 1] - pts[j - 1]).max()
+    on = lambda ld: _fo.fixed_zone(law, np.array([pts[j, 0], ld]), span)
+    f = lambda ld: (lambda y: math.inf if y is None else load(y))(on(ld))
+    lo, hi = sorted((pts[j - 1, 1], pts[j + 1, 1]))
+    try:
+        res = minimize_scalar(f, bracket=(lo, pts[j, 1], hi), method="brent", options=dict(xtol=xtol))
+    except ValueError:
+        res = minimize_scalar(f, bounds=(lo, hi), method="bounded", options=dict(xatol=xtol * 1e-2))
+    y = on(res.x)
+    if y is None:
+        y = pts[j]
+    eps, c = math.exp(y[0]), math.exp(y[0]) + math.exp(y[1])
+    fc, zones = law.fixed(eps), _co.zones_of(c)
+    dn, u = fc.solve(zones, law.s0)
+    return _co._state(eps, c, fc, dn, u, zones, law.m, law.s0, law.kernel, law.gb, fc.sys.n)
 
 
 def _zero_load(state, eps_end):

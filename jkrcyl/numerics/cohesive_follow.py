@@ -1,0 +1,134 @@
+"""Continuation of the Maugis-Dugdale contact branch (issue 19): the curve k = 0, h(c) = h0 in the plane
+x = (log eps, log(c - eps)) (notation of jkrcyl.numerics.cohesive and jkrcyl.numerics.cohesive_branch).
+
+Every point of the plane with a new eps costs a new collocation matrix and its LU (jkrcyl.numerics.cohesive
+.FixedContact); along a line of fixed eps the zone-end residual is cheap (the LU reused).  So :func:`follow`
+corrects on lines of fixed eps wherever the branch crosses them cleanly, and only near a fold in eps on lines of
+fixed zone length or on the predictor's normal (one LU per iterate there), with the step control of
+pseudo-arclength continuation (jkrcyl.numerics.continuation: tangent predictor, turn check) -- 3-4 times fewer
+LUs than Newton on both coordinates.  Used for the branch table of the model core (cohesive_branch.trace) and
+the stand-alone pull-off (cohesive_pull_off).
+"""
+import math
+
+import numpy as np
+
+from . import cohesive_kernels as _ck
+
+def residual(law, x):
+    """h(c) - h0 at x = (log eps, log(c - eps)) with k = 0 (delta eliminated)."""
+    eps, d = math.exp(x[0]), math.exp(x[1])
+    return _ck._residual(d, (law.fixed(eps).fx, eps, law.s0, law.h0, 0.0))
+
+
+TURN = 0.9              # follow: the largest turn of the branch per step, as the cosine between tangents
+H_MIN = 1e-5            # follow: the smallest step in (log eps, log(c - eps))
+SECANT_STEPS = 12       # follow: secant iterations on a line of fixed zone length
+FIXED_EPS_SLOPE = 0.01  # follow: correct at fixed eps where the unit tangent has |d log eps| >= this
+FD_STEP = 1e-6          # follow: finite-difference step of the tangent in (log eps, log(c - eps))
+
+
+def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None):
+    """The branch k = 0, h(c) = h0 through x0 = (log eps, log(c - eps)) (on it), towards growing eps, up to
+    where it leaves the domain inside(x): the points (n, 2).
+
+    Natural-parameter continuation with a switching parameter: predict along the tangent and correct on the
+    line of fixed eps (the zone end at a fixed contact, one LU) unless the branch runs almost along the zone
+    length or that point is not on the same side of a fold in eps (the residual's slope in c changes sign
+    across a fold); else on the line of fixed zone length (secant in log eps, one LU per iterate); else on the
+    predictor's normal (secant, one LU per iterate: where neither line crosses the branch cleanly).  A step is
+    taken when the corrected point lies within half a step of the predictor's line and the tangent turns less
+    than acos(TURN) (else it is halved; it grows by 1.5 up to h_max), as in jkrcyl.numerics.continuation.  A
+    step that leaves the domain is cut by 4 (and not grown after the next step taken) down to 64 H_MIN: the
+    last point lies that close to the edge -- unless done(y) says the trace may end at that exit (a step on the
+    same branch: its tangent turns less than acos(TURN)).  (Pseudo-arclength with Newton, jkrcyl.numerics.continuation,
+    needs a new LU at every iterate and every finite difference in eps: 3-4 times the LUs.)"""
+    pts = [np.asarray(x0, dtype=float)]
+    t, side = _tangent(law, pts[0], np.array([1.0, 0.0]))
+    h, edge = h0, False
+    for _ in range(max_steps):
+        x = pts[-1]
+        pred = x + h * t
+        near = lambda y: y is not None and abs(t[0] * (y[1] - pred[1]) - t[1] * (y[0] - pred[0])) <= 0.5 * h
+        y = fixed_eps(law, pred, h) if abs(t[0]) >= FIXED_EPS_SLOPE else None
+        if not (near(y) and _side(law, y) == side):
+            y = fixed_zone(law, pred, h)
+        if not near(y):
+            y = normal_line(law, pred, t, h)
+        ok = near(y)
+        if ok and not inside(y):
+            if h <= 64 * H_MIN or (done is not None and done(y) and _tangent(law, y, t)[0] @ t >= TURN):
+                break
+            h, edge = h / 4, True
+            continue
+        t_new, side_new = _tangent(law, y, t) if ok else (None, None)
+        if t_new is None or t_new @ t < TURN:
+            h /= 2
+            if h < H_MIN:
+                break
+            continue
+        pts.append(y)
+        t, side, h, edge = t_new, side_new, (h if edge else min(1.5 * h, h_max)), False
+    return np.array(pts)
+
+
+def _side(law, x):
+    """The sign of the residual's slope in c at fixed eps (no new LU): opposite on a fold's two sides."""
+    e = 0.1 * FD_STEP
+    return math.copysign(1.0, residual(law, x + np.array([0.0, e])) - residual(law, x - np.array([0.0, e])))
+
+
+def _tangent(law, x, prev):
+    """(unit tangent of the branch at x, oriented along prev; the sign of the residual's slope in c at fixed
+    eps, opposite on a fold's two sides): one LU for the slope in eps (forward difference), none in c."""
+    f = lambda dx: residual(law, x + np.asarray(dx))
+    e, ec = FD_STEP, 0.1 * FD_STEP
+    g = np.array([(f((e, 0.0)) - f((0.0, 0.0))) / e, (f((0.0, ec)) - f((0.0, -ec))) / (2 * ec)])
+    t = np.array([-g[1], g[0]]) / math.hypot(*g)
+    return (-t if t @ prev < 0 else t), math.copysign(1.0, g[1])
+
+
+def fixed_eps(law, pred, h):
+    """The branch's point at the predicted eps with log(c - eps) within h of the predicted one (secant from
+    it: the branch through the prediction, also next to a fold), or None."""
+    eps = math.exp(pred[0])
+    if eps + math.exp(pred[1]) >= math.pi:
+        return None
+    d = _ck.zone_end_secant(law.fixed(eps).fx, eps, law.s0, law.h0, float(pred[1]), float(h), 0.0)
+    return None if d < 0 else np.array([pred[0], math.log(d)])
+
+
+def normal_line(law, pred, t, h):
+    """The branch's point on the normal to t through pred within h/2 (secant; one LU per iterate), or None."""
+    n = np.array([-t[1], t[0]])
+    f = lambda tau: residual(law, pred + tau * n)
+    a, b = 0.0, 1e-3 * h
+    fa, fb = f(a), f(b)
+    for _ in range(SECANT_STEPS):
+        if not (np.isfinite(fa) and np.isfinite(fb)) or fb == fa:
+            return None
+        a, fa, b = b, fb, b - fb * (b - a) / (fb - fa)
+        if abs(b) > 0.5 * h:
+            return None
+        if abs(b - a) <= 1e-13 * max(1.0, np.abs(pred).max()):
+            return pred + b * n
+        fb = f(b)
+    return None
+
+
+def fixed_zone(law, pred, h):
+    """The branch's point at the predicted zone length with log eps within h of the predicted one, or None."""
+    top = math.log(math.pi - math.exp(pred[1])) - 1e-9
+    f = lambda le: residual(law, np.array([le, pred[1]])) if le < top else math.nan
+    a, b = pred[0], pred[0] + 1e-3 * h              # secant in log eps (each iterate one LU)
+    fa, fb = f(a), f(b)
+    for _ in range(SECANT_STEPS):
+        if not (np.isfinite(fa) and np.isfinite(fb)) or fb == fa:
+            return None
+        a, fa, b = b, fb, b - fb * (b - a) / (fb - fa)
+        if abs(b - pred[0]) > h:
+            return None
+        if abs(b - a) <= 1e-13 * max(1.0, abs(b)):
+            return np.array([b, pred[1]])
+        fb = f(b)
+    return None
