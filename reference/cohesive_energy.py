@@ -44,18 +44,31 @@ def _constrained(eps, c, law, held, value, n):
     return fc.ek @ u, delta, p0 + delta * p1, u, fc
 
 
+def _root_nearest(k, eps_guess, c, points=61):
+    """The root of k(eps) = 0 nearest eps_guess: every sign change on a grid of eps_guess (1 +- 1/2) (kept
+    inside the zone), refined by Brent, kept only where k vanishes (not where it grows) -- at fixed approach k
+    has poles in eps (where the approach does not fix the fixed-arc problem: the paper's delta has d delta/dP = 0 at a fixed arc
+    for some pairs), and a sign change through a pole is not a contact.  ValueError when there is none."""
+    top = min(eps_guess * 1.5, eps_guess + 0.9 * (c - eps_guess))
+    grid = np.concatenate([np.linspace(eps_guess * 0.5, eps_guess, points // 2 + 1),
+                           np.linspace(eps_guess, top, points // 2 + 1)[1:]])
+    ks = np.array([k(e) for e in grid])
+    roots = []
+    for i in np.nonzero(ks[:-1] * ks[1:] < 0)[0]:
+        r = brentq(k, grid[i], grid[i + 1], xtol=1e-15, rtol=1e-15)
+        if abs(k(r)) < 1e-3 * max(abs(ks[i]), abs(ks[i + 1])):     # a pole: |k| grows towards it
+            roots.append(r)
+    if not roots:
+        raise ValueError(f"no contact with k = 0 near eps = {eps_guess!r}")
+    return min(roots, key=lambda r: abs(r - eps_guess))
+
+
 def energy_at_zone_end(c, law, held, value, eps_guess, n=96):
     """E(c) at the held value (load p, approach delta/Delta or delta_work/Delta): the contact eps a root of k = 0
     near eps_guess; the energy by quadrature (Clapeyron's (1/2) int nu e plus int (s0 h - m^2) over the zone and
     -m^2 over the contact, minus p delta under load, plus the pin's own field (gb/4) p^2 at fixed delta_work)."""
     m, s0, theta, gb, ar = law
-    k = lambda e: _constrained(e, c, law, held, value, n)[0]
-    lo, hi = eps_guess * 0.97, min(eps_guess * 1.03, eps_guess + 0.5 * (c - eps_guess))
-    for _ in range(60):
-        if k(lo) * k(hi) < 0:
-            break
-        lo, hi = lo * 0.95, min(hi * 1.05, eps_guess + 0.9 * (c - eps_guess))
-    eps = brentq(k, lo, hi, xtol=1e-15, rtol=1e-15)
+    eps = _root_nearest(lambda e: _constrained(e, c, law, held, value, n)[0], eps_guess, c)
     _, delta, p, u, fc = _constrained(eps, c, law, held, value, n)
     zones = co.zones_of(c)
     fields = co._Fields(fc, delta, u, zones, s0, fc.kernel)
@@ -75,9 +88,10 @@ def energy_at_zone_end(c, law, held, value, eps_guess, n=96):
 
 
 def stable_by_energy(c, law, held, value, eps, rel=2e-3):
-    """Whether E(c) is a minimum at the zone end c (second difference with step rel (c - eps)), and the second
+    """Whether E(c) is a minimum at the zone end c (second difference with step rel min(eps, c - eps): a small
+    contact under a long zone moves by far more than the zone end, dc/d eps ~ (c - eps)/eps), and the second
     difference relative to the energy's scale (small: near a turning point, undecided)."""
-    h = rel * (c - eps)
+    h = rel * min(eps, c - eps)
     E = [energy_at_zone_end(c + s * h, law, held, value, eps)[0] for s in (-1, 0, 1)]
     second = E[0] - 2 * E[1] + E[2]
     return second > 0, second / (h * h)
