@@ -23,7 +23,7 @@ from ..numerics import cohesive_pull_off as _cpo
 from ..numerics import cohesive_scales as _scales
 
 OUTCOMES = ("fold", "touch", "no adherence force", "no zero-load contact")
-MAP_STEPS = (0.3, 1.2)      # continuation steps of a map point (same pull-off to 1e-10 as the default, 1.7x faster)
+MAP_STEPS = (0.3, 1.2)      # continuation steps of a map point (longer than the default: the same pull-off to 1e-10)
 
 
 @dataclass(frozen=True)
