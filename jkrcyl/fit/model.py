@@ -44,9 +44,9 @@ def width_of_a(a, R):
     return 4 * R * np.arctan(np.asarray(a, dtype=float))
 
 
-def contact(R, Delta, w, materials) -> Contact:
-    """The library's contact (validates R, Delta, w)."""
-    return Contact(R=R, Delta=Delta, w=w, materials=materials)
+def contact(R, Delta, w, materials, strength=None) -> Contact:
+    """The library's contact (validates R, Delta, w; strength: the cohesive sigma0 [Pa], None for JKR)."""
+    return Contact(R=R, Delta=Delta, w=w, materials=materials, sigma0=strength)
 
 
 def scaled(materials: Materials, f: float) -> Materials:
