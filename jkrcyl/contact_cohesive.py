@@ -76,7 +76,10 @@ class CohesiveLaw:
         branch turns back (large M at lambda of a few), widths beyond the turn have two states or none, and this
         gives the first root, which is then off the traced branch.  ValueError where the zone is too thin to
         resolve (lambda beyond a few hundred: JKR's state to O(lambda^-2))."""
-        arr = np.asarray(eps, dtype=float)
+        raw = np.asarray(eps)
+        if raw.dtype.kind not in "iuf":
+            raise ValueError(f"eps must be real contact half-angles in (0, pi) [rad], got dtype {raw.dtype}")
+        arr = raw.astype(float)
         flat = np.atleast_1d(arr).ravel()
         if flat.size == 0 or not np.all(np.isfinite(flat)) or np.any((flat <= 0) | (flat >= math.pi)):
             raise ValueError(f"eps must be in (0, pi) [rad], got {flat[~((flat > 0) & (flat < math.pi))][:1]!r}")

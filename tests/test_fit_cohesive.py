@@ -45,6 +45,12 @@ def test_accessor_equals_the_traced_branch(lambda_one):
     assert width.size >= 15
 
 
+@pytest.mark.parametrize("bad", [0.0, -0.1, math.pi, math.nan, [0.5, math.inf], "0.5", True, 1j])
+def test_accessor_rejects_contacts_outside_the_circle(lambda_one, bad):
+    with pytest.raises(ValueError, match=r"eps must be .*in \(0, pi\)"):
+        lambda_one[0].at_contact(bad)
+
+
 def test_noise_free_recovery_of_w_E_sigma0(lambda_one):
     c, width, P = lambda_one
     res = jkrcyl.fit(P=P, width=width, R=R, Delta=DELTA, materials=START, free=("w", "E", "sigma0"),
@@ -146,3 +152,32 @@ def test_cli_sigma0(lambda_one, tmp_path):
     for bad in ("-1", "nan", "0"):
         out = _cli(str(path), "--free", "w,E", "--sigma0", bad)
         assert out.returncode == 2 and len(out.stderr.strip().splitlines()) == 1 and "sigma0" in out.stderr
+
+
+@pytest.mark.slow
+def test_readme_cohesive_fit_as_stated():
+    """README "Fitting measurements", the cohesive example: its block run as the README runs it (jkrcyl, np and the
+    starting pair m0 of the earlier blocks), the numbers in its comments are what the fit returns (to the digits
+    stated: the text cannot go stale), and the truth (w = 0.05, the contact's sigma0) lies inside the intervals."""
+    import pathlib
+    import re
+    text = (pathlib.Path(__file__).resolve().parents[1] / "README.md").read_text()
+    section = text[text.index("## Fitting measurements"):text.index("## Layout")]
+    block = next(b for b in re.findall(r"```python\n(.*?)```", section, re.S) if "res_md" in b)
+    ns = {"jkrcyl": jkrcyl, "np": np, "m0": PAIR}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        exec(compile(block, "README cohesive fit", "exec"), ns)
+    res, pin = ns["res_md"], ns["md_pin"]
+    assert "sigma0 = 77.87 kPa" in block and pin.sigma0 == pytest.approx(77.87e3, abs=5)
+    s0, s_lo, s_hi = map(float, re.search(r"# (\d+) Pa, \((\d+), (\d+)\) Pa at 95 %", block).groups())
+    assert res.values["sigma0"] == pytest.approx(s0, abs=0.5)
+    assert res.intervals["sigma0"] == pytest.approx((s_lo, s_hi), abs=0.5)
+    w, w_lo, w_hi = map(float, re.search(r"# ([\d.]+) J/m\^2, \(([\d.]+), ([\d.]+)\)", block).groups())
+    assert res.values["w"] == pytest.approx(w, abs=0.5e-5)
+    assert res.intervals["w"] == pytest.approx((w_lo, w_hi), abs=0.5e-5)
+    lam, corr = map(float, re.search(r"# ([\d.]+); correlation of w and sigma0 ([-\d.]+)", block).groups())
+    assert res.contact().lambda_ == pytest.approx(lam, abs=5e-4)
+    assert res.correlation[0, 2] == pytest.approx(corr, abs=5e-3)
+    assert res.intervals["w"][0] < 0.05 < res.intervals["w"][1]
+    assert res.intervals["sigma0"][0] < pin.sigma0 < res.intervals["sigma0"][1]

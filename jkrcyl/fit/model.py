@@ -1,4 +1,4 @@
-"""The one adapter between jkrcyl.fit and the model: every call into the library goes through here.
+"""The adapter between jkrcyl.fit and the library's JKR model (the cohesive law's is jkrcyl.fit.cohesive).
 
 The fit needs the load P [N/m] and the work-conjugate approach delta_work [m] of the single bottom arc at given
 contact parameters a = tan(eps/2) (width = 2 R eps), for any material pair: ``Contact.state(a)`` (closed forms
