@@ -25,6 +25,7 @@ from ..contact import Contact
 
 LAMBDA_MIN = 0.01      # Baney-Hui's tested range starts here (tests/test_cohesive_api.py)
 LAMBDA_MAX = 20.0      # the law is JKR's to ~C/lambda^2 ~ 1 % here (C ~ 3.7); a state costs ~5 ms, more beyond
+#                        (a given, fixed sigma0 is used as it is, at any lambda the solver resolves)
 START_LAMBDAS = (0.1, 0.3, 1.0, 3.0)     # starting values of a fitted sigma0 without one given
 WIDTH_STEP = 1e-4      # relative step of the central differences dP/dwidth (states to ~1e-10)
 TURN_POINTS = 64       # states of the traced branch searched for its first turn in eps (check)
@@ -40,12 +41,12 @@ def transition(R, Delta, w, materials, strength):
     return Contact(R, Delta, w, materials, strength).lambda_
 
 
-def loads(R, Delta, w, materials, strength, width, slopes=False):
-    """P [N/m] at the contact widths [m] (strength clipped to the lambda window), and with slopes dP/dwidth,
-    d2P/dwidth2 by central differences (relative step WIDTH_STEP)."""
+def loads(R, Delta, w, materials, strength, width, slopes=False, clip=False):
+    """P [N/m] at the contact widths [m] (with clip, a fitted strength, held in the lambda window), and with slopes
+    dP/dwidth, d2P/dwidth2 by central differences (relative step WIDTH_STEP)."""
     width = np.asarray(width, dtype=float)
     try:
-        lo, hi = window(R, Delta, w, materials)
+        lo, hi = window(R, Delta, w, materials) if clip else (0.0, math.inf)
         c = Contact(R, Delta, w, materials, min(max(strength, lo), hi))
         P = c.at_contact(width / (2 * R)).P
         if not slopes:
@@ -58,13 +59,14 @@ def loads(R, Delta, w, materials, strength, width, slopes=False):
     return P, (up - down) / (2 * h), (up - 2 * P + down) / (h * h)
 
 
-def model_loads(R, inp, width, slopes=False):
-    """P (and slopes) at the widths for the model inputs of jkrcyl.fit.params.Inputs (w per point)."""
+def model_loads(R, inp, width, slopes=False, clip=False):
+    """P (and slopes) at the widths for the model inputs of jkrcyl.fit.params.Inputs (w per point); clip: a fitted
+    sigma0, held in the lambda window."""
     mat = _scaled(inp)
     P, P1, P2 = (np.empty(np.size(width)) for _ in range(3))
     for wv in np.unique(inp.w):
         sel = inp.w == wv
-        out = loads(R, inp.Delta, float(wv), mat, inp.strength, np.asarray(width)[sel], slopes)
+        out = loads(R, inp.Delta, float(wv), mat, inp.strength, np.asarray(width)[sel], slopes, clip)
         for arr, val in zip((P, P1, P2), out):
             arr[sel] = np.nan if val is None else val
     return P, (P1 if slopes else None), (P2 if slopes else None)
@@ -92,9 +94,14 @@ def start(problem, spec, u):
     sigma0 at START_LAMBDAS (or at its given value, clipped into the window)."""
     names, u = spec.names, np.array(u, dtype=float)
     fit_w = "w" in names
-    if "sigma0" not in names and not fit_w:
-        return u
     inp = spec.inputs(u)
+    if "sigma0" not in names and not np.all(np.isfinite(problem.residuals(u))):
+        lam = transition(problem.R, inp.Delta, float(np.max(inp.w)), _scaled(inp), inp.strength)
+        raise ValueError(f"sigma0: the cohesive solver cannot resolve the zone at sigma0 = {inp.strength:.6g} Pa "
+                         f"(lambda = {lam:.4g} at the starting values: the zone is too thin); the law is JKR's "
+                         "there to O(lambda^-2): fit with sigma0=None")
+    if "sigma0" not in names and not fit_w:
+        return [u]
     R, mat = problem.R, _scaled(inp)
     ws = [float(np.max(inp.w))] + ([_w_of_M(problem, inp, M) for M in START_M] if fit_w else [])
     best = {}                                   # the best start per starting w

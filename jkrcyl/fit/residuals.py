@@ -100,7 +100,7 @@ class Problem:
     def _width_model(self, inp, width, slopes=False):
         """(P, dP/dwidth, d2P/dwidth2) at the widths: the superposition parts (JKR) or direct states."""
         if not self.spec.superposes:
-            return cohesive.model_loads(self.R, inp, width, slopes)
+            return cohesive.model_loads(self.R, inp, width, slopes, clip="sigma0" in self.spec.names)
         a = model.a_of_width(width, self.R)
         p = model.parts(self.R, inp.materials, a, slopes=slopes)
         P = p.load(inp.f, inp.Delta, inp.w)
