@@ -99,6 +99,21 @@ def test_noisy_fit_truth_inside_the_intervals(lambda_one, tmp_path):
 
 
 @pytest.mark.slow
+def test_noise_free_recovery_for_an_alpha_star_pair():
+    """A steel pin (E 210 GPa, nu 0.3) in aluminium (70 GPa, 0.33), alpha* != 0: the collocation solver's states of
+    the traced branch at lambda = 1, fitted from moduli 14 % off."""
+    pair = jkrcyl.Materials.from_young(E=70e9, nu=0.33, E_I=210e9, nu_I=0.3)
+    c = jkrcyl.Contact.with_lambda(R=R, Delta=DELTA, w=W, materials=pair, lambda_=1.0)
+    cv = c.curve(regime="sub-critical", n=40)
+    sel = (cv.eps > 0.05) & (cv.eps < 1.0)
+    start = jkrcyl.Materials.from_young(E=60e9, nu=0.33, E_I=180e9, nu_I=0.3)
+    res = jkrcyl.fit(P=cv.P[sel], width=2 * R * cv.eps[sel], R=R, Delta=DELTA, materials=start,
+                     free=("w", "E", "sigma0"), interval=None)
+    assert abs(res.values["w"] / W - 1) < 1e-6 and abs(res.values["sigma0"] / c.sigma0 - 1) < 1e-6
+    assert abs(res.values["E"] * pair.beta / 4 - 1) < 1e-6
+
+
+@pytest.mark.slow
 def test_jkr_limit_at_the_rate_of_the_law():
     """JKR data fitted at a fixed large sigma0 (lambda = 10, 20 at the truth): the fitted w and E* approach the
     JKR fit's like C/lambda^2 (the states' rate); C <= 10 stated from C ~ 3.7 of the load at a fixed contact."""
