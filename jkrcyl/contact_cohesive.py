@@ -12,8 +12,8 @@ from .numerics import cohesive_scales as _scales
 
 Fields = namedtuple("Fields", ["pressure", "gap"])
 ContactStates = namedtuple("ContactStates", ["eps", "c", "P", "delta", "delta_work", "h_pi"])
-ContactStates.__doc__ = """Single-patch states at given contact half-angles (arrays shaped like eps): eps, the zone end c
-[rad] (eps for JKR, pi where the range reaches round), P [N/m], delta, delta_work, h_pi [m]."""
+ContactStates.__doc__ = """Single-patch states at given contact half-angles (arrays shaped like eps): eps, the zone
+end c [rad] (eps for JKR, pi where the range reaches round), P [N/m], delta, delta_work, h_pi [m]."""
 Fields.__doc__ = "pressure(phi) [Pa], compressive positive; gap(phi) [m]; phi [rad] from the bottom of the hole."
 
 

@@ -88,7 +88,8 @@ def cmd_fit(args):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")          # the notes are printed with the table
         res = fitting(**cols, R=R, Delta=Delta, materials=mat, free=free, w=w, offset=offset, control=control,
-                      sigma0=_strength(args.sigma0), loss=args.loss, f_scale=args.f_scale, interval=interval, confidence=args.confidence)
+                      sigma0=_strength(args.sigma0), loss=args.loss, f_scale=args.f_scale, interval=interval,
+                      confidence=args.confidence)
     _write(res, args.format)
     if args.plot:
         res.plot(args.plot)

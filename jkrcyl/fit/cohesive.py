@@ -4,9 +4,10 @@ The superposition surrogate of jkrcyl.fit.model holds for JKR only: with a cohes
 contact is nonlinear in w and Delta (the zone end solves h(c) = h0 = w/sigma0).  So every evaluation asks the
 library for the states at the measured contact half-angles eps = width/(2R): ``Contact(R, Delta, w, materials,
 sigma0).at_contact(eps)`` (the state of the contact branch joined to the touch, ~1e-10; ~10-40 ms for 50 points
-at lambda ~ 1, ~0.1 s at lambda = 10, ~0.3-1 s at lambda = 20).  Parameters the solver refuses (a zone too thin to
-resolve) give NaN residuals: least_squares' trust region steps back from them.  A width picks one state of that branch below the
-branch's first turn in eps; :func:`check` verifies it on the traced branch (``Contact.curve``) at the estimate.
+at lambda ~ 1, ~0.1 s at lambda = 10, ~0.3-1 s at lambda = 20).  Parameters the solver refuses (a zone too thin
+to resolve) give NaN residuals: least_squares' trust region steps back from them.  A width picks one state of
+that branch below the branch's first turn in eps; :func:`check` verifies it on the traced branch
+(``Contact.curve``) at the estimate.
 
 Identifiability.  As lambda -> inf the law tends to JKR (states to C/lambda^2, C ~ 3.7 for the README pin) and
 the data stop determining sigma0; as lambda -> 0 the zone dominates and w and sigma0 trade off.  A fitted sigma0
@@ -89,9 +90,10 @@ def bounds(problem, spec, u):
 
 def start(problem, spec, u):
     """Up to STARTS starting points (best first, from different starting w: at small lambda w and sigma0 trade
-    off along a curved valley with more than one minimum, so the descent is run from each): u with w (if fitted, one for both legs) and sigma0 (if fitted) started at the best of a grid: w at the
-    linear JKR start and at normalised adhesions START_M (the JKR start underestimates w where the zone is wide),
-    sigma0 at START_LAMBDAS (or at its given value, clipped into the window)."""
+    off along a curved valley with more than one minimum, so the descent is run from each): u with w (if fitted,
+    one for both legs) and sigma0 (if fitted) at the best of a grid: w at the linear JKR start and at the
+    normalised adhesions START_M (the JKR start underestimates w where the zone is wide), sigma0 at
+    START_LAMBDAS (or at its given value, clipped into the window)."""
     names, u = spec.names, np.array(u, dtype=float)
     fit_w = "w" in names
     inp = spec.inputs(u)

@@ -17,8 +17,8 @@ class FitResult:
 
     values, intervals, standard_errors: dicts keyed by the free parameter names (``w``, ``w_loading``,
     ``w_unloading`` [J/m^2], ``E`` (contact modulus E* = 4/beta*), ``E_hole``, ``E_pin`` [Pa], ``Delta``,
-    ``offset`` [m], ``sigma0`` [Pa]: the cohesive strength); intervals are (lower, upper) at ``confidence`` by ``interval_method`` (+-inf or 0 where the
-    data do not bound a parameter; see ``notes``).  covariance, correlation: arrays in the order of ``names``.
+    ``offset`` [m], ``sigma0`` [Pa]: the cohesive strength); intervals are (lower, upper) at ``confidence`` by
+    ``interval_method`` (+-inf or 0 where the data do not bound a parameter; see ``notes``).  covariance, correlation: arrays in the order of ``names``.
     residuals: measured minus fitted (P [N/m] for width data; for delta_work data the residual of the
     variable with the error: delta_work [m], P [N/m], or both stacked); normalised_residuals: divided by the
     stated standard deviations (equal to residuals when none was stated).
