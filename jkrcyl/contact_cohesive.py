@@ -7,9 +7,13 @@ import numpy as np
 
 from ._validate import finite_scalar
 from .model.single_patch import solver
+from .numerics import cohesive as _cohesive
 from .numerics import cohesive_scales as _scales
 
 Fields = namedtuple("Fields", ["pressure", "gap"])
+ContactStates = namedtuple("ContactStates", ["eps", "c", "P", "delta", "delta_work", "h_pi"])
+ContactStates.__doc__ = """Single-patch states at given contact half-angles (arrays shaped like eps): eps, the zone
+end c [rad] (eps for JKR, pi where the range reaches round), P [N/m], delta, delta_work, h_pi [m]."""
 Fields.__doc__ = "pressure(phi) [Pa], compressive positive; gap(phi) [m]; phi [rad] from the bottom of the hole."
 
 
@@ -62,3 +66,31 @@ class CohesiveLaw:
                        lambda phi: self.Delta * f.gap(np.asarray(phi, dtype=float) + shift))
 
 
+
+    def at_contact(self, eps):
+        """The bottom single-patch state at each contact half-angle eps [rad] in (0, pi) (scalar or array): a
+        ContactStates of arrays, dimensional.  JKR: state(tan(eps/2)).  The cohesive law: the state of the contact
+        branch joined to the touch, the zone end's first root above the Dugdale estimate
+        (jkrcyl.numerics.cohesive.cohesive_state, ~1e-10), the root that tends to JKR as sigma0 -> inf.  A contact
+        size picks one state of that branch below its first turn in eps (curve().eps along the branch); where the
+        branch turns back (large M at lambda of a few), widths beyond the turn have two states or none, and this
+        gives the first root, which is then off the traced branch.  ValueError where the zone is too thin to
+        resolve (lambda beyond a few hundred: JKR's state to O(lambda^-2))."""
+        raw = np.asarray(eps)
+        if raw.dtype.kind not in "iuf":
+            raise ValueError(f"eps must be real contact half-angles in (0, pi) [rad], got dtype {raw.dtype}")
+        arr = raw.astype(float)
+        flat = np.atleast_1d(arr).ravel()
+        if flat.size == 0 or not np.all(np.isfinite(flat)) or np.any((flat <= 0) | (flat >= math.pi)):
+            raise ValueError(f"eps must be in (0, pi) [rad], got {flat[~((flat > 0) & (flat < math.pi))][:1]!r}")
+        if self.sigma0 is None:
+            s = self.state(np.tan(flat / 2))
+            cols = (flat, flat, s.P, s.delta, s.delta_work, s.h_pi)
+        else:
+            pb = self.problem
+            law = (pb.m, pb.edge.s0, pb.theta, pb.gb, pb.alpha_ratio)
+            st = [_cohesive.cohesive_state(e, *law) for e in flat.tolist()]
+            col = lambda name: np.array([getattr(q, name) for q in st], dtype=float)
+            cols = (flat, col("c"), col("p") * 4 * math.pi * self.Delta / self.beta, col("delta_over_Delta") *
+                    self.Delta, col("delta_work_over_Delta") * self.Delta, col("h_pi_over_Delta") * self.Delta)
+        return ContactStates(*(np.reshape(np.asarray(c, dtype=float), arr.shape) for c in cols))

@@ -2,6 +2,7 @@
 
     jkrcyl fit data.csv --fix R=0.01 --fix Delta=1e-5 --fix E=2.6e9 --fix nu=0.3 --fix E_I=inf --fix nu_I=0.3
     jkrcyl fit docs/fit_example.csv --free w,E --plot fit.png        # setup from the file's '# key=value' lines
+    jkrcyl fit data.csv --free w,E,sigma0 --sigma0 1e5               # the Maugis-Dugdale law, sigma0 fitted
 
 The CSV has a header (P, width or delta_work, optional sigma_P, sigma_width, sigma_delta_work, leg; units in
 brackets allowed) and may carry the setup in comment lines (``# R=0.01 Delta=1e-5 E=2.6e9 nu=0.3 E_I=2.6e9
@@ -87,11 +88,21 @@ def cmd_fit(args):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")          # the notes are printed with the table
         res = fitting(**cols, R=R, Delta=Delta, materials=mat, free=free, w=w, offset=offset, control=control,
-                      loss=args.loss, f_scale=args.f_scale, interval=interval, confidence=args.confidence)
+                      sigma0=_strength(args.sigma0), loss=args.loss, f_scale=args.f_scale, interval=interval,
+                      confidence=args.confidence)
     _write(res, args.format)
     if args.plot:
         res.plot(args.plot)
     return 0
+
+
+def _strength(value):
+    """--sigma0 [Pa]: None (JKR) or a finite number > 0 (ValueError naming sigma0 otherwise)."""
+    if value is None:
+        return None
+    if not (math.isfinite(value) and value > 0):
+        raise ValueError(f"sigma0 must be a finite cohesive strength > 0 [Pa], got {value!r}")
+    return value
 
 
 def _write(res, fmt, out=None):
@@ -130,10 +141,13 @@ def register(sub, number_type=inputs.number_arg):
                    help="abscissa column (default: the one present)")
     p.add_argument("--free", default="w,E",
                    help="comma-separated fitted parameters: w (or w_loading,w_unloading), E (contact modulus, both "
-                        "moduli scaled) or E_hole/E_pin, Delta, offset (default w,E)")
+                        "moduli scaled) or E_hole/E_pin, Delta, offset, sigma0 (cohesive law; default w,E)")
     p.add_argument("--fix", action="append", metavar="NAME=VALUE",
                    help="known quantity: R, Delta, w, offset [SI]; materials E, nu, E_I, nu_I (aliases E_hole, "
                         "nu_hole, E_pin, nu_pin; the starting moduli when E is fitted); repeatable")
+    p.add_argument("--sigma0", type=number_type, default=None, metavar="PA",
+                   help="cohesive strength [Pa] of the Maugis-Dugdale law (fixed, or the start when sigma0 is in "
+                        "--free; without --sigma0 and not fitted: JKR)")
     p.add_argument("--start", action="append", metavar="NAME=VALUE",
                    help="starting value of a fitted w, Delta or offset; repeatable")
     p.add_argument("--control", choices=("load", "grip-work"), default=None,

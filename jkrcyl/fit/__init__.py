@@ -1,9 +1,11 @@
 """Fit the work of adhesion and the moduli to measurements (issue 20): ``jkrcyl.fit(P=..., width=..., ...)``.
 
 The module is callable: ``jkrcyl.fit(...)`` is :func:`jkrcyl.fit.estimate.fit`, and ``jkrcyl.fit.read_csv``,
-``jkrcyl.fit.FitResult`` are here too.  Parts: data (validation, CSV), model (the only adapter to the library's
-model), params (names, coordinates), residuals (width and delta_work data), estimate (least squares,
-checks), uncertainty (Jacobian covariance, profile-likelihood intervals), result (FitResult, table, plot).
+``jkrcyl.fit.FitResult`` are here too.  Parts: data (validation, CSV), model (the adapter to the library's
+JKR model: the superposition surrogate), cohesive (the Maugis-Dugdale law: direct states through
+Contact.at_contact, the lambda window of a fitted sigma0), params (names, coordinates), residuals (width and
+delta_work data), estimate (least squares, checks), uncertainty (Jacobian covariance, profile-likelihood
+intervals), result (FitResult, table, plot).
 """
 import sys
 import types

@@ -9,7 +9,7 @@ from scipy.optimize import least_squares
 
 from .._validate import finite_scalar
 from ..materials import Materials
-from . import model, uncertainty
+from . import cohesive, model, uncertainty
 from .start import start as _start
 from .data import validate
 from .params import Spec
@@ -24,7 +24,7 @@ MAX_RESTARTS = 3
 
 
 def fit(P=None, width=None, delta_work=None, *, R, Delta, materials, free=("w", "E"), w=None, offset=0.0,
-        sigma_P=None, sigma_width=None, sigma_delta_work=None, leg=None, control="load", loss="linear",
+        sigma0=None, sigma_P=None, sigma_width=None, sigma_delta_work=None, leg=None, control="load", loss="linear",
         f_scale=1.0, interval="profile", confidence=0.95) -> FitResult:
     """Fit the work of adhesion, the moduli, the clearance (and an approach offset) to measured loads.
 
@@ -44,6 +44,10 @@ def fit(P=None, width=None, delta_work=None, *, R, Delta, materials, free=("w", 
         (delta_work data: measured = model + offset).
     w, offset : float
         Work of adhesion [J/m^2] (required when not fitted; a starting value otherwise) and approach offset [m].
+    sigma0 : float, optional
+        Cohesive strength [Pa] > 0 of the Maugis-Dugdale law (jkrcyl.Contact(..., sigma0=)); None: JKR.  With
+        'sigma0' in free it is fitted (in log, confined to lambda in [0.01, 30]: jkrcyl.fit.cohesive), started
+        here or, when None, at the best of lambda = 0.3, 1, 3, 10.  Width data only.
     sigma_P, sigma_width, sigma_delta_work : float or array_like, optional
         Standard deviations of the measurements (absolute; they weight the fit and fix the scale of the
         intervals).  None of them: unit weights, the scale estimated from the residuals.
@@ -73,19 +77,25 @@ def fit(P=None, width=None, delta_work=None, *, R, Delta, materials, free=("w", 
     """
     setup = _setup(R, Delta, materials, w, offset, loss, f_scale, interval, confidence)
     R, Delta, w, offset, f_scale, confidence = setup
+    strength = _strength(sigma0)
     data = validate(P, width, delta_work, sigma_P, sigma_width, sigma_delta_work, leg, R=R)
-    spec = Spec(free, data, R, Delta, materials, w, offset)
+    spec = Spec(free, data, R, Delta, materials, w, offset, strength)
     problem = Problem(data, spec, R, control)
     _check_counts(problem, spec)
-    u = _start(problem, spec)
-    for _ in range(MAX_RESTARTS):
-        res, scale = _solve(problem, u, loss, f_scale)
+    starts = _start(problem, spec)
+    for attempt in range(MAX_RESTARTS):
+        res, scale = _best(problem, starts if attempt == 0 else [u], loss, f_scale)
         try:
             return _finish(problem, spec, res, scale, loss, f_scale, interval, confidence)
         except uncertainty.BetterOptimum as better:
             u = better.u
     raise ValueError("the fit keeps finding better optima while profiling: the least-squares surface is "
                      "multimodal here; give better starting values (w, Delta, materials)")
+
+
+def _strength(value):
+    """The cohesive sigma0 [Pa]: None (JKR) or finite > 0 (ValueError naming sigma0)."""
+    return None if value is None else finite_scalar("sigma0", value, low=0.0, low_open=True)
 
 
 def _setup(R, Delta, materials, w, offset, loss, f_scale, interval, confidence):
@@ -123,7 +133,8 @@ def _check_counts(problem, spec):
 def _solve(problem, u0, loss, f_scale):
     """least_squares from u0; with a robust loss and no stated errors the residuals are first scaled by a robust
     estimate of their spread (1.4826 MAD of a linear fit), so f_scale is in units of it."""
-    opts = dict(method="trf", x_scale="jac", xtol=1e-12, ftol=1e-12, gtol=1e-12, max_nfev=2000)
+    opts = dict(method="trf", x_scale="jac", xtol=1e-12, ftol=1e-12, gtol=1e-12, max_nfev=2000,
+                diff_step=problem.diff_step)
     res = least_squares(problem.residuals, u0, loss="linear", **opts)
     scale = 1.0
     if loss != "linear":
@@ -134,6 +145,12 @@ def _solve(problem, u0, loss, f_scale):
         raise ValueError(f"the least-squares fit did not converge ({res.message}); check the data and the "
                          "starting values")
     return res, scale
+
+
+def _best(problem, starts, loss, f_scale):
+    """The lowest-cost descent of those from the starting points."""
+    fits = [_solve(problem, u0, loss, f_scale) for u0 in starts]
+    return min(fits, key=lambda rs: rs[0].cost)
 
 
 def _identifiable(jac, names):
@@ -153,6 +170,7 @@ def _identifiable(jac, names):
 
 def _finish(problem, spec, res, scale, loss, f_scale, interval, confidence):
     names, u = spec.names, res.x
+    _at_edge(problem, spec, res, scale, loss, f_scale, confidence)
     _identifiable(res.jac, names)
     dof = problem.n_residuals - len(names) - problem.nuisance
     S = 2.0 * res.cost
@@ -164,11 +182,15 @@ def _finish(problem, spec, res, scale, loss, f_scale, interval, confidence):
     se = {n: float(math.sqrt(max(cov[i, i], 0.0))) for i, n in enumerate(names)}
     se_u = np.sqrt(np.maximum(np.diag(cov_u), 0.0))
     notes = []
-    _check_pull_off(problem, spec, u, cov_u, s2)
+    if spec.superposes:
+        _check_pull_off(problem, spec, u, cov_u, s2)
+    else:
+        cohesive.check(problem, spec, u, cov_u, s2, BEYOND_SIGMAS)
     intervals, method = {}, "none"
     q = uncertainty.threshold(confidence, dof, problem.sigma_known)
     if interval == "profile":
-        prof = uncertainty.Profiler(problem, spec, u, S, s2, q, loss, f_scale * scale, se_u)
+        prof = uncertainty.Profiler(problem, spec, u, S, s2, q, loss, f_scale * scale, se_u,
+                                    cohesive.bounds(problem, spec, u))
         method = f"profile likelihood ({'chi2(1)' if problem.sigma_known else f'F(1, {dof})'} threshold {q:.4g})"
         for j, (lo, hi) in enumerate(prof.intervals()):
             intervals[names[j]] = _to_values(spec, u, j, lo, hi)
@@ -182,6 +204,7 @@ def _finish(problem, spec, res, scale, loss, f_scale, interval, confidence):
             if v in (0.0, math.inf, -math.inf):
                 notes.append(f"the data do not bound {n} {side} at {100 * confidence:g} % (profile stays under "
                              "the threshold): the interval is open there")
+    notes += cohesive.window_notes(intervals, confidence)
     corr = uncertainty.correlation(cov)
     for i in range(len(names)):
         for j in range(i + 1, len(names)):
@@ -202,6 +225,25 @@ def _finish(problem, spec, res, scale, loss, f_scale, interval, confidence):
                      n=problem.data.n, materials=spec.fitted_materials(u), Delta=values["Delta"], R=problem.R,
                      nfev=res.nfev, notes=notes, fixed={k: v for k, v in values.items() if k not in names},
                      _problem=problem, _u=u)
+
+
+def _at_edge(problem, spec, res, scale, loss, f_scale, confidence):
+    """A fitted sigma0 at an edge of its lambda window (jkrcyl.fit.cohesive): ValueError with the one-sided
+    profile-likelihood bound."""
+    side = cohesive.edge(problem, spec, res.x)
+    if side is None:
+        return
+    j = spec.names.index("sigma0")
+    dof = problem.n_residuals - len(spec.names) - problem.nuisance
+    S = 2.0 * res.cost
+    s2 = 1.0 if problem.sigma_known else S / dof
+    q = uncertainty.threshold(2 * confidence - 1, dof, problem.sigma_known)      # one-sided
+    se = np.full(res.x.size, 0.1)
+    prof = uncertainty.Profiler(problem, spec, res.x, S, s2, q, loss, f_scale * scale, se,
+                                cohesive.bounds(problem, spec, res.x))
+    t = prof.side(j, -1 if side == "above" else +1)
+    bound = math.exp(t) if math.isfinite(t) else (0.0 if side == "above" else math.inf)
+    raise ValueError(cohesive.edge_message(side, bound, confidence))
 
 
 def _to_values(spec, u, j, lo, hi):

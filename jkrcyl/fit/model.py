@@ -1,4 +1,4 @@
-"""The one adapter between jkrcyl.fit and the model: every call into the library goes through here.
+"""The adapter between jkrcyl.fit and the library's JKR model (the cohesive law's is jkrcyl.fit.cohesive).
 
 The fit needs the load P [N/m] and the work-conjugate approach delta_work [m] of the single bottom arc at given
 contact parameters a = tan(eps/2) (width = 2 R eps), for any material pair: ``Contact.state(a)`` (closed forms
@@ -44,9 +44,9 @@ def width_of_a(a, R):
     return 4 * R * np.arctan(np.asarray(a, dtype=float))
 
 
-def contact(R, Delta, w, materials) -> Contact:
-    """The library's contact (validates R, Delta, w)."""
-    return Contact(R=R, Delta=Delta, w=w, materials=materials)
+def contact(R, Delta, w, materials, strength=None) -> Contact:
+    """The library's contact (validates R, Delta, w; strength: the cohesive sigma0 [Pa], None for JKR)."""
+    return Contact(R=R, Delta=Delta, w=w, materials=materials, sigma0=strength)
 
 
 def scaled(materials: Materials, f: float) -> Materials:

@@ -18,6 +18,7 @@ DESCRIPTION = {
     "E_pin": ("Pa", "Young's modulus of the pin (its nu kept)"),
     "Delta": ("m", "clearance R - R_D"),
     "offset": ("m", "approach offset: measured delta_work = model delta_work + offset"),
+    "sigma0": ("Pa", "cohesive strength of the Maugis-Dugdale law (h0 = w/sigma0)"),
 }
 ORDER = tuple(DESCRIPTION)
 LINEAR = ("offset",)          # every other parameter is positive and fitted as its logarithm
@@ -32,6 +33,7 @@ class Inputs:
     Delta: float               # [m]
     w: np.ndarray              # [J/m^2] per point
     offset: float              # [m]
+    strength: float = None     # [Pa] the cohesive sigma0 (None: JKR)
 
 
 class Spec:
@@ -44,11 +46,15 @@ class Spec:
     data : jkrcyl.fit.data.Data
     R : float
         Hole radius [m].
-    Delta, materials, w, offset
-        Fixed values, or the starting values of free parameters (w may be None when fitted).
+    Delta, materials, w, offset, strength
+        Fixed values, or the starting values of free parameters (w may be None when fitted; strength: the
+        cohesive sigma0 [Pa], None for JKR or, when 'sigma0' is fitted, a start chosen by jkrcyl.fit.cohesive).
+
+    ``superposes``: whether the JKR superposition surrogate of jkrcyl.fit.model holds (no 'sigma0' fitted or
+    given); otherwise every state is evaluated directly (jkrcyl.fit.cohesive).
     """
 
-    def __init__(self, free, data, R, Delta, materials, w, offset):
+    def __init__(self, free, data, R, Delta, materials, w, offset, strength=None):
         if isinstance(free, str):
             free = (free,)
         free = tuple(free)
@@ -70,6 +76,11 @@ class Spec:
                                      "modulus cannot be fitted (give a finite starting modulus)")
                 self.fixed[f"E_{body}"] = E
         self.fixed["w"] = w
+        self.fixed["sigma0"] = strength
+        self.superposes = strength is None and "sigma0" not in self.names
+        if not self.superposes and data.kind != "width":
+            raise ValueError("sigma0: the cohesive law is fitted to load against contact width only (delta_work "
+                             "data: fit the JKR law, sigma0=None)")
         if w is not None:
             self.fixed["w_loading"] = self.fixed["w_unloading"] = w
         if w is None and not any(n.startswith("w") for n in self.names):
@@ -136,7 +147,7 @@ class Spec:
             w = np.full(self.n, v["w"] if v["w"] is not None else v["w_loading"])
         else:
             w = np.where(self.data.unloading, v["w_unloading"], v["w_loading"])
-        return Inputs(materials=mat, f=f, Delta=v["Delta"], w=w, offset=v["offset"])
+        return Inputs(materials=mat, f=f, Delta=v["Delta"], w=w, offset=v["offset"], strength=v["sigma0"])
 
     def fitted_materials(self, u):
         """The fitted pair (the factor f applied)."""

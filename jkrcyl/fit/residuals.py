@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import model
+from . import cohesive, model
 
 CONTROLS = ("load", "grip-work")
 EXACT = 1e-3          # standard deviation of an 'exact' variable relative to the other one's (see above)
@@ -30,6 +30,9 @@ class Problem:
         if control not in CONTROLS:
             raise ValueError(f"control must be one of {', '.join(CONTROLS)}, got {control!r}")
         self.data, self.spec, self.R, self.control = data, spec, R, control
+        # least_squares' relative finite-difference step: the direct states (no superposition) carry ~1e-10
+        # rounding, so the default (~1e-8) step would give Jacobian errors of ~1 %; None keeps the default
+        self.diff_step = None if spec.superposes else 1e-6
         self.sigma_known = data.sigma_P is not None or data.sigma_x is not None
         self.a = model.a_of_width(data.x, R) if data.kind == "width" else None
         if data.kind == "width":
@@ -83,26 +86,38 @@ class Problem:
     # --- load against width -------------------------------------------------------------------------------
     def _width(self, inp, normalised=True):
         d = self.data
-        p = model.parts(self.R, inp.materials, self.a, slopes=d.sigma_x is not None)
-        r = d.P - p.load(inp.f, inp.Delta, inp.w)
+        P, Px, Pxx = self._width_model(inp, d.x, slopes=normalised and d.sigma_x is not None)
+        r = d.P - P
         if not normalised:
             return r
         if not self.sigma_known:
             return r / self.nominal
         var = np.zeros(d.n) if d.sigma_P is None else d.sigma_P ** 2
         if d.sigma_x is not None:
-            dadx = (1 + self.a ** 2) / (4 * self.R)              # a = tan(x/(4R))
-            d2adx2 = 2 * self.a * dadx / (4 * self.R)
-            P1, P2 = p.load(inp.f, inp.Delta, inp.w, 1), p.load(inp.f, inp.Delta, inp.w, 2)
-            Px, Pxx = P1 * dadx, P2 * dadx ** 2 + P1 * d2adx2
             var = var + (Px * d.sigma_x) ** 2 + 0.5 * (Pxx * d.sigma_x ** 2) ** 2
         return r / np.sqrt(var)
 
-    def curve_width(self, u, width):
-        """Model load [N/m] at contact widths [m] (one w: the loading leg's)."""
-        inp = self.spec.inputs(u)
+    def _width_model(self, inp, width, slopes=False):
+        """(P, dP/dwidth, d2P/dwidth2) at the widths: the superposition parts (JKR) or direct states."""
+        if not self.spec.superposes:
+            return cohesive.model_loads(self.R, inp, width, slopes, clip="sigma0" in self.spec.names)
         a = model.a_of_width(width, self.R)
-        return model.parts(self.R, inp.materials, a).load(inp.f, inp.Delta, inp.w[0] if np.ndim(inp.w) else inp.w)
+        p = model.parts(self.R, inp.materials, a, slopes=slopes)
+        P = p.load(inp.f, inp.Delta, inp.w)
+        if not slopes:
+            return P, None, None
+        dadx = (1 + a ** 2) / (4 * self.R)              # a = tan(x/(4R))
+        d2adx2 = 2 * a * dadx / (4 * self.R)
+        P1, P2 = p.load(inp.f, inp.Delta, inp.w, 1), p.load(inp.f, inp.Delta, inp.w, 2)
+        return P, P1 * dadx, P2 * dadx ** 2 + P1 * d2adx2
+
+    def curve_width(self, u, width, w=None):
+        """Model load [N/m] at contact widths [m] (w: the loading leg's unless given)."""
+        inp = self.spec.inputs(u)
+        wv = float(inp.w[0] if w is None else w)
+        one = type(inp)(materials=inp.materials, f=inp.f, Delta=inp.Delta, w=np.full(np.size(width), wv),
+                        offset=inp.offset, strength=inp.strength)
+        return self._width_model(one, np.asarray(width, dtype=float))[0]
 
     # --- load against approach --------------------------------------------------------------------------------
     def states(self, u):

@@ -17,8 +17,8 @@ class FitResult:
 
     values, intervals, standard_errors: dicts keyed by the free parameter names (``w``, ``w_loading``,
     ``w_unloading`` [J/m^2], ``E`` (contact modulus E* = 4/beta*), ``E_hole``, ``E_pin`` [Pa], ``Delta``,
-    ``offset`` [m]); intervals are (lower, upper) at ``confidence`` by ``interval_method`` (+-inf or 0 where the
-    data do not bound a parameter; see ``notes``).  covariance, correlation: arrays in the order of ``names``.
+    ``offset`` [m], ``sigma0`` [Pa]: the cohesive strength); intervals are (lower, upper) at ``confidence`` by
+    ``interval_method`` (+-inf or 0 where the data do not bound a parameter; see ``notes``).  covariance, correlation: arrays in the order of ``names``.
     residuals: measured minus fitted (P [N/m] for width data; for delta_work data the residual of the
     variable with the error: delta_work [m], P [N/m], or both stacked); normalised_residuals: divided by the
     stated standard deviations (equal to residuals when none was stated).
@@ -60,7 +60,7 @@ class FitResult:
     def contact(self, leg="loading"):
         """The fitted jkrcyl.Contact (w of the leg when the legs have their own)."""
         w = self.values.get(f"w_{leg}", self.values.get("w", self.fixed.get("w")))
-        return model.contact(self.R, self.Delta, w, self.materials)
+        return model.contact(self.R, self.Delta, w, self.materials, self.values.get("sigma0", self.fixed.get("sigma0")))
 
     def table(self):
         """The result as text: one row per parameter (value, standard error, interval, unit), then the fit."""
@@ -73,6 +73,9 @@ class FitResult:
         mod = self.moduli
         rows.append(f"fitted pair: E_hole = {mod['E_hole']:.6g} Pa, E_pin = {mod['E_pin']:.6g} Pa, "
                     f"E* = {mod['E_star']:.6g} Pa; Delta = {self.Delta:.6g} m, R = {self.R:.6g} m")
+        law = self.contact().lambda_
+        rows += [] if law is None else [f"Maugis-Dugdale law: lambda = {law:.6g}, h0 = w/sigma0 = "
+                                        f"{self.contact().h0:.6g} m"]
         unit = "N/m" if self.kind == "width" or self._problem.mode != "load-exact" else "m"
         scale = "errors as stated" if self._problem.sigma_known else f"residual scale {self.sigma:.4g} {unit}"
         rows.append(f"{self.n} points ({self.kind}), control {self.control}, loss {self.loss}, "
@@ -135,8 +138,7 @@ def _curve(problem, u, sel, n):
         lo, hi = d.x[sel].min(), d.x[sel].max()
         pad = 0.05 * (hi - lo)
         xs = np.linspace(max(lo - pad, lo / 2), min(hi + pad, 2 * math.pi * R * 0.999), n)
-        p = model.parts(R, inp.materials, model.a_of_width(xs, R))
-        return xs, p.load(inp.f, inp.Delta, w)
+        return xs, problem.curve_width(u, xs, w)
     br = model.branch(R, inp.materials)
     seg = model.segment(R, inp.materials, inp.f, inp.Delta, w, "load" if problem.control == "load" else "approach")
     a_pts = problem.states(u)[sel]

@@ -5,17 +5,21 @@ import math
 
 import numpy as np
 
-from . import model
+from . import cohesive, model
 
 
 def start(problem, spec):
-    """Internal coordinates to begin the least-squares descent from."""
+    """Internal coordinates to begin the least-squares descent from: a list of one (several for the cohesive law:
+    jkrcyl.fit.cohesive.start)."""
     values = dict(spec.fixed)
     if problem.data.kind == "width":
         values.update(_linear_start(problem, spec))
-        return _grid_refine(problem, spec, spec.to_internal(values))
+        if not spec.superposes:              # each evaluation is a set of direct states: no grid
+            values["sigma0"] = values["sigma0"] or 1.0     # placeholder, set by jkrcyl.fit.cohesive.start
+            return cohesive.start(problem, spec, spec.to_internal(values))
+        return [_grid_refine(problem, spec, spec.to_internal(values))]
     values.update(_scan_start(problem, spec))
-    return spec.to_internal(values)
+    return [spec.to_internal(values)]
 
 
 REFINE = np.linspace(-0.6, 0.6, 13)     # log-offsets of the starting grid around the linear start (x 0.55 .. 1.8)

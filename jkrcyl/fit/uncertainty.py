@@ -57,11 +57,14 @@ def threshold(confidence, dof, sigma_known):
 class Profiler:
     """Profile intervals of every free parameter of a fitted problem.
 
-    cost(u) = 2 x the least_squares cost (= S for the linear loss); s2: the variance scale; q: the threshold."""
+    cost(u) = 2 x the least_squares cost (= S for the linear loss); s2: the variance scale; q: the threshold;
+    edges: {index: (lo, hi)} of parameters confined to a window (jkrcyl.fit.cohesive: sigma0 within a lambda
+    range): the profile is evaluated at the edge last and the side is open (+-inf) if it stays below q there."""
 
-    def __init__(self, problem, spec, u_hat, S_hat, s2, q, loss, f_scale, se_u):
+    def __init__(self, problem, spec, u_hat, S_hat, s2, q, loss, f_scale, se_u, edges=None):
         self.problem, self.spec, self.u_hat, self.S_hat = problem, spec, np.asarray(u_hat, float), S_hat
         self.s2, self.q, self.loss, self.f_scale, self.se_u = s2, q, loss, f_scale, se_u
+        self.edges = edges or {}
 
     def S(self, r):
         if self.loss == "linear":
@@ -84,7 +87,8 @@ class Profiler:
             u = full([])
             return (self.S(self.problem.residuals(u)) - self.S_hat) / self.s2, warm
         res = least_squares(lambda v: self.problem.residuals(full(v)), warm, loss=self.loss, f_scale=self.f_scale,
-                            x_scale="jac", method="trf", xtol=1e-12, ftol=1e-12, gtol=1e-12)
+                            x_scale="jac", method="trf", xtol=1e-12, ftol=1e-12, gtol=1e-12,
+                            diff_step=getattr(self.problem, "diff_step", None))
         S = self.S(res.fun)
         if S < self.S_hat - 1e-7 * max(self.S_hat, self.s2):
             raise BetterOptimum(full(res.x))
@@ -99,11 +103,18 @@ class Profiler:
         step = self.se_u[j] if np.isfinite(self.se_u[j]) and self.se_u[j] > 0 else 0.1
         step = min(step, limit / 4)
         t_prev, warm_prev = t0, others0
+        wall = self.edges.get(j, (-math.inf, math.inf))[sign > 0]
+        if (t0 - wall) * sign >= 0:
+            return sign * math.inf
         for _ in range(MAX_DOUBLINGS):
             t = t0 + sign * step
-            if abs(t - t0) > limit:
+            if (t - wall) * sign >= 0:
+                t = wall
+            elif abs(t - t0) > limit:
                 return sign * math.inf
             e, warm = self.excess(j, t, warm_prev)
+            if t == wall and e < self.q:
+                return sign * math.inf
             if e >= self.q:
                 cache = {}
 
