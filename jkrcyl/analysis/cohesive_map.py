@@ -22,7 +22,7 @@ from ..model.problem import Problem
 from ..numerics import cohesive_pull_off as _cpo
 from ..numerics import cohesive_scales as _scales
 
-OUTCOMES = ("fold", "touch", "no adherence force", "no zero-load contact")
+OUTCOMES = ("fold", "touch", "no adherence force", "no zero-load contact", "not modelled (jump of a round zone)")
 MAP_STEPS = (0.3, 1.2)      # continuation steps of a map point (longer than the default: the same pull-off to 1e-10)
 
 
@@ -47,7 +47,8 @@ def _point(lam, M, theta, gb, ar):
     r = _cpo.pull_off_load(pb.m, s0, theta, gb, ar, steps=MAP_STEPS, xtol=1e-6, zero_load=False)
     if r.p is not None:
         return r.p / pb.scale, OUTCOMES.index(r.kind)
-    return math.nan, 2 if "no adherence" in r.reason else 3
+    kind = 4 if r.reason.startswith("not modelled") else 2 if "no adherence" in r.reason else 3
+    return math.nan, kind
 
 
 def _row(lam, Ms, theta, gb, ar):

@@ -106,8 +106,9 @@ def cycle(pb: Problem, un: _fw.Units, control: str, hi: float, lo: float, n: int
     run = _Run(pb, un, control)
     sep, to, kind = _path.first_contact(pb, un, control)
     run.add(sep, 0)
-    if to is None:
-        return _finish(run, n, None, _path.no_first_contact_reason(pb), delta_work_of, (lo, hi))
+    if to is None or _path.unmodelled(pb):
+        why = _path.unmodelled(pb) or _path.no_first_contact_reason(pb)
+        return _finish(run, n, None, why, delta_work_of, (lo, hi))
     run.jumps.append(Jump(kind, 0, sep, to))
     run.add(to, 0)
     s, note = run.leg(to, hi, 0)

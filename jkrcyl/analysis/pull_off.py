@@ -29,6 +29,8 @@ def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
     """Detachment along the quasi-static path (module docstring) under ``control``."""
     if pb.M == 0:
         return PullOff(control, None, None, None, None, "no adhesion (w = 0): the contact vanishes at P = 0")
+    if solver(pb).unmodelled:
+        return PullOff(control, None, None, None, None, solver(pb).unmodelled)
     if not solver(pb).adheres:
         return PullOff(control, None, None, None, None, solver(pb).no_adherence_reason)
     start, event, s = _path.pull_path(pb, un, control)

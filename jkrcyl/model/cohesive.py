@@ -20,7 +20,8 @@ jkrcyl.model.stability with the derivatives D_X of jkrcyl.numerics.cohesive_bran
 dE/dc = 2 (s0 h(c) - m^2); the contactless pin is a saddle under load, stable under grip where the opening at its
 zone end grows with the zone).  The total potential (elastic + Dugdale interface energy - w over the contact) has
 dE = p d(delta/Delta) along the branches.  Not modelled: two patches and full contact (:attr:`models_confined`),
-the super-critical side of the receding limit, top-zone bridges (jkrcyl.numerics.cohesive_zones finds them).
+the super-critical side of the receding limit, top-zone bridges (jkrcyl.numerics.cohesive_zones finds them),
+a round zone that stops reaching round by a jump (a top bridge or an S-shape: :attr:`unmodelled` says so).
 """
 from __future__ import annotations
 
@@ -31,6 +32,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..numerics import cohesive_branch as _cb
+from ..numerics import cohesive_pull_off as _cpo
 from ..numerics import cohesive_zones as _cz
 from ..numerics import roots as _roots
 from .patch import SinglePatch, Slice
@@ -243,8 +245,22 @@ class Cohesive(SinglePatch):
 
     @property
     def no_adherence_reason(self):
-        return (f"no adherence force: every state of the cohesive law pushes (P >= 0) -- its range h0 = "
-                f"{self.law.h0:.6g} Delta reaches round the hole (a uniform traction has no resultant)")
+        if self.law.h0 >= 2.0:
+            return (f"no adherence force: every state of the cohesive law pushes (P >= 0) -- its range h0 = "
+                    f"{self.law.h0:.6g} Delta reaches round the hole (a uniform traction has no resultant)")
+        s = self.states(self.grid("sub-critical", self.dense_points))
+        return ("no adherence force on one patch: every feasible single-patch state pushes (P >= 0)" +
+                ("; those that pull overlap the top of the hole (h(pi) < 0), where two patches or full contact, "
+                 "not modelled for the law, take over" if np.any(s.p < 0) else ""))
+
+    @functools.cached_property
+    def unmodelled(self):
+        """Why the analyses cannot follow the branch ('' when they can): its zone stops reaching round by a jump
+        (jkrcyl.numerics.cohesive_branch.top_opens: a top bridge or an S-shaped branch, not traced)."""
+        if self._trace[2] != "all":
+            return ""
+        opens = _cb.top_opens(self.law)
+        return "" if opens is None else _cpo.jump_reason(opens)
 
     def floating(self):
         """(lo, hi) of delta/Delta of the pin floating in a range that reaches round (p = 0), or None."""

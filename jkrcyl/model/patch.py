@@ -97,6 +97,7 @@ class SinglePatch:
 
     adheres = True               # some state pulls (P < 0) where M > 0
     no_adherence_reason = ""
+    unmodelled = ""              # why the analyses cannot follow the branch ('' when they can)
 
     @property
     def models_confined(self) -> bool:

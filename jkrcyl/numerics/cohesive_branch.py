@@ -38,6 +38,8 @@ P_CAP = 20.0            # the branch is traced up to p = P_CAP m^(4/3) (20 times
 FD_REL = 2e-4           # finite-difference steps in eps and c, relative to min(eps, c - eps)
 GAP_POINTS = 96         # Gauss-Legendre points of int h over the zone (the interface energy)
 ALL_POINTS = 160        # eps samples of a branch whose zone reaches round at the touch end
+ROUND_SCAN = 10         # contacts scanned for a zone that stops reaching round (top_opens)
+ROUND_JUMP = 1e-2       # a zone end this far below pi just past the opening is a jump (a continuous one -> pi)
 _XG, _WG = np.polynomial.legendre.leggauss(GAP_POINTS)
 
 Point = namedtuple("Point", "eps c delta p B dp_dt ddn_dt D_p D_dn h_pi potential feasible zones fields")
@@ -90,6 +92,38 @@ def affine(law, eps, c):
 
 def _at(pair, delta):
     return pair[0] + delta * pair[1]
+
+
+def top_opens(law, points=ROUND_SCAN):
+    """For a branch whose zone reaches round at its touch end (zones 'all' at eps_lo): (eps, c, kind) where the
+    first zone-end root of jkrcyl.numerics.cohesive.cohesive_state stops short of the top with a jump to c
+    (pi - c > ROUND_JUMP just past eps, and as large with the opening bracketed 1e4 times closer), or None when
+    the zone stays round or opens continuously (c -> pi, as a square root).  Two kinds of jump, neither traced:
+    'top bridge' -- the round zone's gap reaches h0 beside the top first (h(pi) ~ h0 just before), the states
+    beyond keep a zone at the top apart from the bottom one; 'S-shaped branch' -- h(pi) is still well below h0,
+    the round-zone states go on and the first root belongs to a family met at a fold in eps.  A scan of
+    ``points`` contacts (geometric in eps up to eps_hi: the top gap grows with the contact), the first short one
+    bisected to 1e-10 in log eps."""
+    c_at = lambda e: _co.cohesive_state(e, law.m, law.s0, law.theta, law.gb, law.ar, n=law.nodes(e)).c
+    eps = np.geomspace(law.eps_lo, law.eps_hi, points)
+    if c_at(eps[0]) < math.pi:
+        return None
+    short = [k for k in range(1, points) if c_at(eps[k]) < math.pi]
+    if not short:
+        return None
+    lo, hi = math.log(eps[short[0] - 1]), math.log(eps[short[0]])
+    opening = []                 # pi - c just past the opening, bracketed to 1e-6 and to 1e-10 in log eps
+    for tol in (1e-6, 1e-10):
+        while hi - lo > tol:
+            mid = 0.5 * (lo + hi)
+            lo, hi = (lo, mid) if c_at(math.exp(mid)) < math.pi else (mid, hi)
+        opening.append(math.pi - c_at(math.exp(hi)))
+    # a continuous opening (c ~ pi - k sqrt(eps - eps_open)) shrinks 10x; a jump stays
+    if opening[1] <= max(ROUND_JUMP, 0.5 * opening[0]):
+        return None
+    below = _co.cohesive_state(math.exp(lo), law.m, law.s0, law.theta, law.gb, law.ar, n=law.nodes(math.exp(lo)))
+    kind = "top bridge" if below.h_pi_over_Delta > (1 - 1e-2) * law.h0 else "S-shaped branch"
+    return math.exp(hi), math.pi - opening[1], kind
 
 
 def trace(law):

@@ -34,6 +34,17 @@ the state there (CohesiveState), the zero-load state (CohesiveState or None)."""
 START = 1e-3                # the trace starts at eps = START times the half-plane scale 2 m^(2/3) (at most 1e-3)
 
 
+def jump_reason(jump):
+    """Why a branch whose zone stops reaching round by a jump (jkrcyl.numerics.cohesive_branch.top_opens:
+    (eps, c, kind)) has no answer here."""
+    eps, c, kind = jump
+    return (f"not modelled: the zone reaches round the hole at small contacts and its zone end jumps to "
+            f"c = {c:.6g} rad at eps = {eps:.6g} rad -- a {kind} "
+            + ("(a zone at the top apart from the bottom one)" if kind == "top bridge" else
+               "(the round-zone states turn back in the contact size before joining the states that tend to JKR)")
+            + ", not traced by the solver")
+
+
 def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=1e-10, zero_load=True):
     """The load-control pull-off from the zero-load state (module docstring): m = M vartheta > 0, s0 > 0.
     steps: the first and the largest continuation step in (log eps, log(c - eps)) (the minimum is refined by
@@ -58,6 +69,9 @@ def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=
 
     start = _co.cohesive_state(eps_lo, m, s0, theta, gb, ar, n=nodes(eps_lo))
     if start.zones == "all":
+        opens = _cb.top_opens(_cb.Law(m, s0, theta, gb, ar))
+        if opens is not None:
+            return none(jump_reason(opens))
         return none("no adherence force: the zone reaches round (p >= 0)" if start.p >= 0 else
                     "the contact branch starts in a zone reaching round")
 

@@ -8,8 +8,11 @@ JKR and Baney-Hui asymptotes, and the map of the pull-off over (lambda, M) showi
   the small-M asymptote; lambda from the lead's convention (R_eff = R R_D/Delta, Delta/R -> 0).
 * Map: the pull-off over JKR's, P*/P*_JKR, in colour where the pin detaches (pink where JKR's does not: its
   fold is infeasible or grows into full contact); grey where there is no adherence force (the range reaches
-  round: h0 > 2 Delta less the uniform pull); light blue where the contact branch has no zero-load contact (the pin
-  is drawn in: no detachment path from P = 0); the black line: where the pull-off vanishes.
+  round: h0 > 2 Delta less the uniform pull); light blue where the sub-critical contact branch has no zero-load
+  contact (no detachment path from P = 0 on it; JKR's is super-critical there or missing, and the super-critical
+  side is not modelled for the law); sand where the zone stops reaching round by a jump (a top bridge or an
+  S-shaped branch, not traced: jkrcyl.numerics.cohesive_branch.top_opens); the black line: where the pull-off
+  vanishes.
 """
 from __future__ import annotations
 
@@ -71,13 +74,16 @@ def map_figure(pm: _map.PullOffMap):
     ax.pcolormesh(X, Y, np.ma.masked_invalid(only), shading="nearest", cmap=ListedColormap(["#f4a6a6"]))
     drawn = np.where(pm.outcome == 3, 1.0, np.nan)
     ax.pcolormesh(X, Y, np.ma.masked_invalid(drawn), shading="nearest", cmap=ListedColormap(["#bcd4ea"]))
+    s_shaped = np.where(pm.outcome == 4, 1.0, np.nan)
+    ax.pcolormesh(X, Y, np.ma.masked_invalid(s_shaped), shading="nearest", cmap=ListedColormap(["#e8d8a8"]))
     ax.contour(X, Y, np.isfinite(pm.P_star).astype(float), levels=[0.5], colors="k", linewidths=1.2)
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("transition parameter $\\lambda$")
     ax.set_ylabel("$M$" if not math.isinf(pm.theta) else "$M_R^*$")
     ax.plot([], [], "s", color="0.75", label="no adherence force (range reaches round)")
-    ax.plot([], [], "s", color="#bcd4ea", label="no zero-load contact (pin drawn in)")
+    ax.plot([], [], "s", color="#bcd4ea", label="no zero-load contact on the sub-critical branch")
+    ax.plot([], [], "s", color="#e8d8a8", label="not modelled: a round zone stops reaching round by a jump")
     ax.plot([], [], "s", color="#f4a6a6", label="detaches; JKR does not (its fold is confined)")
     ax.plot([], [], "k-", lw=1.2, label="where the pull-off vanishes")
     ax.legend(fontsize=8, loc="lower right")
