@@ -257,7 +257,7 @@ class Cohesive(SinglePatch):
     def unmodelled(self):
         """Why the analyses cannot follow the branch ('' when they can): its zone stops reaching round by a jump
         (jkrcyl.numerics.cohesive_branch.top_opens: a top bridge or an S-shaped branch, not traced)."""
-        if self._trace[2] != "all":
+        if self._trace[2] != "all" or self.law.h0 >= 2.0:      # h0 >= 2 Delta: no state pulls, nothing to follow
             return ""
         opens = _cb.top_opens(self.law)
         return "" if opens is None else _cpo.jump_reason(opens)

@@ -69,7 +69,8 @@ def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=
 
     start = _co.cohesive_state(eps_lo, m, s0, theta, gb, ar, n=nodes(eps_lo))
     if start.zones == "all":
-        opens = _cb.top_opens(_cb.Law(m, s0, theta, gb, ar))
+        # h0 >= 2 Delta: the range alone reaches round and no state pulls (a jump there changes no answer)
+        opens = _cb.top_opens(law) if law.h0 < 2.0 else None
         if opens is not None:
             return none(jump_reason(opens))
         return none("no adherence force: the zone reaches round (p >= 0)" if start.p >= 0 else
