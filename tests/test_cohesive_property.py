@@ -43,3 +43,25 @@ def test_two_ways(E, nu, E_I, nu_I, M, lam, eps):
     quad += 2 * np.sum(WG * jac * s.fields.pressure(phi) * np.cos(phi))
     assert abs(quad - s.p) < 1e-8 * scale
     assert abs(s.fields.pressure(eps * (1 - 1e-9))[0] + s0) < 1e-3 * s0
+
+
+@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(E=modulus, nu=poisson, E_I=modulus, nu_I=poisson, M=st.floats(0.03, 0.6), lam=st.floats(0.3, 10.0))
+def test_pull_off_by_the_walker_and_by_continuation(E, nu, E_I, nu_I, M, lam):
+    """The load-control pull-off two ways: Contact.pull_off (the walker on the traced table) and the stand-alone
+    continuation of jkrcyl.numerics.cohesive_pull_off (no table, no walker; the map's route): both give none or
+    the same P to 1e-6, and a pull-off is a pull (P < 0) -- the seam where a jump of a round zone was once read
+    as a fold (tests/test_cohesive_s_branch.py)."""
+    from jkrcyl.numerics import cohesive_pull_off as cpo
+    if math.isinf(E) and math.isinf(E_I):
+        E_I = 1e9
+    mat = jkrcyl.Materials.from_young(E=E, nu=nu, E_I=E_I, nu_I=nu_I)
+    probe = jkrcyl.Contact(1e-2, 1e-5, 1.0, mat)
+    c = jkrcyl.Contact.with_lambda(1e-2, 1e-5, (M / probe.M) ** 2, mat, lam)
+    pb = c.problem
+    ref = cpo.pull_off_load(pb.m, pb.edge.s0, pb.theta, pb.gb, pb.alpha_ratio)
+    got = c.pull_off("load")
+    assert (got.P is None) == (ref.p is None), (got, ref.reason)
+    if got.P is not None:
+        assert got.P < 0
+        assert abs(got.P / (ref.p * c.load_scale / pb.scale) - 1) < 1e-6, (got.P, ref.p)

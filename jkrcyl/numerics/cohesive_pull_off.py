@@ -98,6 +98,11 @@ def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=
                     "turns back to eps -> 0 or its zone reaches round)")
     state = lambda e: _co.cohesive_state(e, m, s0, theta, gb, ar, n=nodes(eps_end), near=d_end)
     zero = _zero_load(state, eps_end) if zero_load else None
+    # the walk starts at the zero-load contact only if it is feasible (the model core's rule); without the refined
+    # state the branch's point just past p = 0 stands in for it
+    first = zero if zero is not None else state(math.exp(left_by_load[1][0]))
+    if first is not None and not _co.gap_check(first, 120).feasible:
+        return none("no feasible zero-load contact: the gap closes or the law is broken off the contact there", zero)
     # back from the zero-load end: the first minimum of p, or the touch end
     for j in range(len(p) - 2, 0, -1):
         if p[j - 1] > p[j] < p[j + 1] and (pts[j, 0] - pts[j - 1, 0]) * (pts[j + 1, 0] - pts[j, 0]) <= 0:
