@@ -73,17 +73,20 @@ def _linear_start(problem, spec):
         ws = gs ** 2 / f
     else:
         ws = np.full(len(legs), _w_of_M(spec, 0.3))
-    if "E" in names:
-        out["E"] = f * spec.E_star0
-    for body in ("hole", "pin"):
-        if f"E_{body}" in names:
-            out[f"E_{body}"] = f * spec.fixed[f"E_{body}"]
+    out.update(_moduli(spec, names, f))
     if "Delta" in names:
         out["Delta"] = Delta
     if "w" in names:
         out["w"] = float(np.mean(ws))
     if "w_loading" in names:
         out["w_loading"], out["w_unloading"] = (float(ws[0]), float(ws[-1]))
+    return out
+
+
+def _moduli(spec, names, f):
+    """The free moduli at the factor f on the starting ones: 'E' (contact modulus E*), 'E_hole', 'E_pin'."""
+    out = {"E": f * spec.E_star0} if "E" in names else {}
+    out.update({f"E_{b}": f * spec.fixed[f"E_{b}"] for b in ("hole", "pin") if f"E_{b}" in names})
     return out
 
 
@@ -98,11 +101,7 @@ def _scan_start(problem, spec):
             wv = _w_of_M(spec, M, f)
             vals = dict(spec.fixed)
             vals.update({"w": wv, "w_loading": wv, "w_unloading": wv})
-            if "E" in names:
-                vals["E"] = f * spec.E_star0
-            for body in ("hole", "pin"):
-                if f"E_{body}" in names:
-                    vals[f"E_{body}"] = f * spec.fixed[f"E_{body}"]
+            vals.update(_moduli(spec, names, f))
             if "offset" in names:
                 vals["offset"] = 0.0
                 vals["offset"] = _offset_guess(problem, spec, vals)
