@@ -7,7 +7,6 @@ import numpy as np
 
 from ._validate import finite_scalar
 from .model.single_patch import solver
-from .numerics import cohesive as _cohesive
 from .numerics import cohesive_scales as _scales
 
 Fields = namedtuple("Fields", ["pressure", "gap"])
@@ -69,8 +68,9 @@ class CohesiveLaw:
 
     def at_contact(self, eps):
         """The bottom single-patch state at each contact half-angle eps [rad] in (0, pi) (scalar or array): a
-        ContactStates of arrays, dimensional.  JKR: state(tan(eps/2)).  The cohesive law: the state of the contact
-        branch joined to the touch, the zone end's first root above the Dugdale estimate
+        ContactStates of arrays, dimensional, from the single-patch solver (jkrcyl.model: SinglePatch.at_contact).
+        JKR: the state at a = tan(eps/2).  The cohesive law: the state of the contact branch joined to the touch,
+        the zone end's first root above the Dugdale estimate
         (jkrcyl.numerics.cohesive.cohesive_state, ~1e-10), the root that tends to JKR as sigma0 -> inf.  A contact
         size picks one state of that branch below its first turn in eps (curve().eps along the branch); where the
         branch turns back (large M at lambda of a few), widths beyond the turn have two states or none, and this
@@ -83,14 +83,6 @@ class CohesiveLaw:
         flat = np.atleast_1d(arr).ravel()
         if flat.size == 0 or not np.all(np.isfinite(flat)) or np.any((flat <= 0) | (flat >= math.pi)):
             raise ValueError(f"eps must be in (0, pi) [rad], got {flat[~((flat > 0) & (flat < math.pi))][:1]!r}")
-        if self.sigma0 is None:
-            s = self.state(np.tan(flat / 2))
-            cols = (flat, flat, s.P, s.delta, s.delta_work, s.h_pi)
-        else:
-            pb = self.problem
-            law = (pb.m, pb.edge.s0, pb.theta, pb.gb, pb.alpha_ratio)
-            st = [_cohesive.cohesive_state(e, *law) for e in flat.tolist()]
-            col = lambda name: np.array([getattr(q, name) for q in st], dtype=float)
-            cols = (flat, col("c"), col("p") * 4 * math.pi * self.Delta / self.beta, col("delta_over_Delta") *
-                    self.Delta, col("delta_work_over_Delta") * self.Delta, col("h_pi_over_Delta") * self.Delta)
-        return ContactStates(*(np.reshape(np.asarray(c, dtype=float), arr.shape) for c in cols))
+        c, p, dn, dw, h = solver(self.problem).at_contact(flat)
+        cols = (flat, c, p * 4 * math.pi * self.Delta / self.beta, dn * self.Delta, dw * self.Delta, h * self.Delta)
+        return ContactStates(*(np.reshape(np.asarray(col, dtype=float), arr.shape) for col in cols))

@@ -203,6 +203,16 @@ class Cohesive(SinglePatch):
         x = brentq(f, lo, hi, xtol=xtol, rtol=4 * np.finfo(float).eps)
         return None if _roots.is_pole(f(x), flo, fhi) else x
 
+    def at_contact(self, eps):
+        """(c, p, dn, dw, h) at contact half-angles eps: the zone end's first root above the Dugdale estimate
+        (jkrcyl.numerics.cohesive.cohesive_state, ~1e-10), the root that tends to JKR -- on the traced branch below
+        its first turn in eps, the first root (off the branch) beyond it."""
+        from ..numerics import cohesive as _co
+        law = self.law
+        st = [_co.cohesive_state(e, law.m, law.s0, law.theta, law.gb, law.ar) for e in np.asarray(eps).tolist()]
+        col = lambda name: np.array([getattr(q, name) for q in st], dtype=float)
+        return col("c"), col("p"), col("delta_over_Delta"), col("delta_work_over_Delta"), col("h_pi_over_Delta")
+
     def release_rates(self, s):
         """No Griffith edge: NaN."""
         return {ctl: np.full(np.shape(s.p), np.nan) for ctl in ("load", "grip", "grip-work")}

@@ -69,6 +69,12 @@ class SinglePatch:
     def states(self, a) -> Slice:                       # pragma: no cover - interface
         raise NotImplementedError
 
+    def at_contact(self, eps):
+        """(c, p, dn, dw, h) arrays of the bottom patch at contact half-angles eps (1-D, in (0, pi)), kernel scale:
+        c the zone end (eps itself without a zone).  Griffith's edge: the state at a = tan(eps/2)."""
+        s = self.states(np.tan(np.asarray(eps, dtype=float) / 2))
+        return np.asarray(eps, dtype=float), s.p, s.dn, s.dw, s.h
+
     @functools.cached_property
     def a_crit(self) -> float:                          # pragma: no cover - interface
         raise NotImplementedError
