@@ -19,7 +19,8 @@ from .analysis import confined as _confined
 from .analysis import tracing as _tr
 from .model import full_contact as _full
 from .model import two_patch as _two
-from .model.problem import Problem, edge_law
+from .laws.dugdale import edge_of_strength
+from .model.problem import Problem
 from .numerics import cohesive_scales as _scales
 from .model.single_patch import solver
 from .numerics.zero_load import zero_load_contact, zero_load_max_M   # noqa: F401  (public names)
@@ -39,12 +40,12 @@ def incompressible_gb(theta: float) -> float:
 
 def problem(M: float, theta: float, gb: float, alpha_ratio: float = 0.0, s0: Optional[float] = None) -> Problem:
     """The validated :class:`~jkrcyl.model.problem.Problem`; s0 = sigma0 R beta*/(4 pi Delta): the Maugis-Dugdale
-    cohesive law (jkrcyl.model.problem.Dugdale), None: JKR."""
+    cohesive law (jkrcyl.laws.DugdaleEdge), None: JKR."""
     return Problem(M, theta, gb, alpha_ratio, _law(s0))
 
 
 def _law(s0):
-    return edge_law(s0)
+    return edge_of_strength(s0)
 
 
 def zone_strength(lam: float, M: float, theta: float) -> float:

@@ -19,7 +19,7 @@ differences in eps and c at a fixed approach), never across table points.  Stabi
 jkrcyl.model.stability with the derivatives D_X of jkrcyl.numerics.cohesive_branch (the zone end's energy
 dE/dc = 2 (s0 h(c) - m^2); the contactless pin is a saddle under load, stable under grip where the opening at its
 zone end grows with the zone).  The total potential (elastic + Dugdale interface energy - w over the contact) has
-dE = p d(delta/Delta) along the branches.  Not modelled: two patches and full contact (:attr:`models_confined`),
+dE = p d(delta/Delta) along the branches.  Not modelled: two patches and full contact (jkrcyl.laws.dugdale: the law's families),
 the super-critical side of the receding limit, top-zone bridges (jkrcyl.numerics.cohesive_zones finds them),
 a round zone that stops reaching round by a jump (a top bridge or an S-shape: :attr:`unmodelled` says so).
 """
@@ -218,6 +218,14 @@ class Cohesive(SinglePatch):
         return {ctl: np.full(np.shape(s.p), np.nan) for ctl in ("load", "grip", "grip-work")}
 
     # --- the branches' ends and what the analyses ask ------------------------------------------------------
+    def stops_short(self, regime):
+        """The contact branch is traced up to p = P_CAP m^(4/3) (jkrcyl.numerics.cohesive_branch) unless it ends
+        first (the receding limit, the zone reaching round)."""
+        if regime != "sub-critical" or self._trace[2] == "all":
+            return ""
+        p_end = self.value("p", self.a_crit)
+        return f"traced up to P_CAP m^(4/3) = {self.law.p_cap:.6g}" if p_end > 0.5 * self.law.p_cap else ""
+
     def continues(self, regime, a):
         """The contact branch's touch end (a = 2) continues as the contactless one from the touch (a = 1) and
         back."""
@@ -242,10 +250,6 @@ class Cohesive(SinglePatch):
         """The free pin feels no traction while every gap exceeds h0: -2 + h0 < delta/Delta < -h0."""
         h0 = self.law.h0
         return -2.0 + h0, -h0
-
-    @property
-    def models_confined(self):
-        return False
 
     @functools.cached_property
     def adheres(self):
