@@ -19,6 +19,7 @@ from .analysis import confined as _confined
 from .analysis import tracing as _tr
 from .model import full_contact as _full
 from .model import two_patch as _two
+from .critical import a_crit  # noqa: F401  (one a_crit: jkrcyl.critical)
 from .laws.dugdale import edge_of_strength
 from .model.problem import Problem
 from .numerics import cohesive_scales as _scales
@@ -55,11 +56,6 @@ def zone_strength(lam: float, M: float, theta: float) -> float:
     if pb.M == 0:
         raise ValueError("lambda: the transition parameter needs adhesion, M > 0 (w > 0), got M = 0")
     return _scales.zone_strength(finite_scalar("lambda", lam, low=0.0, low_open=True), pb.m)
-
-
-def a_crit(M: float, theta: float, gb: float, alpha_ratio: float = 0.0) -> float:
-    """The receding contact a_crit of the pair (the pole of the load; inf for a rigid cradle at alpha* = 0)."""
-    return solver(Problem(0.0, theta, gb, alpha_ratio)).a_crit
 
 
 def curve(M: float, theta: float, regime: str = "sub-critical", n: int = 2000, *, gb: float, a=None,

@@ -13,15 +13,15 @@ import functools
 import math
 from dataclasses import dataclass
 
-from ..materials import ALPHA_TOLERANCE
 from ..model.closed_form import ClosedForm, ClosedFormPhysical
 from ..model.collocation import Collocation, CollocationPhysical
 from ..model.edge import Edge, EdgeLaw
 
 
 def closed_form(alpha_ratio: float) -> bool:
-    """Whether the paper's closed forms hold: alpha* = 0 (|alpha*/beta*| <= ALPHA_TOLERANCE, section 2)."""
-    return abs(alpha_ratio) <= ALPHA_TOLERANCE
+    """Whether the paper's closed forms hold: alpha* = 0 (section 2; snapped to 0.0 once, where the ratio is made:
+    jkrcyl.materials.snap_alpha)."""
+    return alpha_ratio == 0.0
 
 
 @dataclass(frozen=True)

@@ -34,6 +34,7 @@ from scipy.optimize import brentq
 from ..numerics import cohesive_branch as _cb
 from ..numerics import cohesive_pull_off as _cpo
 from ..numerics import cohesive_zones as _cz
+from ..numerics import one_arc as _one
 from ..numerics import roots as _roots
 from .patch import SinglePatch, Slice
 
@@ -77,9 +78,15 @@ class Cohesive(SinglePatch):
         return len(self._trace[1])
 
     @property
-    def a_crit(self) -> float:
-        """The end of the contact branch's parameter (not a receding contact: the pair's is Contact.a_crit)."""
+    def a_end(self) -> float:
+        """The end of the contact branch's parameter a = 2 + t."""
         return 2.0 + float(self._trace[1][-1]) * (1 + 1e-12)
+
+    @functools.cached_property
+    def a_crit(self) -> float:
+        """The pair's receding contact tan(eps_crit/2) (the one meaning of a_crit: jkrcyl.critical); the traced
+        branch stops below it (jkrcyl.numerics.cohesive_branch.EPS_MARGIN)."""
+        return _one.receding_contact(self.problem.theta, self.problem.gb, self.problem.alpha_ratio)
 
     def regimes(self):
         return ("contactless", "sub-critical") if self._contactless is not None else ("sub-critical",)
@@ -100,7 +107,7 @@ class Cohesive(SinglePatch):
         return 2.0 + (t if n == self.dense_points else np.linspace(t[0], t[-1], n))
 
     def on_branch(self, regime, a):
-        lo, hi = (0.0, 1.0) if regime == "contactless" else (2.0, self.a_crit)
+        lo, hi = (0.0, 1.0) if regime == "contactless" else (2.0, self.a_end)
         bad = (a <= lo) | (a > hi) if regime == "contactless" else (a < lo) | (a > hi)
         if regime not in self.regimes() or np.any(bad):
             raise ValueError(f"a must be in ({lo!r}, {hi!r}) on the {regime} branch of this cohesive law "
@@ -223,7 +230,7 @@ class Cohesive(SinglePatch):
         first (the receding limit, the zone reaching round)."""
         if regime != "sub-critical" or self._trace[2] == "all":
             return ""
-        p_end = self.value("p", self.a_crit)
+        p_end = self.value("p", self.a_end)
         return f"traced up to P_CAP m^(4/3) = {self.law.p_cap:.6g}" if p_end > 0.5 * self.law.p_cap else ""
 
     def continues(self, regime, a):
