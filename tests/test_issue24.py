@@ -80,3 +80,11 @@ def test_item7_a_crit_has_one_meaning():
     assert solver(coh.problem).a_crit == c.a_crit
     with pytest.raises(ValueError, match="^gb must be given"):
         jkrcyl.a_crit(1.0, alpha_ratio=0.2)
+
+
+def test_item4_a_cycle_past_the_traced_branch_says_so(jkr):
+    """A cycle driven beyond the traced load cap stops with a note naming the table's end (it used to end with
+    'no stable state to jump to')."""
+    c = jkrcyl.Contact.with_lambda(**ARGS, lambda_=10)
+    cy = c.cycle(P_max=1e5, P_min=-5, n=100)
+    assert "table ends at P = " in cy.note and "traced up to" in cy.note and cy.dissipated is None

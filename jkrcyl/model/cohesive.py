@@ -29,8 +29,6 @@ import functools
 import math
 
 import numpy as np
-from scipy.optimize import brentq
-
 from ..numerics import cohesive_branch as _cb
 from ..numerics import cohesive_pull_off as _cpo
 from ..numerics import cohesive_zones as _cz
@@ -202,13 +200,10 @@ class Cohesive(SinglePatch):
         a (SLOPE_XTOL for a slope: a fold) -- the states carry ~1e-10 of noise and the slopes (finite differences)
         ~1e-9, so the bisection to adjacent doubles of the other solvers buys nothing but evaluations (each a
         state, and for a slope two more contacts)."""
-        if flo == 0.0 or fhi == 0.0:
-            return lo if flo == 0.0 else hi
         seen = {lo: flo, hi: fhi}
-        f = lambda x: seen[x] if x in seen else seen.setdefault(x, self.value(field, x) - target)
+        f = lambda x, _: seen[x] if x in seen else seen.setdefault(x, self.value(field, x) - target)
         xtol = SLOPE_XTOL if field in _SLOPES else ROOT_XTOL
-        x = brentq(f, lo, hi, xtol=xtol, rtol=4 * np.finfo(float).eps)
-        return None if _roots.is_pole(f(x), flo, fhi) else x
+        return _roots.brent_or_pole(f, lo, hi, (), flo, fhi, xtol=xtol)
 
     def at_contact(self, eps):
         """(c, p, dn, dw, h) at contact half-angles eps: the zone end's first root above the Dugdale estimate
@@ -225,10 +220,12 @@ class Cohesive(SinglePatch):
         return {ctl: np.full(np.shape(s.p), np.nan) for ctl in ("load", "grip", "grip-work")}
 
     # --- the branches' ends and what the analyses ask ------------------------------------------------------
-    def stops_short(self, regime):
+    def stops_short(self, regime, a=None):
         """The contact branch is traced up to p = P_CAP m^(4/3) (jkrcyl.numerics.cohesive_branch) unless it ends
-        first (the receding limit, the zone reaching round)."""
+        first (the receding limit, the zone reaching round); a: only if a is the table's last point."""
         if regime != "sub-critical" or self._trace[2] == "all":
+            return ""
+        if a is not None and a < 2.0 + (self.a_end - 2.0) * (1 - 1e-9):
             return ""
         p_end = self.value("p", self.a_end)
         return f"traced up to P_CAP m^(4/3) = {self.law.p_cap:.6g}" if p_end > 0.5 * self.law.p_cap else ""
@@ -247,11 +244,12 @@ class Cohesive(SinglePatch):
     def grows_under_pull(self, a, control):
         """At a fold, the state leaves along the branch's tangent in the direction a further pull drives it:
         under load the approach falls, under grip the load rises towards 0; the contact grows if eps rises
-        that way."""
-        h = 1e-4 * max(1.0, a)
-        s = self.states([a - h, a + h])
-        deps, ddn, dp = np.diff(s.contact)[0], np.diff(s.dn)[0], np.diff(s.p)[0]
-        return bool(deps * ddn < 0) if control == "load" else bool(deps * dp > 0)
+        that way.  The tangent at the point (d eps, and the per-point slopes of p and delta along it), not a
+        difference across points; the zone-only pin (a <= 1) has no contact to grow."""
+        if a <= 1:
+            return False
+        (deps, _), pt = self._where(a - 2.0)[2], self.point(a)
+        return bool(deps * pt.ddn_dt < 0) if control == "load" else bool(deps * pt.dp_dt > 0)
 
     def free_range(self):
         """The free pin feels no traction while every gap exceeds h0: -2 + h0 < delta/Delta < -h0."""
