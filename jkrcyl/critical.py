@@ -1,6 +1,4 @@
 """The receding contact a_crit (section 4): the one meaning of the name in jkrcyl."""
-import math
-
 from .model.problem import Problem
 from .model.single_patch import solver
 
@@ -33,8 +31,8 @@ def a_crit(theta: float, gb: float = None, alpha_ratio: float = 0.0) -> float:
     >>> round(a_crit(1.0), 4)          # section 4: eps_crit = 2 atan(0.9135) = 84.8 deg at vartheta = 1
     0.9136
     """
-    pb = Problem(0.0, theta, 0.0 if gb is None else gb, alpha_ratio)
-    if pb.alpha_ratio != 0.0 and gb is None:
+    sv = solver(Problem(0.0, theta, 0.0 if gb is None else gb, alpha_ratio))
+    if gb is None and sv.pole_needs_gb:
         raise ValueError(f"gb must be given where alpha* != 0 (the pole depends on (1/G_I)/beta*), got alpha_ratio = "
                          f"{alpha_ratio!r}")
-    return math.inf if pb.rigid_cradle and pb.alpha_ratio == 0.0 else solver(pb).a_crit
+    return sv.a_crit

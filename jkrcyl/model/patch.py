@@ -64,6 +64,7 @@ class SinglePatch:
     dense_points: int          # points of a branch's search table: what the solver's cost allows
     a_max: float               # the largest contact parameter the solver resolves (the tables stop there)
     noise: float               # relative rounding of its states (what a difference quotient must stay above)
+    pole_needs_gb = True       # whether a_crit depends on gb = (1/G_I)/beta* (not for the closed forms)
 
     def states(self, a) -> Slice:                       # pragma: no cover - interface
         raise NotImplementedError
