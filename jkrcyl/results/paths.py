@@ -255,8 +255,9 @@ class ConfinedEvents:
         Examples
         --------
         >>> import jkrcyl
-        >>> jkrcyl.equilibria.confined_events(0.5, 1.0, gb=1 / 2.8).summary.split("; ")
-        ['fold at P* = -0.288025', 'the contact grows into full contact (entirely in tension there)', 'no detachment under load']
+        >>> jkrcyl.equilibria.confined_events(0.5, 1.0, gb=1 / 2.8).summary.split("; ")  # doctest: +NORMALIZE_WHITESPACE
+        ['fold at P* = -0.288025', 'the contact grows into full contact (entirely in tension there)',
+         'no detachment under load']
         """
         if self.regime == "detachment":
             return (f"fixed-load detachment at P* = {self.P_fold:.6g}; the pin lands on the top of the hole "
