@@ -255,7 +255,8 @@ class ConfinedEvents:
         Examples
         --------
         >>> import jkrcyl
-        >>> jkrcyl.equilibria.confined_events(0.5, 1.0, gb=1 / 2.8).summary.split("; ")  # doctest: +NORMALIZE_WHITESPACE
+        >>> ev = jkrcyl.equilibria.confined_events(0.5, 1.0, gb=1 / 2.8)
+        >>> ev.summary.split("; ")                                  # doctest: +NORMALIZE_WHITESPACE
         ['fold at P* = -0.288025', 'the contact grows into full contact (entirely in tension there)',
          'no detachment under load']
         """
