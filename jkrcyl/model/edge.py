@@ -45,7 +45,7 @@ class Edge:
     param: str = "law"
     families: FrozenSet[str] = frozenset()
 
-    def single_patch(self, problem: "jkrcyl.model.problem.Problem") -> "jkrcyl.model.patch.SinglePatch":  # pragma: no cover
+    def single_patch(self, problem: "jkrcyl.model.problem.Problem") -> "SinglePatch":  # pragma: no cover - interface
         """The single-patch solver of a problem with this edge (the model core's only way to the law's states).
 
         Parameters
