@@ -3,7 +3,7 @@ gap in SI units (the law's dimensional solver: JKR's Griffith edge, closed form 
 :class:`State`, what :meth:`AtContactSize.state` returns."""
 import math
 from dataclasses import dataclass
-from typing import Union
+from typing import Tuple, Union
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -97,7 +97,8 @@ class AtContactSize:
         out = _k.approach_work(P, delta, inv_G_I=self.materials.inv_G_I)
         return _shaped(out, shape)
 
-    def pressure(self, a: ArrayLike, phi: ArrayLike, parts: bool = False):
+    def pressure(self, a: ArrayLike, phi: ArrayLike,
+                 parts: bool = False) -> Union[np.ndarray, float, Tuple[Union[np.ndarray, float], ...]]:
         """The contact pressure N(phi) of (5.4) [Pa], compressive positive (section 6); 0 outside the contact.
 
         Parameters
