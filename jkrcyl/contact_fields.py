@@ -211,9 +211,9 @@ class State:
     P, B, C : ndarray
         Load (4.4) and the coefficients (4.5a), (4.5b) [N/m].
     c0, c1 : ndarray
-        The rigid-body terms of (2.6) [m].
+        The coefficients (2.6) of the displacement condition (2.7) [m].
     r0 : ndarray
-        The coefficient of the edge-singular part of the pressure (2.12) [Pa].
+        The coefficient of the unbounded, edge-singular term of the pressure (2.12) [Pa].
     K : ndarray
         Stress-intensity factor at the edges (3.4) [Pa m^1/2].
     G_release : ndarray
