@@ -1,9 +1,12 @@
 """The receding contact a_crit (section 4): the one meaning of the name in jkrcyl."""
+import math
+from typing import Optional
+
 from .model.problem import Problem
 from .model.single_patch import solver
 
 
-def a_crit(theta: float, gb: float = None, alpha_ratio: float = 0.0) -> float:
+def a_crit(theta: float, gb: Optional[float] = None, alpha_ratio: float = 0.0) -> float:
     """The receding contact a_crit = tan(eps_crit/2) of a material pair: the contact parameter where the
     adhesionless load is infinite (the pole of (4.4)), the boundary of the sub- and super-critical branches.
 
@@ -28,8 +31,13 @@ def a_crit(theta: float, gb: float = None, alpha_ratio: float = 0.0) -> float:
 
     Examples
     --------
-    >>> round(a_crit(1.0), 4)          # section 4: eps_crit = 2 atan(0.9135) = 84.8 deg at vartheta = 1
+    >>> round(a_crit(1.0), 4)          # section 4: eps_crit = 2 atan(a_crit) = 84.8 deg at vartheta = 1
     0.9136
+    >>> a = a_crit(1.0)
+    >>> abs(2 * 1.0 - math.log(1 + a * a) - 2 * a ** 4) < 1e-12                 # the root of the closed form
+    True
+    >>> a_crit(math.inf)                # rigid cradle (section 7.2)
+    inf
     """
     sv = solver(Problem(0.0, theta, 0.0 if gb is None else gb, alpha_ratio))
     if gb is None and sv.pole_needs_gb:
