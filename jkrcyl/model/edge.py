@@ -133,7 +133,7 @@ class Edge:
         """
         return family in self.families
 
-    def require(self, family: str, what: str = "") -> None:
+    def require(self, family: str, what: str = "", param: str = "") -> None:
         """The one place that says 'not modelled for this law'.
 
         Parameters
@@ -142,6 +142,8 @@ class Edge:
             One of :data:`FAMILIES`.
         what : str
             The operation, quoted in the message (default: the family).
+        param : str
+            The name the caller's user gave the law (e.g. the CLI's lambda); default :attr:`param`.
 
         Returns
         -------
@@ -162,7 +164,7 @@ class Edge:
         """
         if not self.models(family):
             modelled = ", ".join(sorted(self.families)) or "none beyond the sub-critical single patch"
-            raise ValueError(f"{self.param}: {what or family} not modelled for the {self.name} law (its branch "
+            raise ValueError(f"{param or self.param}: {what or family} not modelled for the {self.name} law (its branch "
                              f"families: sub-critical, {modelled})")
 
 

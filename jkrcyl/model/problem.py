@@ -81,10 +81,10 @@ class Problem:
         problem's edge law."""
         return self.edge.models(family)
 
-    def require(self, family: str, what: str = "") -> "Problem":
+    def require(self, family: str, what: str = "", param: str = "") -> "Problem":
         """ValueError (the edge law's one message) unless the branch family is modelled for its law; returns the
         problem."""
-        self.edge.require(family, what)
+        self.edge.require(family, what, param)
         return self
 
     @classmethod
