@@ -197,7 +197,33 @@ def _fields(law: str, c: Contact, s, phi):
 
 
 def compute(inputs: Inputs) -> Picture:
-    """Everything the explorer shows for ``inputs``; ValueError (the library's message) on bad input."""
+    """Everything the explorer shows for ``inputs``.
+
+    Parameters
+    ----------
+    inputs : Inputs
+        The fields as typed (strings or numbers; SI units).
+
+    Returns
+    -------
+    Picture
+        The branches, the pull-off under each control, the cycle, first contact, the chosen state and its
+        pressure [Pa] and gap [m] around the hole, and the time each part took [s].
+
+    Raises
+    ------
+    ValueError
+        The library's own message, naming the bad parameter (:func:`field_of` finds its field).
+
+    Examples
+    --------
+    >>> from jkrcyl.explore import Inputs, compute
+    >>> picture = compute(Inputs(w="0.05"))          # the README pin
+    >>> round(picture.pull_offs["load"].P)           # N/m
+    -1555
+    >>> picture.regime
+    'detachment: the contact shrinks away (G > w)'
+    """
     if inputs.control not in CONTROLS:
         raise ValueError(f"control must be one of {', '.join(CONTROLS)}, got {inputs.control!r}")
     timings = {}
@@ -223,6 +249,16 @@ FIELD_OF_NAME = {"E": "E", "G": "E", "nu": "nu", "kappa": "nu", "E_I": "E_I", "G
 
 def field_of(message: str) -> str:
     """The input field a library ValueError is about: its first word names the parameter ('E must be ...',
-    'Delta must be in ...', 'sigma0: ...'); 'general' when it names none of the fields."""
+    'Delta must be in ...', 'sigma0: ...'); 'general' when it names none of the fields.
+
+    Examples
+    --------
+    >>> from jkrcyl.explore import Inputs, compute, field_of
+    >>> try:
+    ...     compute(Inputs(nu="0.7"))
+    ... except ValueError as exc:
+    ...     print(exc, "->", field_of(str(exc)))
+    nu must be in (-1, 0.5], got 0.7 -> nu
+    """
     m = re.match(r"\s*([A-Za-z_][A-Za-z0-9_]*)", message)
     return FIELD_OF_NAME.get(m.group(1), "general") if m else "general"
