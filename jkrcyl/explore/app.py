@@ -30,27 +30,29 @@ ORDER = ("E", "rigid", "nu", "E_I", "rigid_I", "nu_I", "R", "Delta", "w", "law",
          "cycle_min", "state_P")
 
 
+def _widget(name: str, inputs: Inputs):
+    """The input widget of one field, with the CSS class jkr-<name> (the tests find it by)."""
+    css = [f"jkr-{name}"]
+    if name in CHECKBOXES:
+        return Checkbox(label=CHECKBOXES[name], active=getattr(inputs, name), css_classes=css)
+    if name == "law":
+        return Select(title="edge law", value=inputs.law, options=[(k, v[0]) for k, v in LAWS.items()],
+                      width=WIDTH - 10, css_classes=css)
+    if name == "control":
+        return Select(title="control (stability shown, cycle driven)", value=inputs.control, options=list(CONTROLS),
+                      width=WIDTH - 10, css_classes=css)
+    return TextInput(title=TEXT_FIELDS[name], value=str(getattr(inputs, name)), width=WIDTH - 10, css_classes=css)
+
+
 class Explorer:
     """One browser tab: its widgets, sources and the last good picture."""
 
     def __init__(self, inputs: Inputs = Inputs()):
         self.errors = {}
-        self.widgets = {}
-        for name in ORDER:
-            if name in TEXT_FIELDS:
-                self.widgets[name] = TextInput(title=TEXT_FIELDS[name], value=str(getattr(inputs, name)), width=WIDTH - 10,
-                                               css_classes=[f"jkr-{name}"])
-            elif name in CHECKBOXES:
-                self.widgets[name] = Checkbox(label=CHECKBOXES[name], active=getattr(inputs, name),
-                                              css_classes=[f"jkr-{name}"])
-        self.widgets["law"] = Select(title="edge law", value=inputs.law, width=WIDTH - 10, css_classes=["jkr-law"],
-                                     options=[(k, label) for k, (label, _, _) in LAWS.items()])
-        self.widgets["control"] = Select(title="control (stability shown, cycle driven)", value=inputs.control,
-                                         options=list(CONTROLS), width=WIDTH - 10, css_classes=["jkr-control"])
-        self.widgets = {name: self.widgets[name] for name in ORDER}
+        self.widgets = {name: _widget(name, inputs) for name in ORDER}
         for name in list(self.widgets) + ["general"]:
             self.errors[name] = Div(text="", styles=ERROR_STYLE, css_classes=[f"jkr-error-{name}"])
-        self.sources = {k: ColumnDataSource(v) for k, v in view.empty().items()}
+        self.sources = {k: ColumnDataSource(v, name=k) for k, v in view.empty().items()}
         self.summary = Div(text="", width=880, css_classes=["jkr-summary"])
         self.status = Div(text="", width=880, css_classes=["jkr-status"])
         self.redraws = 0
@@ -74,7 +76,7 @@ class Explorer:
                       legend_label="jump")
         dots = curve.scatter("x", "y", source=s["points"], marker="marker", color="color", size=11,
                              legend_field="label")
-        curve.add_tools(HoverTool(renderers=[dots], tooltips=[("", "@label"), ("P [N/m]", "@y{0.0000g}"),
+        curve.add_tools(HoverTool(renderers=[dots], tooltips=[("", "@label"), ("P [N/m]", "@y{0.000}"),
                                                               ("delta_work", "@x @unit")]))
         curve.legend.label_text_font_size = "9pt"
         curve.add_layout(curve.legend[0], "right")

@@ -108,7 +108,9 @@ def curve_range(data, Delta_scaled: float, load_scale: float) -> tuple:
     load scale."""
     xs = list(data["cycle"]["x"]) + list(data["points"]["x"])
     ys = list(data["cycle"]["y"]) + list(data["points"]["y"])
-    return (*_padded(xs, fallback=(-2.5 * Delta_scaled, Delta_scaled)), *_padded(ys, fallback=(-load_scale, load_scale)))
+    x0, x1 = _padded(xs, fallback=(-2.5 * Delta_scaled, Delta_scaled))
+    y0, y1 = _padded(ys, fallback=(-load_scale, load_scale))
+    return x0, x1, y0, y1
 
 
 def pressure_range(y) -> tuple:
