@@ -127,16 +127,23 @@ def html_text(markup):
     return html.unescape(re.sub(r"<[^>]+>", "", markup))
 
 
+def _columns(ex):
+    """Every plotted column of the document, as plain lists."""
+    def plain(v):
+        return [plain(x) for x in v] if isinstance(v, list) else np.asarray(v).tolist()
+    return {k: {c: plain(v) for c, v in s.data.items()} for k, s in ex.sources.items()}
+
+
 def test_document_keeps_the_last_good_picture_on_bad_input():
     pytest.importorskip("bokeh", reason="the explore extra (bokeh) is not installed")
     from jkrcyl.explore.app import Explorer
     ex = Explorer()
-    before = {k: dict(s.data) for k, s in ex.sources.items()}
+    before = _columns(ex)
     ex.widgets["E"].value = "-1"
     expected = _library_message(lambda: jkrcyl.Materials.from_young(-1.0, 0.3, 2.6e9, 0.3))
     assert html_text(ex.errors["E"].text) == expected
     assert ex.redraws == 1 and "not redrawn" in ex.status.text
-    assert {k: dict(s.data) for k, s in ex.sources.items()} == before
+    assert _columns(ex) == before
     ex.widgets["E"].value = "2.6e9"
     ex.widgets["w"].value = "0.06"
     assert ex.redraws == 3 and ex.errors["E"].text == ""
@@ -237,3 +244,14 @@ def test_browser_redraws_prints_the_pull_off_and_shows_bad_input(served):
             assert "Traceback" not in page.content()
         finally:
             browser.close()
+
+
+# --- the benchmark ----------------------------------------------------------------------------------------------
+def test_bench_explore_smoke():
+    """benchmarks/bench_explore.py in smoke mode (one change per case, no browser) so that it cannot rot; times
+    are not checked."""
+    run = subprocess.run([sys.executable, str(ROOT / "benchmarks" / "bench_explore.py"), "--repeats", "1",
+                          "--no-browser"], cwd=ROOT, capture_output=True, text=True, timeout=600)
+    assert run.returncode == 0, run.stdout + run.stderr
+    for row in ("alpha* = 0 (README pin)", "alpha* != 0", "cohesive", "document", "goals:"):
+        assert row in run.stdout, f"missing {row!r} in\n{run.stdout}"

@@ -54,7 +54,7 @@ class Explorer:
             self.errors[name] = Div(text="", styles=ERROR_STYLE, css_classes=[f"jkr-error-{name}"])
         self.sources = {k: ColumnDataSource(v, name=k) for k, v in view.empty().items()}
         self.summary = Div(text="", width=880, css_classes=["jkr-summary"])
-        self.status = Div(text="", width=880, css_classes=["jkr-status"])
+        self.status = Div(text="", width=880, css_classes=["jkr-status"], name="status")
         self.redraws = 0
         self.curve_plot, self.pressure_plot, self.gap_plot = self._plots()
         for name, widget in self.widgets.items():
@@ -102,7 +102,15 @@ class Explorer:
         return Inputs(**values)
 
     def _changed(self, attr, old, new):
-        self.redraw()
+        doc = self.status.document
+        if doc is None:                   # not served (tests): the changes apply at once
+            self.redraw()
+            return
+        doc.hold("combine")               # one message to the browser for the whole redraw, not one per property
+        try:
+            self.redraw()
+        finally:
+            doc.unhold()
 
     def _show_error(self, exc):
         message = str(exc).splitlines()[0] if str(exc) else type(exc).__name__

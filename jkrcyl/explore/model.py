@@ -24,7 +24,7 @@ CONTROLS = ("load", "grip-work", "grip")
 STABLE_FLAG = {"load": "stable_load", "grip-work": "stable_grip_work", "grip": "stable_grip"}
 BRANCHES = ("sub-critical", "super-critical", "contactless")   # one patch at the bottom (a law has two of them)
 CYCLE_POINTS = 400
-CURVE_POINTS = 800
+CURVE_POINTS = 500
 FIELD_POINTS = 721
 CYCLE_LOAD_FACTOR = 1.3      # automatic load limits: +-1.3 |load-control pull-off|
 CYCLE_APPROACH = (0.3, -2.3)  # automatic approach limits / Delta: past the top of the hole (delta = -2 Delta)

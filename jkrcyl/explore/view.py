@@ -53,8 +53,8 @@ def _lines(branches, kind, x_scale):
     for b in branches:
         mask = {"stable": b.stable & b.feasible, "unstable": ~b.stable & b.feasible, "infeasible": ~b.feasible}[kind]
         for sl in runs(mask):
-            xs.append((b.delta_work[sl] / x_scale).tolist())
-            ys.append(b.P[sl].tolist())
+            xs.append(b.delta_work[sl] / x_scale)
+            ys.append(b.P[sl])
     return {"xs": xs, "ys": ys}
 
 
@@ -74,21 +74,23 @@ def _points(picture, x_scale, x_unit):
 
 
 def picture_data(picture) -> dict:
-    """The columns of every source, and the units chosen: (approach, pressure, gap)."""
+    """The columns of every source (numpy arrays: Bokeh sends them to the browser as binary buffers), and the units
+    chosen: (approach, pressure, gap)."""
     c = picture.contact
     x_scale, x_unit = scale_of(c.Delta, LENGTHS)
-    p_scale, p_unit = scale_of(np.nanmedian(np.abs(picture.pressure[picture.pressure != 0]))
-                               if np.any(picture.pressure != 0) else 0.0, PRESSURES)
-    g_scale, g_unit = scale_of(np.nanmax(np.abs(picture.gap)) if np.any(np.isfinite(picture.gap)) else 0.0, LENGTHS)
+    pressure = np.abs(picture.pressure[np.isfinite(picture.pressure) & (picture.pressure != 0)])
+    gap = np.abs(picture.gap[np.isfinite(picture.gap)])
+    p_scale, p_unit = scale_of(float(np.median(pressure)) if pressure.size else 0.0, PRESSURES)
+    g_scale, g_unit = scale_of(float(np.max(gap)) if gap.size else 0.0, LENGTHS)
     cy = picture.cycle
     jumps = {"x0": [j.before.delta_work / x_scale for j in cy.jumps], "y0": [j.before.P for j in cy.jumps],
              "x1": [j.after.delta_work / x_scale for j in cy.jumps], "y1": [j.after.P for j in cy.jumps]}
-    phi = np.degrees(picture.phi).tolist()
+    phi = np.degrees(picture.phi)
     data = {kind: _lines(picture.branches, kind, x_scale) for kind in ("stable", "unstable", "infeasible")}
-    data.update(cycle={"x": (np.asarray(cy.delta_work) / x_scale).tolist(), "y": np.asarray(cy.P).tolist()},
+    data.update(cycle={"x": np.asarray(cy.delta_work) / x_scale, "y": np.asarray(cy.P, dtype=float)},
                 jumps=jumps, points=_points(picture, x_scale, x_unit),
-                pressure={"phi": phi, "y": (picture.pressure / p_scale).tolist()},
-                gap={"phi": phi, "y": (picture.gap / g_scale).tolist()}, units=(x_unit, p_unit, g_unit))
+                pressure={"phi": phi, "y": picture.pressure / p_scale},
+                gap={"phi": phi, "y": picture.gap / g_scale}, units=(x_unit, p_unit, g_unit))
     data["curve_range"] = curve_range(data, c.Delta / x_scale, c.load_scale)
     return data
 
