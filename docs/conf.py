@@ -71,14 +71,16 @@ html_theme_options = {
 html_show_sourcelink = False
 
 
-# --- two text fixes at build time (the sources stay as they are) --------------------------------------------------
+# --- plain-text docstrings and the generated report, read as they are -------------------------------------------
 SUBSTITUTION = re.compile(r"(?<![\\`|])\|(?=[^\s|`])([^|`\n]*?[^\s|`\\])\|(?![`|])")
+REFERENCE = re.compile(r"(?<=[A-Za-z0-9])_(?=[\s,.;:)\]]|$)")
 
 
-def _absolute_values(app, what, name, obj, options, lines):
-    """Docstrings write absolute values as |x| (|alpha*/beta*|, |P*|), which reStructuredText reads as a
-    substitution reference: escape the bars."""
-    lines[:] = [SUBSTITUTION.sub(r"\\|\1\\|", line) for line in lines]
+def _plain_text(app, what, name, obj, options, lines):
+    """Docstrings are plain text with the paper's notation: absolute values |x| (|alpha*/beta*|, |P*|) and names
+    ending in an underscore (lambda_), which reStructuredText reads as a substitution and a hyperlink reference.
+    Escape both."""
+    lines[:] = [REFERENCE.sub(r"\\_", SUBSTITUTION.sub(r"\\|\1\\|", line)) for line in lines]
 
 
 def _derivation_text(app, relative_path, parent_docname, content):
@@ -89,5 +91,5 @@ def _derivation_text(app, relative_path, parent_docname, content):
 
 
 def setup(app):
-    app.connect("autodoc-process-docstring", _absolute_values)
+    app.connect("autodoc-process-docstring", _plain_text)
     app.connect("include-read", _derivation_text)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import socket
 import sys
+import threading
 
 from .._validate import count
 
@@ -39,16 +40,27 @@ def make_server(port=None, address: str = ADDRESS):
     return server, f"http://{address}:{port}/"
 
 
-def warm_up():
-    """Compile the kernels on the default picture, so that the first page comes at the speed of later ones."""
+#: What the first change of each kind computes: a pair with alpha* != 0 and the cohesive law.
+WARM_LATER = ({"E": "3e9"}, {"law": "lambda", "law_value": "3"})
+
+
+def warm_up(later=False):
+    """Compile the kernels: the default picture (the first page), or (later=True, in a background thread once the
+    server listens) the collocation solver and the cohesive law, so that a first change to them redraws at the
+    speed of the next ones rather than after seconds of compilation."""
     from .model import Inputs, compute
-    compute(Inputs())
+    for changes in (WARM_LATER if later else ({},)):
+        try:
+            compute(Inputs(**changes))
+        except Exception:                 # warming only: a failure shows when the user asks for that picture
+            pass
 
 
 def serve(port=None, address: str = ADDRESS, open_browser: bool = False, out=sys.stdout) -> int:
     """Serve until interrupted (Ctrl-C); prints the URL once the server listens and the kernels are warm."""
     server, url = make_server(port, address)
     warm_up()
+    threading.Thread(target=warm_up, args=(True,), daemon=True, name="jkrcyl-explore-warm-up").start()
     print(f"jkrcyl explore: {url} (Ctrl-C to stop)", file=out, flush=True)
     if open_browser:
         import webbrowser
