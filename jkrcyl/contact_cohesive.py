@@ -41,14 +41,18 @@ class CohesiveLaw:
 
     @property
     def h0(self):
-        """The range of the cohesive law, w/sigma0 [m]; 0 for JKR."""
-        return 0.0 if self.sigma0 is None else self.w / self.sigma0
+        """The range of the law's adhesive traction [m]: w/sigma0 for the cohesive law, 0 for JKR."""
+        return self.law.range(self)
 
-    def _require_griffith(self, what):
-        if self.sigma0 is not None:
-            raise ValueError(f"sigma0: {what} is the JKR (Griffith) single patch at a given a; for the cohesive law "
-                             "use curve(), solve(), pull_off(), cycle() (states carry eps and the zone end c in "
-                             ".extra) and fields(state) for the pressure and the gap")
+    def _physical(self, method="auto"):
+        """The law's dimensional solver at a given contact parameter a (state(a), pressure, gap): Griffith
+        laws only (jkrcyl.laws.griffith.Griffith.physical)."""
+        if not hasattr(self.law, "physical"):
+            raise ValueError(f"{self.law.param}: state(a), pressure(a, phi) and gap(a, phi) are the JKR (Griffith) "
+                             f"single patch at a given a, not the {self.law.name} law's; use curve(), solve(), pull_off(), cycle() "
+                             "(states carry eps and the zone end c in .extra) and fields(state) for the pressure "
+                             "and the gap")
+        return self.law.physical(self, method)
 
     def fields(self, state):
         """Pressure N(phi) [Pa] (compressive positive: -sigma0 on the zones) and gap h(phi) [m] of a cohesive

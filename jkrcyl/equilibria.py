@@ -19,7 +19,9 @@ from .analysis import confined as _confined
 from .analysis import tracing as _tr
 from .model import full_contact as _full
 from .model import two_patch as _two
-from .model.problem import Problem, edge_law
+from .critical import a_crit  # noqa: F401  (one a_crit: jkrcyl.critical)
+from .laws.dugdale import edge_of_strength
+from .model.problem import Problem
 from .numerics import cohesive_scales as _scales
 from .model.single_patch import solver
 from .numerics.zero_load import zero_load_contact, zero_load_max_M   # noqa: F401  (public names)
@@ -39,12 +41,12 @@ def incompressible_gb(theta: float) -> float:
 
 def problem(M: float, theta: float, gb: float, alpha_ratio: float = 0.0, s0: Optional[float] = None) -> Problem:
     """The validated :class:`~jkrcyl.model.problem.Problem`; s0 = sigma0 R beta*/(4 pi Delta): the Maugis-Dugdale
-    cohesive law (jkrcyl.model.problem.Dugdale), None: JKR."""
+    cohesive law (jkrcyl.laws.DugdaleEdge), None: JKR."""
     return Problem(M, theta, gb, alpha_ratio, _law(s0))
 
 
 def _law(s0):
-    return edge_law(s0)
+    return edge_of_strength(s0)
 
 
 def zone_strength(lam: float, M: float, theta: float) -> float:
@@ -54,11 +56,6 @@ def zone_strength(lam: float, M: float, theta: float) -> float:
     if pb.M == 0:
         raise ValueError("lambda: the transition parameter needs adhesion, M > 0 (w > 0), got M = 0")
     return _scales.zone_strength(finite_scalar("lambda", lam, low=0.0, low_open=True), pb.m)
-
-
-def a_crit(M: float, theta: float, gb: float, alpha_ratio: float = 0.0) -> float:
-    """The receding contact a_crit of the pair (the pole of the load; inf for a rigid cradle at alpha* = 0)."""
-    return solver(Problem(0.0, theta, gb, alpha_ratio)).a_crit
 
 
 def curve(M: float, theta: float, regime: str = "sub-critical", n: int = 2000, *, gb: float, a=None,

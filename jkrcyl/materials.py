@@ -9,6 +9,12 @@ from ._validate import THETA_MAX, finite_scalar
 ALPHA_TOLERANCE = 1e-9   # |alpha*| / beta* below this counts as alpha* = 0
 
 
+def snap_alpha(ratio: float) -> float:
+    """alpha*/beta*, exactly 0.0 where |alpha*/beta*| <= ALPHA_TOLERANCE: the one place that decides alpha* = 0
+    (the closed forms, the engine's enrichment and every other test of alpha* read the snapped value)."""
+    return 0.0 if abs(ratio) <= ALPHA_TOLERANCE else ratio
+
+
 @dataclass(frozen=True)
 class Materials:
     """Shear moduli G, G_I [Pa] (math.inf for a rigid body) and Kolosov constants kappa, kappa_I.
@@ -97,13 +103,14 @@ class Materials:
 
     @property
     def alpha_ratio(self) -> float:
-        """alpha*/beta* (dimensionless, in (-1, 1); <= 1/2 in size for nu, nu_I >= 0); 0 for the closed forms."""
-        return self.alpha_star / self.beta
+        """alpha*/beta* (dimensionless, in (-1, 1); <= 1/2 in size for nu, nu_I >= 0); exactly 0 for the closed
+        forms (:func:`snap_alpha`)."""
+        return snap_alpha(self.alpha_star / self.beta)
 
     @property
     def closed_form(self) -> bool:
         """True when alpha* = 0 (|alpha*/beta*| <= ALPHA_TOLERANCE): the paper's closed forms hold exactly."""
-        return abs(self.alpha_ratio) <= ALPHA_TOLERANCE
+        return self.alpha_ratio == 0.0
 
     def require_closed_form(self, what: str = "the closed form") -> None:
         """Raise ValueError (naming alpha*) unless alpha* = 0.

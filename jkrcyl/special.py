@@ -19,6 +19,7 @@ from numpy.typing import ArrayLike
 
 from ._validate import contact_parameter, finite_scalar, theta as _check_theta
 from .critical import a_crit as _a_crit
+from .model import stability as _stab
 from .numerics import kernels, roots
 
 
@@ -253,6 +254,28 @@ def neat_fit_gap_pi(a: ArrayLike, theta: float) -> np.ndarray:
     return kernels.gap_pi(a, Delta=0.0, beta=1.0, inv_theta=_inv(th), zeta=1.0)
 
 
+def neat_fit_stable(a: ArrayLike, theta: float) -> np.ndarray:
+    """Fixed-load stability of neat-fit equilibria (section 8.3 at Delta = 0): the one rule of
+    jkrcyl.model.stability, (dP/da)(dP/dk)|_a < 0; without clearance P is linear in the edge coefficient k, so
+    (dP/dk)|_a = P/k and the flag is Q* dQ*/da < 0 (dQ*/da emitted by derive/special.py).
+
+    Parameters
+    ----------
+    a : float or array_like
+        Contact parameter(s) tan(eps/2) > 0.
+    theta : float
+        vartheta >= 1/2 (finite).
+
+    Returns
+    -------
+    ndarray of bool
+    """
+    th = _check_theta(theta)
+    arr = contact_parameter(a)
+    Q = kernels.special("neat_fit_load", a=arr, inv_theta=_inv(th))
+    return _stab.stable(kernels.special("neat_fit_slope", a=arr, inv_theta=_inv(th)), Q)
+
+
 def neat_fit_curve(theta: float, n: int = 400) -> Dict[str, np.ndarray]:
     """Super-critical neat-fit equilibria (Fig. 8): a_crit < a, eps* uniform in (0.5, 1).
 
@@ -266,7 +289,8 @@ def neat_fit_curve(theta: float, n: int = 400) -> Dict[str, np.ndarray]:
     Returns
     -------
     dict of ndarray
-        a, eps [rad], eps_star, Q_star (Q* of (4.4) at Delta = 0) and feasible (h(pi) >= 0).
+        a, eps [rad], eps_star, Q_star (Q* of (4.4) at Delta = 0), feasible (h(pi) >= 0) and stable_load
+        (:func:`neat_fit_stable`).
     """
     th = _check_theta(theta)
     if math.isinf(th):
@@ -274,4 +298,4 @@ def neat_fit_curve(theta: float, n: int = 400) -> Dict[str, np.ndarray]:
     s = 0.5 + 0.5 * (np.arange(n) + 0.5) / n
     a = _a_crit(th) * np.tan(np.pi * s / 2)
     return dict(a=a, eps=2 * np.arctan(a), eps_star=s, Q_star=neat_fit_Q(a, th),
-                feasible=neat_fit_gap_pi(a, th) >= 0)
+                feasible=neat_fit_gap_pi(a, th) >= 0, stable_load=neat_fit_stable(a, th))

@@ -13,7 +13,8 @@ import pytest
 
 from jkrcyl.analysis import forward as fw
 from jkrcyl.analysis import pull_off as po
-from jkrcyl.model.problem import Dugdale, Problem
+from jkrcyl.laws import DugdaleEdge
+from jkrcyl.model.problem import Problem
 from jkrcyl.numerics import cohesive as co
 from jkrcyl.numerics import cohesive_branch as cb
 from jkrcyl.numerics import cohesive_follow as fo
@@ -84,7 +85,7 @@ def test_stand_alone_pull_off_at_a_fold_in_eps_equals_the_walkers_fold():
     lam, M = MIN_AT_FOLD
     pb0 = Problem(M, THETA, GB, 0.0)
     s0 = scales.zone_strength(lam, pb0.m)
-    pb = Problem(M, THETA, GB, 0.0, edge=Dugdale(s0))
+    pb = Problem(M, THETA, GB, 0.0, edge=DugdaleEdge(s0))
     walker = po.pull_off(pb, fw.Units(1.0, 1.0, 1.0, 0.0), "load")
     assert walker.state is not None and "fold" in walker.reason
     for kw in (dict(), dict(steps=(0.3, 1.2), xtol=1e-6, zero_load=False)):

@@ -36,7 +36,7 @@ def run(args):
     if args.figure:
         return _figure(args)
     pi = inputs.resolve(args)
-    eq.problem(pi.M, pi.theta, pi.gb, pi.alpha_ratio, s0=pi.s0).require_confined("two-patch states are", "lambda")
+    eq.problem(pi.M, pi.theta, pi.gb, pi.alpha_ratio, s0=pi.s0).require("two-patch", "two-patch states are")
     n = inputs.positive_count("n", args.n, 4)
     if pi.contact is not None:               # physical columns P [N/m], delta, delta_work [m] too
         bs = pi.contact.two_patch(n)

@@ -67,6 +67,9 @@ SCAN_FACTOR = 1.25        # upward scan for the first zone-end root: steps x 1.2
 SCAN_STEP = 0.05
 LAPACK_NODES = 96         # above: LAPACK's LU (blocked), below: the compiled one (no call overhead)
 GAP_END_SKIP = 1e-6        # gap_check, alpha* != 0: see there
+GAP_TOL_REL = 1e-6         # gap_check: a violation must exceed this times the state's gap scale (max(h0, max |h|)):
+                           # next to the ends the evaluated gap carries ~1e-8 of the engine's error (alpha* != 0,
+                           # 1e-6 eps past the end: it changes with the node count), the true gap there ~ d^(3/2)
 
 
 def zone_displacement(phi, zones, kernel):
@@ -300,7 +303,8 @@ GapCheck = namedtuple("GapCheck", ["min_gap", "max_zone_gap", "min_free_gap", "f
 
 def gap_check(state, n_points=400):
     """The gap on a grid of the exterior (clustered at the contact and zone ends): its minimum (>= 0 wanted),
-    its maximum on the zones (<= h0) and minimum off them (>= h0: else the law would put traction there).
+    its maximum on the zones (<= h0) and minimum off them (>= h0: else the law would put traction there), each up
+    to GAP_TOL_REL times the state's gap scale (a tolerance that scales with the state, not with Delta).
     alpha* != 0: the grid starts GAP_END_SKIP eps past the contact end, where the engine's off-table evaluation
     of the end enrichment (jkrcyl.numerics.arcs, a 4096-point grid) does not resolve the log kernel (errors up
     to ~1e-6 absolute within ~1e-7 eps of the end; the true gap there is ~ distance^(3/2) >= 0)."""
@@ -314,7 +318,7 @@ def gap_check(state, n_points=400):
     h = state.fields.gap(grid)
     in_zone = (grid <= c) | (grid >= math.pi - ct) if ct > 0 else (grid <= c)
     h0 = state.h0_over_Delta
-    tol = 1e-9 * max(1.0, h0)
+    tol = GAP_TOL_REL * max(h0, float(np.max(np.abs(h))))
     zone_max = h[in_zone].max() if in_zone.any() else -math.inf
     free_min = h[~in_zone].min() if (~in_zone).any() else math.inf
     return GapCheck(h.min(), zone_max, free_min,

@@ -34,7 +34,8 @@ from . import one_arc as _one
 
 START = 1e-3            # the trace starts at eps = START times the half-plane scale 2 m^(2/3) (at most 1e-3)
 EPS_MARGIN = 1e-3       # below the receding limit (the pair's pole)
-P_CAP = 20.0            # the branch is traced up to p = P_CAP m^(4/3) (20 times the adhesion load scale)
+P_CAP = 200.0           # the branch is traced up to p = P_CAP m^(4/3) (200 times the adhesion load scale, ~100
+                        # times the pull-off; beyond, solve warns: jkrcyl.BranchLimitWarning)
 FD_REL = 2e-4           # finite-difference steps in eps and c, relative to min(eps, c - eps)
 GAP_POINTS = 96         # Gauss-Legendre points of int h over the zone (the interface energy)
 ALL_POINTS = 160        # eps samples of a branch whose zone reaches round at the touch end

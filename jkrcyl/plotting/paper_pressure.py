@@ -3,12 +3,14 @@ into its bounded and unbounded (edge-singular) parts, through :meth:`jkrcyl.Cont
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 
 from .. import equilibria as eq
 from ..contact import Contact
 from ..materials import Materials
+from ..notices import ValidityWarning
 from . import style as st
 
 FIG04_CASES = [(0.2, 4.0, "(a)"), (0.2, 2.0, "(b)"), (0.2, 0.1, "(c)"), (0.2, -0.15, "(d)")]
@@ -34,9 +36,11 @@ def figure_contact(M, theta=1.0, alpha_ratio=0.0):
         raise ValueError(f"alpha_ratio: the pressure figures need alpha*/beta* in (-0.36, 0.143], got {alpha_ratio}")
     kappa_I = (1 + q) / (1 - q)
     mat = Materials(G=1.0, kappa=kappa, G_I=(kappa_I + 1) / (kappa + 1), kappa_I=kappa_I)
-    probe = Contact(R=2.0, Delta=1.0, w=1.0, materials=mat)
-    w = (M / probe.M) ** 2          # M is proportional to sqrt(w)
-    return Contact(R=2.0, Delta=1.0, w=w, materials=mat)
+    with warnings.catch_warnings():         # the figures are normalised: R = 2, Delta = 1 only fix the units
+        warnings.simplefilter("ignore", ValidityWarning)
+        probe = Contact(R=2.0, Delta=1.0, w=1.0, materials=mat)
+        w = (M / probe.M) ** 2          # M is proportional to sqrt(w)
+        return Contact(R=2.0, Delta=1.0, w=w, materials=mat)
 
 
 def pressure_limits(series, phi, eps, edge=0.97):

@@ -29,11 +29,6 @@ CUT_TOL = 1e-6            # bisection tolerance in M of the detachment limit
 DETACH_LW, FOLD_LW = 1.6, 0.7
 
 
-def neat_fit_stable(c):
-    """Fixed-load stability of the (super-critical) neat fit: dQ*/da < 0 above a_crit (erratum 'Fig. 11b')."""
-    return np.gradient(c["Q_star"], c["a"]) < 0
-
-
 def fig08(n=600, alpha_ratio=0.0):
     """The neat fit (Delta = 0, section 7.3) exists in closed form only: drawn at alpha* = 0 for any
     ``alpha_ratio`` (the title says so)."""
@@ -45,7 +40,7 @@ def fig08(n=600, alpha_ratio=0.0):
     for th, sty in zip(ths, styles):
         c = special.neat_fit_curve(th, n)
         lab = f"vartheta = {th:g}"
-        stable = neat_fit_stable(c)
+        stable = c["stable_load"]             # Q* dQ*/da < 0: dQ*/da < 0 above a_crit (erratum 'Fig. 11b')
         st.line(axs[0], c["Q_star"], c["eps"], c["feasible"], sty)
         st.band(axs[0], c["Q_star"], c["eps"], stable, sty.color)
         rows.add("a", lab, "Q_star", c["Q_star"], "eps", c["eps"], c["feasible"])
