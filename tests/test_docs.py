@@ -27,7 +27,7 @@ PAGES = [DOCS / "getting-started.md"] + sorted((DOCS / "guide").glob("*.md"))
 BLOCK = re.compile(r"^```(\w*)\n(.*?)^```", re.S | re.M)
 MAKE_TARGETS = {"make derive", "make test", "make explore", "make docs", "make figures", "make atlas"}
 LONG_RUNNING = {"jkrcyl explore"}          # a server: tests/test_explore.py runs it
-PUBLIC_MODULES = ["jkrcyl", "jkrcyl.contact", "jkrcyl.materials", "jkrcyl.critical", "jkrcyl.equilibria",
+PUBLIC_MODULES = ["jkrcyl", "jkrcyl.laws", "jkrcyl.contact", "jkrcyl.materials", "jkrcyl.critical", "jkrcyl.equilibria",
                   "jkrcyl.special", "jkrcyl.results", "jkrcyl.results.states", "jkrcyl.results.paths",
                   "jkrcyl.results.curves", "jkrcyl.fit.estimate", "jkrcyl.fit.result", "jkrcyl.fit.data",
                   "jkrcyl.plotting", "jkrcyl.atlas", "jkrcyl.explore.model", "jkrcyl.explore.view"]
@@ -108,7 +108,7 @@ def test_docstring_examples_run(name):
     module = importlib.import_module(name)
     finder = doctest.DocTestFinder(exclude_empty=True)
     runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
-    for test in finder.find(module, name, globs={"jkrcyl": importlib.import_module("jkrcyl")}):
+    for test in finder.find(module, name, globs=dict(vars(module), jkrcyl=importlib.import_module("jkrcyl"))):
         if test.name.startswith(name) and test.examples:
             runner.run(test)
     assert runner.failures == 0, f"{runner.failures} doctest failures in {name} (run pytest -s to see them)"
@@ -131,7 +131,8 @@ def _documented():
     return names, text
 
 
-@pytest.mark.parametrize("module, extra", [("jkrcyl", ()), ("jkrcyl.results", ()), ("jkrcyl.explore", ()),
+@pytest.mark.parametrize("module, extra", [("jkrcyl", ()), ("jkrcyl.laws", ()), ("jkrcyl.results", ()),
+                                           ("jkrcyl.explore", ()),
                                            ("jkrcyl.fit", ()), ("jkrcyl.plotting", ("plot_cycle",)),
                                            ("jkrcyl.atlas", ("classify", "default_grid", "draw"))])
 def test_api_reference_names_every_public_object(module, extra):

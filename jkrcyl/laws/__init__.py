@@ -14,8 +14,8 @@ energy release rate is twice w:
 ...     def edge_work(self, w):
 ...         return 2 * w
 >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
->>> a = jkrcyl.Contact(R=1e-2, Delta=1e-6, w=0.05, materials=m, law=Doubled()).pull_off().P
->>> b = jkrcyl.Contact(R=1e-2, Delta=1e-6, w=0.10, materials=m).pull_off().P
+>>> a = jkrcyl.Contact(R=1e-2, Delta=2e-6, w=0.05, materials=m, law=Doubled()).pull_off().P
+>>> b = jkrcyl.Contact(R=1e-2, Delta=2e-6, w=0.10, materials=m).pull_off().P
 >>> abs(a / b - 1) < 1e-12
 True
 """
