@@ -1,6 +1,6 @@
 """Benchmark (not a test): how fast the explorer (jkrcyl explore) redraws after a change.
 
-Run: python benchmarks/bench_explore.py [--repeats 7] [--no-browser]      (smoke: --repeats 2 --no-browser)
+Run: python benchmarks/bench_explore.py [--repeats 7] [--no-browser]   (smoke: --repeats 1 --no-browser --quick)
 
 Each change is a contact never seen before (w nudged), in a warm process (kernels compiled, the default picture
 drawn once), so that every redraw computes its branches, pull-offs, cycle and fields afresh.  Three levels:
@@ -112,6 +112,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--repeats", type=int, default=7)
     ap.add_argument("--no-browser", action="store_true")
+    ap.add_argument("--quick", action="store_true", help="the README pin only (the smoke test)")
     args = ap.parse_args(argv)
     print(f"bench_explore: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
           f"{args.repeats} changes per case, warm process")
@@ -124,7 +125,8 @@ def main(argv=None):
         print(f"browser: skipped (no Chromium at {CHROMIUM})")
     print(f"{'case':28s} {'level':9s} {'goal [s]':>9s} {'median [s]':>11s} {'worst [s]':>10s}  met")
     met_all = True
-    for i, (case, (changes, goal)) in enumerate(CASES.items()):
+    cases = list(CASES.items())[:1] if args.quick else list(CASES.items())
+    for i, (case, (changes, goal)) in enumerate(cases):
         for j, (level, f) in enumerate(levels.items()):
             times = f(changes, args.repeats, 1000 * (10 * i + j + 1))
             med, worst = float(np.median(times)), max(times)
