@@ -44,8 +44,11 @@ from .._validate import count, finite_scalar, theta as _check_theta
 from . import arcs as _arcs
 from . import arcs_enrich as _en
 from . import cohesive_kernels as _ck
+from . import cohesive_layer as _cl
 
 _BLAS = ThreadpoolController()
+_NO_LAYER = np.zeros(1)
+_NO_TABLE = np.zeros((0, _cl.N_SMOOTH))
 CohesiveState = namedtuple("CohesiveState", [
     "eps", "c", "c_top", "zones", "p", "delta_over_Delta", "delta_work_over_Delta", "h_pi_over_Delta", "k", "B",
     "m", "s0", "h0_over_Delta", "n", "fields"])
@@ -63,6 +66,10 @@ NODES_PER_ZONE = 11       # nodes per sqrt(eps/(c - eps)): the Bernstein ellipse
 NODES_MAX = 1024
 NODES_ALPHA = 8           # alpha* != 0: node counts in multiples of 8 (one enrichment table per count)
 NODES_MAX_ALPHA = 256
+LAYER_NODES = 96          # a zone needing more nodes than this has its end layer subtracted (contact_nodes)
+NODES_LAYER = 32          # nodes with the end layer subtracted (alpha* = 0: ~1e-12, tests/test_cohesive_layer.py)
+NODES_LAYER_ALPHA = 48    # the same at alpha* != 0 (the enrichment's algebraic rate: ~1e-10)
+LAMBDA_MAX = 1e4          # the transition parameter 4 s0/m^(2/3) supported (check_lambda)
 SCAN_FACTOR = 1.25        # upward scan for the first zone-end root: steps x 1.25, at most 0.05 rad
 SCAN_STEP = 0.05
 LAPACK_NODES = 96         # above: LAPACK's LU (blocked), below: the compiled one (no call overhead)
@@ -103,12 +110,23 @@ def _factor(A):
 class FixedContact:
     """The contact |phi| < eps with n nodes: one LU, the unit solutions and the linear functionals.
 
-    Unknown vector u of jkrcyl.numerics.arcs (node values, then the alpha* enrichment), in nu units, for v.
+    Unknown vector u of jkrcyl.numerics.arcs (node values, then the alpha* enrichment), in nu units, for v; with
+    layered=True the bottom zone's end layer is subtracted (jkrcyl.numerics.cohesive_layer): u is then v less
+    the layer, whose load, gap and traction the methods below add (a thin zone with a JKR-like node count).
     """
 
-    def __init__(self, eps, kernel, n):
-        self.eps, self.kernel = float(eps), kernel
-        sy = self.sys = _arcs.Arcs([(0.0, self.eps)], kernel, n)
+    def __init__(self, eps, kernel, n, layered=False):
+        eps = float(eps)
+        if not 0.0 < eps < math.pi:                   # NaN too: arcs.Arcs would drop the arc (an empty system)
+            raise ValueError(f"eps must be in (0, pi), got {eps!r}")
+        if not (isinstance(n, (int, np.integer)) and 8 <= n <= NODES_MAX):
+            raise ValueError(f"n must be an integer in [8, {NODES_MAX}], got {n!r}")
+        self.eps, self.kernel, self.layered = eps, kernel, bool(layered)
+        sy = self.sys = _arcs.Arcs([(0.0, self.eps)], kernel, int(n))
+        npt = sy._xt.size
+        if sy.A.shape != (npt, npt) or npt != sy.n + sy.m or not np.all(np.isfinite(sy.A)):
+            raise ValueError(f"eps = {eps!r}, n = {n!r}: the collocation system is not square and finite "
+                             f"(shape {sy.A.shape}, {npt} points)")
         phin = self.eps * sy._xt                      # collocation angles
         lu, perm = _factor(sy.A)
         nn, mm = sy.n, sy.m
@@ -118,8 +136,18 @@ class FixedContact:
         self.ek = ek / math.sqrt(2 * self.eps)
         U0, U1, kadj, k_0, k_1 = _ck.unit_solutions(lu, perm, phin, self.ek)
         sf, gf = _arcs._fine_grid()
+        if self.layered:                              # the layer's trig coefficients and smooth-moment table
+            gc, gs = (sy._gcs[0], sy._gss[0]) if mm else _cl.trig_coefficients(self.eps, _en.K_TRIG)
+            qmax = _cl.qmax_of(gc, gs)
+            smooth = _cl.smooth_table(sy._xt, self.eps, kernel.k0, kernel.k1, kernel.ar, sy.n)
+        else:
+            gc = gs = _NO_LAYER
+            qmax, smooth = 0, _NO_TABLE
+        gc = np.ascontiguousarray(gc, dtype=float)
         self.fx = (lu, perm, phin, U0, U1, k_0, k_1, kadj, kernel.k0, kernel.k1,
-                   kernel.ar, sy._ac, sy._ae, sy.s, sy.D, sy._Lam, sy._Sig, sy._omega, sy._gcs, sy._gss, sf, gf)
+                   kernel.ar, sy._ac, sy._ae, sy.s, sy.D, sy._Lam, sy._Sig, sy._omega, sy._gcs, sy._gss, sf, gf,
+                   self.layered, self.eps, np.ascontiguousarray(sy._xt, dtype=float), gc,
+                   np.ascontiguousarray(gs, dtype=float), qmax, smooth)
         nodes = self.eps * sy.s                       # u -> int v cos, int v (arcs.Arcs.moments)
         self.ep = self._moment_vector(np.cos(nodes))
         self.eb = self._moment_vector(np.ones_like(nodes))
@@ -131,14 +159,43 @@ class FixedContact:
         out[sy.n:] = [sy._mu[j] @ (sy.D @ f) for j in range(sy.m)]
         return out
 
+    def _zones(self, zones):
+        zones = np.ascontiguousarray(zones, dtype=float)
+        if zones.ndim != 2 or zones.shape[1] != 2:
+            raise ValueError(f"zones must be an array of (lo, hi) rows, got shape {zones.shape}")
+        return zones
+
+    def _u(self, u):
+        u = np.ascontiguousarray(u, dtype=float)
+        if u.shape != (self.sys.n + self.sys.m,):
+            raise ValueError(f"u must have {self.sys.n + self.sys.m} entries, got shape {u.shape}")
+        return u
+
     def solve(self, zones, s0):
-        """(delta/Delta, u) with k = 0 for the zone set: v for the rhs clearance + delta cos - s0 Z."""
-        return _ck.solve_zone(self.fx, np.ascontiguousarray(zones, dtype=float), float(s0))
+        """(delta/Delta, u) with k = 0 for the zone set: v for the rhs clearance + delta cos - s0 Z (u without
+        the end layer when it is subtracted)."""
+        return _ck.solve_zone(self.fx, self._zones(zones), float(s0))
+
+    def zone_unit(self, zones):
+        """The solution u of a unit zone traction (s0 = 1) at delta = 0 less the clearance solution."""
+        lu, perm = self.fx[:2]
+        return _ck.lu_solve(lu, perm, _ck.zone_rhs(self.fx, self._zones(zones)))
+
+    def layer_end(self, zones):
+        """The zone end c whose end layer is subtracted, or None."""
+        c = _ck.layer_end(self.fx, self._zones(zones))
+        return None if c < 0 else c
+
+    def load_width(self, u, zones, s0):
+        """(p, B) = (int nu cos(phi), int nu) of the state (u, zones, s0): contact, zones and end layer."""
+        pz, bz = _ck.zone_totals(self.fx, self._zones(zones), float(s0))
+        u = self._u(u)
+        return self.ep @ u + pz, self.eb @ u + bz
 
     def gap(self, phi, dn, u, zones, s0):
         """h/Delta at exterior angles phi."""
         phi = np.ascontiguousarray(np.atleast_1d(phi), dtype=float)
-        return _ck.gap(self.fx, phi, float(dn), u, np.ascontiguousarray(zones, dtype=float), float(s0))
+        return _ck.gap(self.fx, phi, float(dn), self._u(u), self._zones(zones), float(s0))
 
     def state(self, s0, h0, d_start, c_top=0.0):
         """(zone length or None, delta/Delta, u, h(pi)/Delta) in one compiled call (cohesive_kernels.state)."""
@@ -159,10 +216,20 @@ class FixedContact:
 
 
 def nodes_for(eps, zone, ar=0.0):
-    """Nodes for the contact |phi| < eps with its zone end at eps + zone (zone >= 0)."""
+    """Nodes for the contact |phi| < eps with its zone end at eps + zone (zone >= 0), the layer not subtracted."""
     need = NODES_PER_ZONE * math.sqrt(eps / zone) if zone > 0 else 0.0
     n = min(max(NODES_MIN, _arcs.nodes_for(eps, ar), need), NODES_MAX)
     return int(n) if ar == 0.0 else int(min(NODES_ALPHA * math.ceil(n / NODES_ALPHA), NODES_MAX_ALPHA))
+
+
+def contact_nodes(eps, zone, ar=0.0):
+    """(n, layered) for the contact |phi| < eps with its zone end at eps + zone: nodes_for while the zone needs
+    at most LAYER_NODES, else the end layer subtracted (jkrcyl.numerics.cohesive_layer) and NODES_LAYER nodes
+    (a multiple of NODES_ALPHA at alpha* != 0; at least the Griffith count of jkrcyl.numerics.arcs.nodes_for)."""
+    if zone <= 0 or NODES_PER_ZONE * math.sqrt(eps / zone) <= LAYER_NODES:
+        return nodes_for(eps, zone, ar), False
+    n = max(NODES_LAYER if ar == 0.0 else NODES_LAYER_ALPHA, _arcs.nodes_for(eps, ar))
+    return (int(n) if ar == 0.0 else int(NODES_ALPHA * math.ceil(n / NODES_ALPHA))), True
 
 
 def dugdale_zone(m, s0):
@@ -206,17 +273,19 @@ class _Fields:
             if sy.m:
                 val = val + C[0] @ _en._g(x[inside])[:sy.m]
             out[inside] = val / (e * np.sqrt(1 - x[inside] ** 2)) - self.s0
+            c = self.fc.layer_end(self.zones)
+            if c is not None:
+                out[inside] += self.s0 * _cl.traction(np.ascontiguousarray(phi[inside]), e, c)
         return out
 
 
 # --- states ------------------------------------------------------------------------------------------------
 def _state(eps, c, fc, dn, u, zones, m, s0, kernel, gb, n, c_top=0.0, h_pi=None):
-    load, width = zone_load(zones)
     if fc is not None:
-        p = fc.ep @ u - s0 * load
-        B = fc.eb @ u - s0 * width
+        p, B = fc.load_width(u, zones, s0)
         k = fc.ek @ u
     else:
+        load, width = zone_load(zones)
         p, B, k = -s0 * load, -s0 * width, 0.0
     f = _Fields(fc, dn, u, zones, s0, kernel)
     if c + c_top >= math.pi:
@@ -230,28 +299,42 @@ def _state(eps, c, fc, dn, u, zones, m, s0, kernel, gb, n, c_top=0.0, h_pi=None)
 
 
 def _law(m, s0, theta, gb, ar):
-    """Validated (m, s0, Kernel)."""
+    """Validated (m, s0, Kernel); ValueError naming sigma0 beyond the supported transition parameter."""
     m = finite_scalar("m", m, low=0.0)
     s0 = finite_scalar("s0", s0, low=0.0, low_open=True)
     theta = _check_theta(theta)
     gb = finite_scalar("gb", gb, low=0.0)
     ar = finite_scalar("ar", ar, low=-1.0, high=1.0, low_open=True)
+    check_lambda(m, s0)
     return m, s0, _arcs.Kernel(theta, gb, ar)
 
 
-def cohesive_state(eps, m, s0, theta, gb, ar=0.0, n=None, near=None):
+def check_lambda(m, s0):
+    """ValueError naming sigma0 and lambda when lambda = 4 s0/m^(2/3) (the transition parameter at Delta/R -> 0,
+    jkrcyl.numerics.cohesive_scales) exceeds LAMBDA_MAX: there the zone is thinner than double precision keeps
+    to ~1e-8 relative (c - eps ~ eps/lambda^2), and the states are JKR's to O(lambda^-2)."""
+    if m > 0 and 4 * s0 > LAMBDA_MAX * m ** (2 / 3):
+        lam = 4 * s0 / m ** (2 / 3)
+        raise ValueError(f"sigma0 is too large for the cohesive law: its transition parameter lambda = {lam:.4g} "
+                         f"must be at most {LAMBDA_MAX:g} (lambda is proportional to sigma0: at most "
+                         f"{LAMBDA_MAX / lam:.3g} times this sigma0); the Maugis-Dugdale states are JKR's there to "
+                         "O(lambda^-2): use the JKR law (sigma0=None)")
+
+
+def cohesive_state(eps, m, s0, theta, gb, ar=0.0, n=None, near=None, layered=None):
     """The Maugis-Dugdale state with the contact |phi| < eps (normalised; module docstring).
 
     eps: contact half-angle in (0, pi) [rad]; m = M vartheta (M_R* for vartheta = inf; m = 0: no adhesion, the
-    adhesionless state); s0 = sigma0 R beta*/(4 pi Delta) > 0; theta = vartheta >= 1/2 (inf: rigid cradle);
-    gb = (1/G_I)/beta*; ar = alpha*/beta*; n: nodes (default: from the zone length, ~1e-10).  The zone is the
+    adhesionless state); s0 = sigma0 R beta*/(4 pi Delta) > 0 (lambda = 4 s0/m^(2/3) <= LAMBDA_MAX); theta =
+    vartheta >= 1/2 (inf: rigid cradle); gb = (1/G_I)/beta*; ar = alpha*/beta*; n: nodes (default: from the zone
+    length, ~1e-10: :func:`contact_nodes`); layered: subtract the zone's end layer (None: where the zone needs
+    more than LAYER_NODES nodes; False with a thin zone needs n <= NODES_MAX nodes for it).  The zone is the
     bottom one |phi| < c with h(c) = h0 (the first root above the Dugdale estimate: the branch that tends to
     JKR as s0 -> inf), or the whole exterior when h <= h0 up to phi = pi (zones = 'all', c = pi; delta from
     k = 0 only).  The zone end can have several roots and the first one can turn back in eps (a fold of the
     branch): near = a zone length c - eps selects the root nearest to it (following a branch by continuity);
     None is returned when no root lies within a factor 100 of it.  Feasibility (gap >= 0, the law obeyed
-    everywhere): :func:`gap_check`.  ValueError when the zone is too thin for NODES_MAX nodes (lambda beyond a
-    few hundred): the state is JKR's there to O((c - eps)/eps) = O(lambda^-2).
+    everywhere): :func:`gap_check`.
     """
     eps = finite_scalar("eps", eps, low=0.0, high=math.pi, low_open=True)
     if eps >= math.pi:
@@ -265,11 +348,9 @@ def cohesive_state(eps, m, s0, theta, gb, ar=0.0, n=None, near=None):
         return _state(eps, eps, fc, dn, u, zones, m, s0, kernel, gb, fc.sys.n)
     h0 = m * m / s0
     d_guess = dugdale_zone(m, s0) if near is None else finite_scalar("near", near, low=0.0, low_open=True)
-    _check_resolved(eps, d_guess, kernel.ar, n)
-    n_fixed = nn
-    nn = nn or nodes_for(eps, d_guess, kernel.ar)
+    nn, lay = _nodes(eps, d_guess, kernel.ar, nn, layered)
     for _ in range(3):
-        fc = FixedContact(eps, kernel, nn)
+        fc = FixedContact(eps, kernel, nn, lay)
         if near is None:
             d, dn, u, h_pi = fc.state(s0, h0, d_guess / 2)
         else:
@@ -279,20 +360,23 @@ def cohesive_state(eps, m, s0, theta, gb, ar=0.0, n=None, near=None):
             dn, u = fc.solve(zones_of(eps + d), s0)
             h_pi = None
         c = math.pi if d is None else eps + d
-        need = n_fixed or nodes_for(eps, c - eps, kernel.ar)
-        if need <= nn:
+        need, lay_need = _nodes(eps, c - eps, kernel.ar, None if n is None else nn, layered)
+        if need <= nn and (lay or not lay_need):
             break
-        _check_resolved(eps, c - eps, kernel.ar, n)
-        nn, d_guess = need, (c - eps if near is None else near)
+        nn, lay, d_guess = need, lay or lay_need, (c - eps if near is None else near)
     return _state(eps, c, fc, dn, u, zones_of(c), m, s0, kernel, gb, nn, h_pi=h_pi)
 
 
-def _check_resolved(eps, zone, ar, n):
-    """The zone must be resolved: nodes_for within twice the cap (about 1e-6 at the cap), unless n is given."""
-    if n is None and zone < eps * (NODES_PER_ZONE / (2 * (NODES_MAX if ar == 0.0 else NODES_MAX_ALPHA))) ** 2:
-        raise ValueError(f"s0 too large for the collocation: the zone c - eps ~ {zone:.3g} rad is below the "
-                         f"resolution of {NODES_MAX if ar == 0.0 else NODES_MAX_ALPHA} nodes at eps = {eps:.6g} "
-                         "(lambda beyond a few hundred); the state is JKR's there to O((c - eps)/eps)")
+def _nodes(eps, zone, ar, n, layered):
+    """(n, layered) of cohesive_state: contact_nodes unless n or layered is given."""
+    n_auto, lay = contact_nodes(eps, zone, ar)
+    if layered is not None and bool(layered) != lay:
+        lay = bool(layered)
+        n_auto = nodes_for(eps, zone, ar) if not lay else contact_nodes(eps, 0.0, ar)[0]
+        if not lay and n is None and NODES_PER_ZONE * math.sqrt(eps / zone) > 2 * NODES_MAX:
+            raise ValueError(f"layered: the zone c - eps ~ {zone:.3g} rad at eps = {eps:.6g} needs more than "
+                             f"{NODES_MAX} nodes without its end layer subtracted (layered=None or True)")
+    return (n_auto if n is None else n), lay
 
 
 GapCheck = namedtuple("GapCheck", ["min_gap", "max_zone_gap", "min_free_gap", "feasible"])
