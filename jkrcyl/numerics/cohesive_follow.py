@@ -99,9 +99,22 @@ def _turn_ok(law, y, t):
     return t_new is not None and t_new @ t >= TURN
 
 
+def _step_log_d(x):
+    """The finite-difference step in log(c - eps): 0.1 FD_STEP, at least ~1e-9 c/(c - eps) (c = eps + d holds d
+    only to ulp(c): a thin zone's d to ulp(c)/d relative)."""
+    d = math.exp(x[1])
+    return max(0.1 * FD_STEP, 1e-9 * (math.exp(x[0]) + d) / d)
+
+
+def log_d_resolution(x):
+    """How finely log(c - eps) is resolved at x: a few ulp(c)/(c - eps) (stop a secant there)."""
+    d = math.exp(x[1])
+    return 4e-16 * (math.exp(x[0]) + d) / d
+
+
 def _side(law, x):
     """The sign of the residual's slope in c at fixed eps (no new LU): opposite on a fold's two sides."""
-    e = 0.1 * FD_STEP
+    e = _step_log_d(x)
     return math.copysign(1.0, residual(law, x + np.array([0.0, e])) - residual(law, x - np.array([0.0, e])))
 
 
@@ -109,7 +122,7 @@ def _tangent(law, x, prev):
     """(unit tangent of the branch at x, oriented along prev; the sign of the residual's slope in c at fixed
     eps, opposite on a fold's two sides): one LU for the slope in eps (forward difference), none in c."""
     f = lambda dx: residual(law, x + np.asarray(dx))
-    e, ec = FD_STEP, 0.1 * FD_STEP
+    e, ec = FD_STEP, _step_log_d(x)
     g = np.array([(f((e, 0.0)) - f((0.0, 0.0))) / e, (f((0.0, ec)) - f((0.0, -ec))) / (2 * ec)])
     norm = math.hypot(*g)
     if not (np.all(np.isfinite(g)) and norm > 0):     # off the plane, or a residual flat to round-off: no tangent
@@ -126,7 +139,8 @@ def fixed_eps(law, pred, h):
     eps = math.exp(pred[0])
     if eps + math.exp(pred[1]) >= math.pi:
         return None
-    d = _ck.zone_end_secant(law.fixed(eps).fx, eps, law.s0, law.h0, float(pred[1]), float(h), 0.0)
+    d = _ck.zone_end_secant(law.fixed(eps).fx, eps, law.s0, law.h0, float(pred[1]), float(h), 0.0,
+                            log_d_resolution(pred))
     return None if d < 0 else np.array([pred[0], math.log(d)])
 
 
@@ -136,13 +150,16 @@ def normal_line(law, pred, t, h):
     f = lambda tau: residual(law, pred + tau * n)
     a, b = 0.0, 1e-3 * h
     fa, fb = f(a), f(b)
+    tol = max(1e-13 * max(1.0, np.abs(pred).max()), log_d_resolution(pred))
     for _ in range(SECANT_STEPS):
-        if not (np.isfinite(fa) and np.isfinite(fb)) or fb == fa:
+        if not (np.isfinite(fa) and np.isfinite(fb)):
             return None
+        if fb == fa:                          # flat: converged at the resolution of d, else stalled
+            return pred + b * n if abs(b - a) <= 4 * tol else None
         a, fa, b = b, fb, b - fb * (b - a) / (fb - fa)
         if abs(b) > 0.5 * h:
             return None
-        if abs(b - a) <= 1e-13 * max(1.0, np.abs(pred).max()):
+        if abs(b - a) <= tol:
             return pred + b * n
         fb = f(b)
     return None

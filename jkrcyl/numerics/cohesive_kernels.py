@@ -393,11 +393,12 @@ def zone_end_near(fx, eps, s0, h0, d_near, c_top):
 
 
 @njit(cache=True)
-def zone_end_secant(fx, eps, s0, h0, log_d, span, c_top):
+def zone_end_secant(fx, eps, s0, h0, log_d, span, c_top, resolution=0.0):
     """The zone length d with h(eps + d) = h0 by the secant method in log d from log_d (and log_d + span/1000),
     within span of log_d: the root of the branch through a predicted point, also where a fold of the zone end in
     eps puts a second root close by (which a bracket search can step over); -1 when the iteration leaves that
-    interval or (pi - c_top - eps), stalls, or takes more than 30 steps."""
+    interval or (pi - c_top - eps), stalls, or takes more than 30 steps.  Converged once a step is below 1e-13 (relative)
+    or resolution (how finely log d is resolved: c = eps + d holds d to ulp(c))."""
     args = (fx, eps, s0, h0, c_top)
     top = math.log(PI - c_top - eps)
     a, b = log_d, log_d + 1e-3 * span
@@ -407,13 +408,15 @@ def zone_end_secant(fx, eps, s0, h0, log_d, span, c_top):
     for _ in range(30):
         if fb == 0.0:
             return math.exp(b)
-        if fb == fa or not (math.isfinite(fa) and math.isfinite(fb)):
+        if not (math.isfinite(fa) and math.isfinite(fb)):
             return -1.0
+        if fb == fa:                          # flat: converged at the resolution of d, else stalled
+            return math.exp(b) if abs(b - a) <= 4 * max(resolution, 1e-13 * max(1.0, abs(b))) else -1.0
         c = b - fb * (b - a) / (fb - fa)
         if not abs(c - log_d) <= span or c >= top:
             return -1.0
         a, fa, b = b, fb, c
-        if abs(b - a) <= 1e-13 * max(1.0, abs(b)):
+        if abs(b - a) <= max(1e-13 * max(1.0, abs(b)), resolution):
             return math.exp(b)
         fb = _residual(math.exp(b), args)
     return -1.0

@@ -36,9 +36,10 @@ from .arcs_kernels import _ell, _ell3
 PI = math.pi
 TWO_PI = 2 * math.pi
 LOG2 = math.log(2.0)
-W_DIRECT = 0.5      # |w| <= this: the moment sums term by term (fast convergence)
+W_DIRECT = 0.05     # |w| <= this: the moment sums term by term (a few terms); above, by parity tails
 W_CLOSED = 0.85     # |w| >= this: parity tails from atanh and log(1 - w^2); between: summed far out, recurred back
-N_SMOOTH = 48       # Gauss-Chebyshev points for the Chebyshev moments of the analytic rest of K
+N_SMOOTH = 32       # Gauss-Chebyshev points for the Chebyshev moments of the analytic rest of K (its nearest
+                    # singularity, |t| = 2 pi (4 pi with the images), lies >= 2 beyond [-1, 1]: ~1e-16)
 TAIL = 1e-18        # series stop once |w|^J is below this
 _BERN = np.array([bernoulli(40)[n] / factorial(n + 1, exact=False) for n in range(41)])  # Li2 series
 _S = np.cos((np.arange(N_SMOOTH) + 0.5) * np.pi / N_SMOOTH)
