@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 from dataclasses import InitVar, dataclass
 
-from .._validate import finite_scalar, theta as _check_theta
+from .._validate import HUGE, TINY, finite_scalar, theta as _check_theta
 from ..numerics import kernels as _k
 
 
@@ -136,8 +136,14 @@ class Problem:
         """The normalised problem of a :class:`jkrcyl.Contact` with Delta > 0, with its edge law (Griffith, or
         Dugdale(s0) when the contact has sigma0: s0 = sigma0 R beta*/(4 pi Delta))."""
         m = contact.materials
-        edge = GRIFFITH if contact.sigma0 is None else Dugdale(contact.sigma0 * contact.R * m.beta /
-                                                                (4 * math.pi * contact.Delta))
+        edge = GRIFFITH
+        if contact.sigma0 is not None:
+            unit = contact.R * m.beta / (4 * math.pi * contact.Delta)          # s0 per sigma0 [1/Pa]
+            if not TINY <= contact.sigma0 * unit <= HUGE:
+                raise ValueError(f"sigma0 must be in [{TINY / unit:.3g}, {HUGE / unit:.3g}] Pa for this contact (its "
+                                 f"normalised s0 = sigma0 R beta*/(4 pi Delta) within the supported domain), got "
+                                 f"{contact.sigma0!r}")
+            edge = Dugdale(contact.sigma0 * unit)
         return cls(contact.M, m.theta, m.inv_G_I / m.beta, m.alpha_ratio, edge, False)
 
     @classmethod
