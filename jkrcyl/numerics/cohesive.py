@@ -66,9 +66,9 @@ NODES_PER_ZONE = 11       # nodes per sqrt(eps/(c - eps)): the Bernstein ellipse
 NODES_MAX = 1024
 NODES_ALPHA = 8           # alpha* != 0: node counts in multiples of 8 (one enrichment table per count)
 NODES_MAX_ALPHA = 256
-LAYER_NODES = 96          # a zone needing more nodes than this has its end layer subtracted (contact_nodes)
+LAYER_NODES = 48          # a zone needing more nodes than this has its end layer subtracted (contact_nodes)
 NODES_LAYER = 32          # nodes with the end layer subtracted (alpha* = 0: ~1e-12, tests/test_cohesive_layer.py)
-NODES_LAYER_ALPHA = 48    # the same at alpha* != 0 (the enrichment's algebraic rate: ~1e-10)
+NODES_LAYER_ALPHA = 64    # the same at alpha* != 0 (the enrichment's algebraic rate: ~1e-9 at |alpha*/beta*| = 0.2)
 LAMBDA_MAX = 1e4          # the transition parameter 4 s0/m^(2/3) supported (check_lambda)
 SCAN_FACTOR = 1.25        # upward scan for the first zone-end root: steps x 1.25, at most 0.05 rad
 SCAN_STEP = 0.05

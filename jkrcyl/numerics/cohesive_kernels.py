@@ -195,14 +195,14 @@ def end_enrichment(x, e, k0, k1, ar, out):
     """out[j] = -int_0^pi K(e (x - cos theta)) g_j(cos theta) dtheta at 1 < x (a point off the contact end; the
     enrichment functions g_j of jkrcyl.numerics.arcs_enrich), by Gauss-Legendre on panels graded geometrically
     toward theta = 0 at the scale theta_s = sqrt(2 (x - 1)) of the kernel's near log singularity (the 4096-point
-    fine grid of the engine loses digits there: ~1e-8 at x - 1 = 3e-6, ~1e-4 at 1e-7)."""
+    fine grid of the engine loses digits there: ~1e-8 at x - 1 = 3e-6, ~1e-4 at 1e-7; tests/test_cohesive_layer.py)."""
     m = out.size
     for j in range(m):
         out[j] = 0.0
     ths = math.sqrt(2.0 * (x - 1.0))
-    # panels: geometric toward 0 from ths/16 to pi/2, and toward pi from pi/2 to pi - 1e-5 (g_j ~ (pi - theta)^2
-    # log(pi - theta) there), each with 12 Gauss-Legendre points
-    a = ths / 16
+    # panels: geometric toward 0 from min(ths/16, 1e-4) to pi/2 (g_j ~ theta^2 log(theta) at 0), and toward pi
+    # from pi/2 to pi - 1e-5 (g_j ~ (pi - theta)^2 log(pi - theta) there), each with 12 Gauss-Legendre points
+    a = min(ths / 16, 1e-4)
     k = 0
     while True:
         if k == 0:
