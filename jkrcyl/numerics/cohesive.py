@@ -21,8 +21,13 @@ so Chebyshev converges like rho^-n with rho the Bernstein ellipse through c/eps:
 for near-touching arcs in jkrcyl.twopatch).  The zone length is first estimated by the Dugdale crack value
 c - eps ~ m^2/(4 s0^2) and the node count corrected once from the root.  Measured (lambda = 10, eps = 0.8,
 rho = 1.263): errors 5e-5, 1e-7, 2e-9, 7e-13 at n = 24, 48, 64, 96 (benchmarks/bench_cohesive.py); the
-default (11 sqrt(eps/(c - eps)), at least 24) gives ~1e-9.  Up to NODES_MAX = 1024 nodes (256 at alpha* != 0),
-i.e. lambda up to a few hundred; beyond, cohesive_state refuses (the state is JKR's to O(lambda^-2) there).
+default (11 sqrt(eps/(c - eps)), at least 24) gives ~1e-9.  Where that exceeds LAYER_NODES (a thin zone,
+c - eps ~ eps/lambda^2: lambda above ~5) the zone's end layer is subtracted in closed form instead
+(jkrcyl.numerics.cohesive_layer: the half-plane Maugis traction, whose potential is exact) and the rest is
+smooth: 32 nodes (64 at alpha* != 0) resolve any lambda up to LAMBDA_MAX = 1e4 (~1e-10 at alpha* = 0, ~1e-9 at
+|alpha*/beta*| = 0.2; tests/test_cohesive_layer.py), beyond which cohesive_state refuses naming sigma0 (c = eps + d
+keeps d only to ulp(c), ~1e-8 relative at 1e4; the states are JKR's there to O(lambda^-2)).  The fixed contact,
+its checks and the node policy: jkrcyl.numerics.cohesive_contact.
 
 JKR limit: at a fixed contact the states differ from the Griffith ones by C/lambda^2 (the zone length over the
 contact, C = O(1): 0.77 for p at M = 0.4, eps = 0.8; 1e-4 relative is reached near lambda = 100 there); the
@@ -36,8 +41,6 @@ import math
 from collections import namedtuple
 
 import numpy as np
-from scipy.linalg.lapack import dgetrf as _dgetrf
-from threadpoolctl import ThreadpoolController
 
 from ..generated import cohesive as _gc
 from .._validate import count, finite_scalar, theta as _check_theta
@@ -45,10 +48,9 @@ from . import arcs as _arcs
 from . import arcs_enrich as _en
 from . import cohesive_kernels as _ck
 from . import cohesive_layer as _cl
+from .cohesive_contact import (FixedContact, contact_nodes, nodes_for, LAPACK_NODES, LAYER_NODES, NODES_ALPHA,  # noqa: F401
+                               NODES_LAYER, NODES_LAYER_ALPHA, NODES_MAX, NODES_MAX_ALPHA, NODES_MIN, NODES_PER_ZONE)
 
-_BLAS = ThreadpoolController()
-_NO_LAYER = np.zeros(1)
-_NO_TABLE = np.zeros((0, _cl.N_SMOOTH))
 CohesiveState = namedtuple("CohesiveState", [
     "eps", "c", "c_top", "zones", "p", "delta_over_Delta", "delta_work_over_Delta", "h_pi_over_Delta", "k", "B",
     "m", "s0", "h0_over_Delta", "n", "fields"])
@@ -61,18 +63,7 @@ paper's delta), delta_work_over_Delta = delta/Delta + (gb/2) p (work conjugate o
 at phi = pi; k: edge coefficient at the contact end (0: finite stress); B = int nu dphi; m, s0, h0_over_Delta:
 the law; n: collocation nodes (0 without contact); fields: .gap(phi), .pressure(phi)."""
 
-NODES_MIN = 24            # alpha* = 0: a contact far from its zone ends (spectral, ~1e-13)
-NODES_PER_ZONE = 11       # nodes per sqrt(eps/(c - eps)): the Bernstein ellipse through the zone end (~1e-9)
-NODES_MAX = 1024
-NODES_ALPHA = 8           # alpha* != 0: node counts in multiples of 8 (one enrichment table per count)
-NODES_MAX_ALPHA = 256
-LAYER_NODES = 48          # a zone needing more nodes than this has its end layer subtracted (contact_nodes)
-NODES_LAYER = 32          # nodes with the end layer subtracted (alpha* = 0: ~1e-12, tests/test_cohesive_layer.py)
-NODES_LAYER_ALPHA = 64    # the same at alpha* != 0 (the enrichment's algebraic rate: ~1e-9 at |alpha*/beta*| = 0.2)
 LAMBDA_MAX = 1e4          # the transition parameter 4 s0/m^(2/3) supported (check_lambda)
-SCAN_FACTOR = 1.25        # upward scan for the first zone-end root: steps x 1.25, at most 0.05 rad
-SCAN_STEP = 0.05
-LAPACK_NODES = 96         # above: LAPACK's LU (blocked), below: the compiled one (no call overhead)
 GAP_END_SKIP = 1e-6        # gap_check, alpha* != 0: see there
 
 
@@ -95,141 +86,6 @@ def zone_load(zones):
         z = _gc.zone_load(hi=hi, lo=lo)
         load, width = load + z.load, width + z.width
     return load, width
-
-
-def _factor(A):
-    """LU of the collocation matrix: compiled for small systems, LAPACK getrf on one BLAS thread above
-    LAPACK_NODES (threaded BLAS calls leave workers spinning that slow the small solves that follow)."""
-    if A.shape[0] <= LAPACK_NODES:
-        return _ck.lu_factor(A)
-    with _BLAS.limit(limits=1, user_api="blas"):
-        lu, piv, _ = _dgetrf(A)
-    return lu, _ck.perm_of_pivots(piv)
-
-
-class FixedContact:
-    """The contact |phi| < eps with n nodes: one LU, the unit solutions and the linear functionals.
-
-    Unknown vector u of jkrcyl.numerics.arcs (node values, then the alpha* enrichment), in nu units, for v; with
-    layered=True the bottom zone's end layer is subtracted (jkrcyl.numerics.cohesive_layer): u is then v less
-    the layer, whose load, gap and traction the methods below add (a thin zone with a JKR-like node count).
-    """
-
-    def __init__(self, eps, kernel, n, layered=False):
-        eps = float(eps)
-        if not 0.0 < eps < math.pi:                   # NaN too: arcs.Arcs would drop the arc (an empty system)
-            raise ValueError(f"eps must be in (0, pi), got {eps!r}")
-        if not (isinstance(n, (int, np.integer)) and 8 <= n <= NODES_MAX):
-            raise ValueError(f"n must be an integer in [8, {NODES_MAX}], got {n!r}")
-        self.eps, self.kernel, self.layered = eps, kernel, bool(layered)
-        sy = self.sys = _arcs.Arcs([(0.0, self.eps)], kernel, int(n))
-        npt = sy._xt.size
-        if sy.A.shape != (npt, npt) or npt != sy.n + sy.m or not np.all(np.isfinite(sy.A)):
-            raise ValueError(f"eps = {eps!r}, n = {n!r}: the collocation system is not square and finite "
-                             f"(shape {sy.A.shape}, {npt} points)")
-        phin = self.eps * sy._xt                      # collocation angles
-        lu, perm = _factor(sy.A)
-        nn, mm = sy.n, sy.m
-        ek = np.empty(nn + mm)                        # u -> k (arcs.Arcs.edge)
-        ek[:nn] = -sy.D.sum(axis=0)
-        ek[nn:] = -_en.G_END[:mm]
-        self.ek = ek / math.sqrt(2 * self.eps)
-        U0, U1, kadj, k_0, k_1 = _ck.unit_solutions(lu, perm, phin, self.ek)
-        sf, gf = _arcs._fine_grid()
-        if self.layered:                              # the layer's trig coefficients and smooth-moment table
-            gc, gs = (sy._gcs[0], sy._gss[0]) if mm else _cl.trig_coefficients(self.eps, _en.K_TRIG)
-            qmax = _cl.qmax_of(gc, gs)
-            smooth = _cl.smooth_table(sy._xt, self.eps, kernel.k0, kernel.k1, kernel.ar, sy.n)
-        else:
-            gc = gs = _NO_LAYER
-            qmax, smooth = 0, _NO_TABLE
-        gc = np.ascontiguousarray(gc, dtype=float)
-        self.fx = (lu, perm, phin, U0, U1, k_0, k_1, kadj, kernel.k0, kernel.k1,
-                   kernel.ar, sy._ac, sy._ae, sy.s, sy.D, sy._Lam, sy._Sig, sy._omega, sy._gcs, sy._gss, sf, gf,
-                   self.layered, self.eps, np.ascontiguousarray(sy._xt, dtype=float), gc,
-                   np.ascontiguousarray(gs, dtype=float), qmax, smooth)
-        nodes = self.eps * sy.s                       # u -> int v cos, int v (arcs.Arcs.moments)
-        self.ep = self._moment_vector(np.cos(nodes))
-        self.eb = self._moment_vector(np.ones_like(nodes))
-
-    def _moment_vector(self, f):
-        sy = self.sys
-        out = np.empty(sy.n + sy.m)
-        out[:sy.n] = math.pi / sy.n * f
-        out[sy.n:] = [sy._mu[j] @ (sy.D @ f) for j in range(sy.m)]
-        return out
-
-    def _zones(self, zones):
-        zones = np.ascontiguousarray(zones, dtype=float)
-        if zones.ndim != 2 or zones.shape[1] != 2:
-            raise ValueError(f"zones must be an array of (lo, hi) rows, got shape {zones.shape}")
-        return zones
-
-    def _u(self, u):
-        u = np.ascontiguousarray(u, dtype=float)
-        if u.shape != (self.sys.n + self.sys.m,):
-            raise ValueError(f"u must have {self.sys.n + self.sys.m} entries, got shape {u.shape}")
-        return u
-
-    def solve(self, zones, s0):
-        """(delta/Delta, u) with k = 0 for the zone set: v for the rhs clearance + delta cos - s0 Z (u without
-        the end layer when it is subtracted)."""
-        return _ck.solve_zone(self.fx, self._zones(zones), float(s0))
-
-    def zone_unit(self, zones):
-        """The solution u of a unit zone traction (s0 = 1) at delta = 0 less the clearance solution."""
-        lu, perm = self.fx[:2]
-        return _ck.lu_solve(lu, perm, _ck.zone_rhs(self.fx, self._zones(zones)))
-
-    def layer_end(self, zones):
-        """The zone end c whose end layer is subtracted, or None."""
-        c = _ck.layer_end(self.fx, self._zones(zones))
-        return None if c < 0 else c
-
-    def load_width(self, u, zones, s0):
-        """(p, B) = (int nu cos(phi), int nu) of the state (u, zones, s0): contact, zones and end layer."""
-        pz, bz = _ck.zone_totals(self.fx, self._zones(zones), float(s0))
-        u = self._u(u)
-        return self.ep @ u + pz, self.eb @ u + bz
-
-    def gap(self, phi, dn, u, zones, s0):
-        """h/Delta at exterior angles phi."""
-        phi = np.ascontiguousarray(np.atleast_1d(phi), dtype=float)
-        return _ck.gap(self.fx, phi, float(dn), self._u(u), self._zones(zones), float(s0))
-
-    def state(self, s0, h0, d_start, c_top=0.0):
-        """(zone length or None, delta/Delta, u, h(pi)/Delta) in one compiled call (cohesive_kernels.state)."""
-        d, dn, u, h_pi = _ck.state(self.fx, self.eps, float(s0), float(h0), float(d_start), SCAN_FACTOR, SCAN_STEP,
-                                   float(c_top))
-        return (None if d < 0 else d), dn, u, h_pi
-
-    def zone_end_near(self, s0, h0, d_near, c_top=0.0):
-        """The zone length nearest to d_near with h(c) = h0 (None: none within a factor 100)."""
-        d = _ck.zone_end_near(self.fx, self.eps, float(s0), float(h0), float(d_near), float(c_top))
-        return None if d < 0 else d
-
-    def zone_end(self, s0, h0, d_start, c_top=0.0):
-        """Zone length c - eps with h(c) = h0 (None: h < h0 up to pi - c_top); see cohesive_kernels.zone_end."""
-        d = _ck.zone_end(self.fx, self.eps, float(s0), float(h0), float(d_start), SCAN_FACTOR, SCAN_STEP,
-                         float(c_top))
-        return None if d < 0 else d
-
-
-def nodes_for(eps, zone, ar=0.0):
-    """Nodes for the contact |phi| < eps with its zone end at eps + zone (zone >= 0), the layer not subtracted."""
-    need = NODES_PER_ZONE * math.sqrt(eps / zone) if zone > 0 else 0.0
-    n = min(max(NODES_MIN, _arcs.nodes_for(eps, ar), need), NODES_MAX)
-    return int(n) if ar == 0.0 else int(min(NODES_ALPHA * math.ceil(n / NODES_ALPHA), NODES_MAX_ALPHA))
-
-
-def contact_nodes(eps, zone, ar=0.0):
-    """(n, layered) for the contact |phi| < eps with its zone end at eps + zone: nodes_for while the zone needs
-    at most LAYER_NODES, else the end layer subtracted (jkrcyl.numerics.cohesive_layer) and NODES_LAYER nodes
-    (a multiple of NODES_ALPHA at alpha* != 0; at least the Griffith count of jkrcyl.numerics.arcs.nodes_for)."""
-    if zone <= 0 or NODES_PER_ZONE * math.sqrt(eps / zone) <= LAYER_NODES:
-        return nodes_for(eps, zone, ar), False
-    n = max(NODES_LAYER if ar == 0.0 else NODES_LAYER_ALPHA, _arcs.nodes_for(eps, ar))
-    return (int(n) if ar == 0.0 else int(NODES_ALPHA * math.ceil(n / NODES_ALPHA))), True
 
 
 def dugdale_zone(m, s0):

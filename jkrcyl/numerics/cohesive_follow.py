@@ -15,6 +15,7 @@ from collections import namedtuple
 import numpy as np
 
 from . import cohesive_kernels as _ck
+from . import cohesive_roots as _cr
 
 LOG_PI = math.log(math.pi)
 Followed = namedtuple("Followed", ["points", "reason"])
@@ -139,7 +140,7 @@ def fixed_eps(law, pred, h):
     eps = math.exp(pred[0])
     if eps + math.exp(pred[1]) >= math.pi:
         return None
-    d = _ck.zone_end_secant(law.fixed(eps).fx, eps, law.s0, law.h0, float(pred[1]), float(h), 0.0,
+    d = _cr.zone_end_secant(law.fixed(eps).fx, eps, law.s0, law.h0, float(pred[1]), float(h), 0.0,
                             log_d_resolution(pred))
     return None if d < 0 else np.array([pred[0], math.log(d)])
 
