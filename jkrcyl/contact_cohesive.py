@@ -74,8 +74,8 @@ class CohesiveLaw:
         (jkrcyl.numerics.cohesive.cohesive_state, ~1e-10), the root that tends to JKR as sigma0 -> inf.  A contact
         size picks one state of that branch below its first turn in eps (curve().eps along the branch); where the
         branch turns back (large M at lambda of a few), widths beyond the turn have two states or none, and this
-        gives the first root, which is then off the traced branch.  ValueError where the zone is too thin to
-        resolve (lambda beyond a few hundred: JKR's state to O(lambda^-2))."""
+        gives the first root, which is then off the traced branch.  ValueError naming sigma0 beyond lambda = 1e4
+        (thin zones up to there: the Dugdale end layer subtracted; beyond, JKR's state to O(lambda^-2))."""
         raw = np.asarray(eps)
         if raw.dtype.kind not in "iuf":
             raise ValueError(f"eps must be real contact half-angles in (0, pi) [rad], got dtype {raw.dtype}")
