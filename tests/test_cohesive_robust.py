@@ -114,6 +114,10 @@ def test_fixed_contact_checks_what_callers_pass():
         fc.gap(1.0, dn, u[:-1], co.zones_of(0.51), 1.0)
     with pytest.raises(ValueError, match="^u"):
         fc.load_width(np.zeros(5), co.zones_of(0.51), 1.0)
+    with pytest.raises(ValueError, match="^zones"):
+        co.zone_displacement(0.3, np.zeros((2, 1)), arcs.Kernel(1.0, 0.5))
+    with pytest.raises(ValueError, match="^phi"):
+        fc.gap(np.array([0.6, math.nan]), dn, u, co.zones_of(0.51), 1.0)
     assert np.isfinite(fc.gap(np.array([0.6, 3.0]), dn, u, co.zones_of(0.51), 1.0)).all()
 
 

@@ -69,8 +69,11 @@ GAP_END_SKIP = 1e-6        # gap_check, alpha* != 0: see there
 
 def zone_displacement(phi, zones, kernel):
     """Z(phi) = int over the zones of K(phi - psi) dpsi; zones: (k, 2) array of (lo, hi) in [-pi, pi]."""
-    phi = np.ascontiguousarray(np.atleast_1d(phi), dtype=float)
-    return _ck.zone_sum(phi, np.ascontiguousarray(zones, dtype=float), kernel.k0, kernel.k1, kernel.ar)
+    phi = np.ascontiguousarray(np.atleast_1d(phi), dtype=float).ravel()
+    zones = np.ascontiguousarray(zones, dtype=float)
+    if zones.ndim != 2 or zones.shape[1] != 2:
+        raise ValueError(f"zones must be an array of (lo, hi) rows, got shape {zones.shape}")
+    return _ck.zone_sum(phi, zones, kernel.k0, kernel.k1, kernel.ar)
 
 
 def zones_of(c, c_top=0.0):

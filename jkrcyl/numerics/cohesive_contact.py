@@ -132,7 +132,9 @@ class FixedContact:
 
     def gap(self, phi, dn, u, zones, s0):
         """h/Delta at exterior angles phi."""
-        phi = np.ascontiguousarray(np.atleast_1d(phi), dtype=float)
+        phi = np.ascontiguousarray(np.atleast_1d(phi), dtype=float).ravel()
+        if not np.all(np.isfinite(phi)):
+            raise ValueError(f"phi must be finite angles, got {phi[~np.isfinite(phi)][:3]!r}")
         return _ck.gap(self.fx, phi, float(dn), self._u(u), self._zones(zones), float(s0))
 
     def state(self, s0, h0, d_start, c_top=0.0):
