@@ -156,8 +156,8 @@ class CohesiveLaw:
         Raises
         ------
         ValueError
-            Naming eps (not real, outside (0, pi)), or the law's parameter where the zone is too thin to resolve
-            (lambda beyond a few hundred, where JKR's state is within O(lambda^-2)).
+            Naming eps (not real, outside (0, pi)), or sigma0 beyond lambda = 1e4 (thin zones up to there: the
+            Dugdale end layer subtracted; beyond, JKR's state to O(lambda^-2)).
 
         Examples
         --------

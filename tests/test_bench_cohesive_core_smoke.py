@@ -1,4 +1,4 @@
-"""benchmarks/bench_cohesive_core.py in smoke mode (two repeats, no map, no lambda = 50) so that the benchmark
+"""benchmarks/bench_cohesive_core.py in smoke mode (two repeats, no map, lambda 1, 3, 10, 1000) so that the benchmark
 cannot rot; times are not checked."""
 import pathlib
 import subprocess

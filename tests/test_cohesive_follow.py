@@ -37,7 +37,7 @@ def law_of(lam, M):
 
 
 def start_and_domain(law):
-    start = co.cohesive_state(law.eps_lo, law.m, law.s0, THETA, GB, 0.0, n=law.nodes(law.eps_lo))
+    start = law.state(law.eps_lo)
 
     def inside(x):
         eps, d = math.exp(x[0]), math.exp(x[1])
@@ -60,7 +60,8 @@ def test_follow_traces_the_branch_of_the_pseudo_arclength_tracer(lam, M):
     the tip lies between samples; the end to 1e-2: follow stops within 64 H_MIN of the edge)."""
     law = law_of(lam, M)
     x0, inside = start_and_domain(law)
-    got = fo.follow(law, x0, inside)
+    got, why = fo.follow(law, x0, inside)
+    assert why == ""
     ref = pseudo_arclength(law, x0, inside)
     res = np.array([fo.residual(law, x) for x in got[1:]])
     assert np.all(np.abs(res) <= 1e-9 * (1 + law.h0))
@@ -75,7 +76,8 @@ def test_follow_turns_back_at_a_sharp_fold():
     inside one step of a bracket search): follow goes round it and ends near the start's eps."""
     law = law_of(*TURNS_BACK)
     x0, inside = start_and_domain(law)
-    got = fo.follow(law, x0, inside)
+    got, why = fo.follow(law, x0, inside)
+    assert why == ""
     assert got[:, 0].max() > -1.4 and got[-1, 0] < x0[0] + 0.01
 
 

@@ -56,8 +56,12 @@ class Cohesive(SinglePatch):
 
     # --- the traced branch ---------------------------------------------------------------------------
     @functools.cached_property
+    def _traced(self):
+        return _cb.trace(self.law)           # (x, kind, why it stopped early: '' when it did not)
+
+    @functools.cached_property
     def _trace(self):
-        x, kind = _cb.trace(self.law)
+        x, kind, _ = self._traced
         keep = np.concatenate([[True], np.any(np.diff(x, axis=0) != 0, axis=1)])
         x = x[keep]
         t = x[:, 0] - x[0, 0] if kind == "all" else _cb.arclength(x)
@@ -135,9 +139,7 @@ class Cohesive(SinglePatch):
         return eps, eps + d, (de, de + d * chord[1])
 
     def _all_c(self, eps):
-        from ..numerics import cohesive as _co
-        s = _co.cohesive_state(eps, self.law.m, self.law.s0, self.law.theta, self.law.gb, self.law.ar,
-                               n=self.law.nodes(eps))
+        s = self.law.state(eps)
         return math.pi if s.zones == "all" else s.c
 
     def point(self, a):
@@ -274,8 +276,11 @@ class Cohesive(SinglePatch):
 
     @functools.cached_property
     def unmodelled(self):
-        """Why the analyses cannot follow the branch ('' when they can): its zone stops reaching round by a jump
+        """Why the analyses cannot follow the branch ('' when they can): the trace stopped before the branch's end
+        (jkrcyl.numerics.cohesive_follow says where and why), or its zone stops reaching round by a jump
         (jkrcyl.numerics.cohesive_branch.top_opens: a top bridge or an S-shaped branch, not traced)."""
+        if self._traced[2]:                  # the trace stopped before the branch's end: no silent answer
+            return self._traced[2]
         if self._trace[2] != "all" or self.law.h0 >= 2.0:      # h0 >= 2 Delta: no state pulls, nothing to follow
             return ""
         opens = _cb.top_opens(self.law)

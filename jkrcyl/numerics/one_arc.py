@@ -133,7 +133,9 @@ def resolved_a_max(ar):
 def _half_tables(n, enriched):
     """The tables of numerics.arcs._tables restricted to the table points x >= 0 (the even half of one arc)."""
     _, _, xt, _, Lam, Sig, omega, _, LD0, SD0 = _arcs._tables(n, enriched)
-    keep = np.nonzero(xt >= 0)[0]
+    # the first (n + 1)//2 nodes (descending: x >= 0), then the end points; not xt >= 0, which drops the middle
+    # node of an odd n when cos(pi/2) rounds below 0 (the kernel then read past its right-hand side)
+    keep = np.concatenate([np.arange((n + 1) // 2), np.arange(n, xt.size)])
     cut = lambda T: np.ascontiguousarray(T[:, keep, :]) if T.shape[0] else T
     return (np.ascontiguousarray(xt[keep]), np.ascontiguousarray(LD0[keep]), np.ascontiguousarray(SD0[keep]),
             cut(Lam), cut(Sig), omega)
