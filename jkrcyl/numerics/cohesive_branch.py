@@ -24,9 +24,9 @@ import math
 from collections import namedtuple
 
 import numpy as np
-from scipy.optimize import brentq
 
 from . import cohesive as _co
+from . import roots as _roots
 from . import cohesive_kernels as _ck
 from . import cohesive_zones as _cz
 from . import cohesive_follow as _fo
@@ -171,7 +171,7 @@ def project(law, x_pred, normal, scale):
         for side in (1, -1):
             fs = f(side * w)
             if np.isfinite(fs) and fs * f0 < 0:
-                tau = brentq(f, *sorted((0.0, side * w)), xtol=1e-15, rtol=1e-14)
+                tau = _roots.root(f, *sorted((0.0, side * w)))
                 return x_pred + tau * normal
     d = law.fixed(eps).zone_end_near(law.s0, law.h0, math.exp(x_pred[1]))
     return None if d is None else np.array([x_pred[0], math.log(d)])

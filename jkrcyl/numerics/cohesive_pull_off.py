@@ -19,9 +19,9 @@ import math
 from collections import namedtuple
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
 
 from . import cohesive as _co
+from . import roots as _roots
 from . import cohesive_branch as _cb
 from . import cohesive_follow as _fo
 from . import cohesive_zones as _cz
@@ -118,12 +118,9 @@ def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=
             on_branch = along(eps_j, d_j)
             f = lambda e: (lambda st: math.inf if st is None else st.p)(on_branch(e))
             lo, hi = sorted((math.exp(pts[j - 1][0]), math.exp(pts[j + 1][0])))
-            try:
-                res = minimize_scalar(f, bracket=(lo, eps_j, hi), method="brent", options=dict(xtol=xtol))
-            except ValueError:           # the traced point is not below its neighbours on the re-solved branch
-                res = minimize_scalar(f, bounds=(lo, hi), method="bounded", options=dict(xatol=xtol * 1e-2))
-            st = on_branch(res.x)
-            return PullOff(st.p, res.x, "fold", st, zero, "")
+            x, _ = _roots.minimum(f, lo, eps_j, hi, xtol)     # bounded where the re-solved point is not lowest
+            st = on_branch(x)
+            return PullOff(st.p, x, "fold", st, zero, "")
     touch = _cz.contactless_touch(m, s0, theta, gb, ar, eps_small=min(1e-6, eps_lo * 1e-3))
     if touch is None:
         return none("the branch ends in a zone reaching round (p -> 0)", zero)
@@ -137,11 +134,7 @@ def _fold_past_eps_fold(law, pts, j, load, xtol):
     on = lambda ld: _fo.fixed_zone(law, np.array([pts[j, 0], ld]), span)
     f = lambda ld: (lambda y: math.inf if y is None else load(y))(on(ld))
     lo, hi = sorted((pts[j - 1, 1], pts[j + 1, 1]))
-    try:
-        res = minimize_scalar(f, bracket=(lo, pts[j, 1], hi), method="brent", options=dict(xtol=xtol))
-    except ValueError:
-        res = minimize_scalar(f, bounds=(lo, hi), method="bounded", options=dict(xatol=xtol * 1e-2))
-    y = on(res.x)
+    y = on(_roots.minimum(f, lo, pts[j, 1], hi, xtol)[0])
     if y is None:
         y = pts[j]
     eps, c = math.exp(y[0]), math.exp(y[0]) + math.exp(y[1])
@@ -160,4 +153,4 @@ def _zero_load(state, eps_end):
             break
     if s is None:
         return state(eps_end)
-    return state(brentq(lambda e: state(e).p, eps_end, hi, xtol=1e-13, rtol=1e-13))
+    return state(_roots.root(lambda e: state(e).p, eps_end, hi, xtol=1e-13 * eps_end))

@@ -118,6 +118,22 @@ def brent(f, lo, hi, args=(), flo=None, fhi=None, xtol=0.0):
     return _make_brent(f, float(xtol))(float(lo), float(hi), float(flo), float(fhi), args)
 
 
+def root(f, lo, hi, xtol=0.0):
+    """Root of a one-argument callable f(x) in [lo, hi] (a sign change): :func:`brent`."""
+    return brent(lambda x, _: f(x), lo, hi, (), None, None, xtol)
+
+
+def minimum(f, lo, mid, hi, xtol):
+    """The minimiser and minimum (x, f(x)) of f near the bracket lo < mid < hi (f(mid) below both ends; Brent's
+    parabolic search, scipy), or over [lo, hi] (bounded search) where f is not below its ends at mid."""
+    from scipy.optimize import minimize_scalar          # scipy.optimize loads in ~0.3 s: only where a minimum is asked
+    try:
+        res = minimize_scalar(f, bracket=(lo, mid, hi), method="brent", options=dict(xtol=xtol))
+    except ValueError:
+        res = minimize_scalar(f, bounds=(lo, hi), method="bounded", options=dict(xatol=xtol * 1e-2))
+    return float(res.x), float(res.fun)
+
+
 def is_pole(fx, flo, fhi):
     """A converged sign change is a pole, not a root, when |f| there exceeds |f| at both ends of the first
     bracket (|f| grew as the bracket shrank); a root leaves |f| at the rounding level."""
