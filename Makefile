@@ -32,7 +32,7 @@ test-slow: $(STAMP)
 ## make test-boundscheck: the property tests with every numba kernel's indexing checked (an IndexError instead of
 ## a read or write out of bounds); the kernels compile into a cache of their own (numba's cache key ignores it)
 test-boundscheck: $(STAMP)
-	NUMBA_BOUNDSCHECK=1 NUMBA_CACHE_DIR=$(CURDIR)/$(VENV)/numba-boundscheck-cache $(PYTEST) -m hypothesis
+	NUMBA_BOUNDSCHECK=1 NUMBA_CACHE_DIR=$(CURDIR)/$(VENV)/numba-boundscheck-cache $(PYTEST) -m "hypothesis or boundscheck"
 
 ## make fuzz: the property tests with fresh random examples, 10x as many (hypothesis profile fuzz); a failure it
 ## finds becomes an @example on its test (hypothesis prints it and a `git apply` patch that adds it)
