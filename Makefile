@@ -20,8 +20,8 @@ derive: $(STAMP)
 # pytest on every core (at most 4: a worker can hold a few GB), long tests first-come: worksteal balances them
 PYTEST := $(VPY) -m pytest -q -n auto --maxprocesses 4 --dist worksteal
 
-## make test: the test suite but its slow checks (kernels vs paper and vs mpmath, properties, README, CLI); the
-## same tests for everyone: hypothesis draws derandomized examples (tests/conftest.py), CI sets no switch
+## make test: the test suite without the tests marked slow (kernels vs paper and vs mpmath, properties, README,
+## CLI); the same tests for everyone: hypothesis draws derandomized examples (tests/conftest.py), no CI switch
 test: $(STAMP)
 	$(PYTEST) -m "not slow"
 
