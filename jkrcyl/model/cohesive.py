@@ -1,4 +1,4 @@
-"""The Maugis-Dugdale (cohesive-zone) law behind the single-patch interface (issue 19, phase 2).
+"""The Maugis-Dugdale (cohesive-zone) law behind the single-patch interface.
 
 :class:`Cohesive` gives, like the Griffith solvers, a :class:`~jkrcyl.model.patch.Slice` per branch parameter a
 (kernel scale: p = P beta*/(4 pi Delta), lengths over Delta).  Its branches:

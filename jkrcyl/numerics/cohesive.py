@@ -1,4 +1,4 @@
-"""Maugis-Dugdale (cohesive-zone) equilibrium states of the pin in the hole, any material pair (issue 19).
+"""Maugis-Dugdale (cohesive-zone) equilibrium states of the pin in the hole, any material pair.
 
 Normalised as jkrcyl.numerics.arcs: nu = N R beta*/(4 pi Delta) (N compressive positive), p = int nu cos(phi)
 dphi = P beta*/(4 pi Delta) (= vartheta P*), m = M vartheta (M_R* for vartheta = inf), and the Dugdale law
@@ -18,7 +18,7 @@ end solves h(c) = h0 (Brent, the LU reused: only the zone right-hand side and on
 
 Node count: v is analytic on the contact with singularities at the zone ends +-c (the jump of the traction),
 so Chebyshev converges like rho^-n with rho the Bernstein ellipse through c/eps: n ~ sqrt(eps/(c - eps)) (as
-for near-touching arcs in jkrcyl.twopatch).  The zone length is first estimated by the Dugdale crack value
+for near-touching arcs in jkrcyl.model.two_patch).  The zone length is first estimated by the Dugdale crack value
 c - eps ~ m^2/(4 s0^2) and the node count corrected once from the root.  Measured (lambda = 10, eps = 0.8,
 rho = 1.263): errors 5e-5, 1e-7, 2e-9, 7e-13 at n = 24, 48, 64, 96 (benchmarks/bench_cohesive.py); the
 default (11 sqrt(eps/(c - eps)), at least 24) gives ~1e-9.  Where that exceeds LAYER_NODES (a thin zone,

@@ -1,4 +1,4 @@
-"""The contact branch of one Maugis-Dugdale law as a 1-D family (issue 19, phase 2), and its per-point data.
+"""The contact branch of one Maugis-Dugdale law as a 1-D family, and its per-point data.
 
 Notation of jkrcyl.numerics.cohesive (kernel scale: p = P beta*/(4 pi Delta), lengths over Delta, m, s0, h0 = m^2/s0).
 At a fixed contact |phi| < eps and zone end c every state is affine in the approach delta/Delta (the LU of the

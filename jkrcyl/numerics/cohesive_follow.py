@@ -1,4 +1,4 @@
-"""Continuation of the Maugis-Dugdale contact branch (issue 19): the curve k = 0, h(c) = h0 in the plane
+"""Continuation of the Maugis-Dugdale contact branch: the curve k = 0, h(c) = h0 in the plane
 x = (log eps, log(c - eps)) (notation of jkrcyl.numerics.cohesive and jkrcyl.numerics.cohesive_branch).
 
 Every point of the plane with a new eps costs a new collocation matrix and its LU (jkrcyl.numerics.cohesive

@@ -1,4 +1,4 @@
-"""Load-control pull-off of the Maugis-Dugdale contact (issue 19, normalised; the model core wires it in).
+"""Load-control pull-off of the Maugis-Dugdale contact (normalised; the model core wires it in).
 
 The states with one contact and one zone form curves in the plane (eps, d), d = c - eps the zone length: the
 zone end can turn back in eps (at lambda ~ 1-10 the first root of h(c) = h0 disappears at a fold and the curve

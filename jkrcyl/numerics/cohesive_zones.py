@@ -1,4 +1,4 @@
-"""Maugis-Dugdale states beyond a contact with one zone (issue 19): the pin without contact, held by a zone at
+"""Maugis-Dugdale states beyond a contact with one zone: the pin without contact, held by a zone at
 the bottom and/or a zone at the top (closed form up to the zone ends), the free pin inside a range that reaches
 round, and contacts with a second zone at the top of the hole.  Normalisation and notation as
 jkrcyl.numerics.cohesive (zones: the bottom one |phi| < c, the top one |phi - pi| < c_top).

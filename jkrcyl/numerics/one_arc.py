@@ -5,7 +5,7 @@ The fixed-arc system of numerics.arcs (bottom arc |phi| < eps, unknown nu = N R 
 clearance Delta, or R for the neat fit) is A v = c b0 + d b1 with b0 = -(1 - cos phi), b1 = cos phi, c = Delta/L
 and d = delta/L.  Eliminating d through the unit cases u0 = A^-1 b0, u1 = A^-1 b1 (as numerics.arcs.Linear does)
 cancels where A is singular -- the unit cases pass a pole (det A = 0) at arcs where the physical state is smooth
-(issue 18: a rubber roller in a rigid cradle).  Here (v, d) solve the bordered system
+(a rubber roller in a rigid cradle once got a wrong pull-off there).  Here (v, d) solve the bordered system
 
     [ A      -b1 ] [v]   [c b0]
     [ e_k^T   0  ] [d] = [ k  ]          (e_k: the edge coefficient k of nu ~ -k/sqrt(eps - |phi|))
