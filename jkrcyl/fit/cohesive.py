@@ -23,10 +23,12 @@ import math
 import numpy as np
 
 from ..contact import Contact
+from . import model
 
 LAMBDA_MIN = 0.01      # Baney-Hui's tested range starts here (tests/test_cohesive_api.py)
 LAMBDA_MAX = 20.0      # the law is JKR's to ~C/lambda^2 ~ 1 % here (C ~ 3.7); a state costs ~5 ms, more beyond
-#                        (a given, fixed sigma0 is used as it is, at any lambda the solver resolves)
+FIXED_MAX = 100.0      # a given, fixed sigma0 is used as it is in [LAMBDA_MIN, FIXED_MAX] (the range the library's
+#                        cohesive states are tested over); outside, ValueError naming sigma0 (and a wall mid-fit)
 START_LAMBDAS = (0.1, 0.3, 1.0, 3.0)     # starting values of a fitted sigma0 without one given
 WIDTH_STEP = 1e-4      # relative step of the central differences dP/dwidth (states to ~1e-10)
 TURN_POINTS = 64       # states of the traced branch searched for its first turn in eps (check)
@@ -39,7 +41,7 @@ def window(R, Delta, w, materials):
 
 def transition(R, Delta, w, materials, strength):
     """lambda of the law (Contact.lambda_)."""
-    return Contact(R, Delta, w, materials, strength).lambda_
+    return model.contact(R, Delta, w, materials, strength).lambda_
 
 
 def loads(R, Delta, w, materials, strength, width, slopes=False, clip=False):
@@ -48,7 +50,9 @@ def loads(R, Delta, w, materials, strength, width, slopes=False, clip=False):
     width = np.asarray(width, dtype=float)
     try:
         lo, hi = window(R, Delta, w, materials) if clip else (0.0, math.inf)
-        c = Contact(R, Delta, w, materials, min(max(strength, lo), hi))
+        c = model.contact(R, Delta, w, materials, min(max(strength, lo), hi))
+        if not LAMBDA_MIN <= c.lambda_ <= FIXED_MAX:
+            raise ValueError("lambda outside the range the fit evaluates the law over")
         P = c.at_contact(width / (2 * R)).P
         if not slopes:
             return P, None, None
@@ -74,8 +78,7 @@ def model_loads(R, inp, width, slopes=False, clip=False):
 
 
 def _scaled(inp):
-    from . import model
-    return model.scaled(inp.materials, inp.f) if inp.f != 1.0 else inp.materials
+    return inp.pair
 
 
 # --- the window in internal coordinates, starts --------------------------------------------------------------
@@ -97,11 +100,10 @@ def start(problem, spec, u):
     names, u = spec.names, np.array(u, dtype=float)
     fit_w = "w" in names
     inp = spec.inputs(u)
-    if "sigma0" not in names and not np.all(np.isfinite(problem.residuals(u))):
-        lam = transition(problem.R, inp.Delta, float(np.max(inp.w)), _scaled(inp), inp.strength)
-        raise ValueError(f"sigma0: the cohesive solver cannot resolve the zone at sigma0 = {inp.strength:.6g} Pa "
-                         f"(lambda = {lam:.4g} at the starting values: the zone is too thin); the law is JKR's "
-                         "there to O(lambda^-2): fit with sigma0=None")
+    if "sigma0" not in names:
+        _check_fixed(problem, inp)
+        if not np.all(np.isfinite(problem.residuals(u))):
+            _check_fixed(problem, inp, resolved=False)
     if "sigma0" not in names and not fit_w:
         return [u]
     R, mat = problem.R, _scaled(inp)
@@ -122,6 +124,21 @@ def start(problem, spec, u):
     return ranked[:STARTS] or [u]
 
 
+def _check_fixed(problem, inp, resolved=True):
+    """ValueError naming sigma0 where a given, fixed sigma0 puts lambda (at the starting w and moduli) outside
+    [LAMBDA_MIN, FIXED_MAX], or (resolved=False) where the solver refused its states there."""
+    lam = transition(problem.R, inp.Delta, float(np.max(inp.w)), _scaled(inp), inp.strength)
+    if lam < LAMBDA_MIN:
+        raise ValueError(f"sigma0: lambda = {lam:.4g} at sigma0 = {inp.strength:.6g} Pa and the starting values, "
+                         f"below {LAMBDA_MIN:g}, the smallest lambda the fit evaluates the cohesive law at (the zone "
+                         "spreads over the contact and w and sigma0 trade off); give a larger sigma0 or fit it")
+    if lam > FIXED_MAX or not resolved:
+        raise ValueError(f"sigma0: the cohesive solver cannot resolve the zone at sigma0 = {inp.strength:.6g} Pa "
+                         f"(lambda = {lam:.4g} at the starting values; the fit evaluates the law up to lambda = "
+                         f"{FIXED_MAX:g}: the zone is too thin); the law is JKR's there to O(lambda^-2): fit with "
+                         "sigma0=None")
+
+
 START_M = (0.01, 0.03, 0.1, 0.3, 1.0, 3.0)
 STARTS = 3
 
@@ -139,7 +156,7 @@ def _strengths(spec, R, Delta, w, mat):
 def _w_of_M(problem, inp, M):
     """w [J/m^2] of the normalised adhesion M (section 6) at the current pair and clearance (Contact.M is
     proportional to sqrt(w))."""
-    ref = Contact(problem.R, inp.Delta, 1.0, _scaled(inp))
+    ref = model.contact(problem.R, inp.Delta, 1.0, _scaled(inp))
     return (M / ref.M) ** 2
 
 
@@ -184,9 +201,10 @@ def check(problem, spec, u, cov_u, s2, beyond_sigmas):
     of the pull-off force, by finite differences in u).  ValueError naming the rows otherwise."""
     d, R = problem.data, problem.R
     inp = spec.inputs(u)
+    out = {}
     for wv in np.unique(inp.w):
         sel = inp.w == wv
-        c = Contact(R, inp.Delta, float(wv), _scaled(inp), inp.strength)
+        c = inp.contact(R, wv)
         eps = c.curve(regime="sub-critical", n=TURN_POINTS).eps
         turn = np.nonzero(np.diff(eps) < 0)[0]
         if turn.size:
@@ -196,7 +214,7 @@ def check(problem, spec, u, cov_u, s2, beyond_sigmas):
                 raise ValueError(f"width: rows {', '.join(str(int(i)) for i in rows[:5])} lie beyond the contact "
                                  f"width {2 * R * eps[turn[0]]:.6g} m where the fitted cohesive branch turns back: "
                                  "a width picks no unique state there; fit smaller contacts or the JKR law")
-        fo = _pull_off(c)
+        fo = out[float(wv)] = _pull_off(c)
         if fo is None:
             continue
         grad = np.zeros(u.size)
@@ -204,7 +222,7 @@ def check(problem, spec, u, cov_u, s2, beyond_sigmas):
             du = np.array(u, dtype=float)
             du[k] += 1e-5
             ik = spec.inputs(du)
-            fk = _pull_off(Contact(R, ik.Delta, float(ik.w[np.nonzero(sel)[0][0]]), _scaled(ik), ik.strength))
+            fk = _pull_off(ik.contact(R, ik.w[np.nonzero(sel)[0][0]]))
             grad[k] = 0.0 if fk is None else (fk - fo) / 1e-5
         se_fold = math.sqrt(max(float(grad @ cov_u @ grad), 0.0))
         sP = d.sigma_P[sel] if d.sigma_P is not None else (0.0 if problem.sigma_known else
@@ -215,6 +233,7 @@ def check(problem, spec, u, cov_u, s2, beyond_sigmas):
             raise ValueError(f"P: row{'s' if rows.size > 1 else ''} {', '.join(str(int(i)) for i in rows[:5])} "
                              f"({d.P[rows[0]]:.6g} N/m) lie beyond the pull-off force {fo:.6g} N/m of the fitted "
                              "cohesive model (no stable equilibrium holds such a load; P < 0 pulls)")
+    return out
 
 
 def _pull_off(c):

@@ -18,7 +18,9 @@ import math
 
 import numpy as np
 from scipy import stats
-from scipy.optimize import brentq, least_squares
+from scipy.optimize import least_squares
+
+from ..numerics import roots as _roots
 
 LOG_RANGE = 30.0       # a log-parameter profile that stays below the threshold over e^30: open on that side
 LINEAR_RANGE = 1e3     # likewise for the offset, in units of its length scale
@@ -124,7 +126,7 @@ class Profiler:
                     return val - self.q
                 tol = 1e-4 * (self.se_u[j] if np.isfinite(self.se_u[j]) and self.se_u[j] > 0 else 1e-3)
                 lo, hi = sorted((t_prev, t))
-                return brentq(g, lo, hi, xtol=tol, rtol=1e-10)
+                return _roots.brent_to(g, lo, hi, tol)
             t_prev, warm_prev = t, warm
             step *= 2.0
         return sign * math.inf
