@@ -44,15 +44,49 @@ def transition(R, Delta, w, materials, strength):
     return model.contact(R, Delta, w, materials, strength).lambda_
 
 
-def loads(R, Delta, w, materials, strength, width, slopes=False, clip=False):
+class Budget:
+    """The work one cohesive fit may do, counted in states weighted by their cost at lambda (a state's
+    collocation grows with lambda: ~1 ms at lambda <= 3, ~30 ms at 20): BUDGET units, about a minute.  Past it,
+    :class:`OverBudget` (jkrcyl.fit.fit turns it into a ValueError naming sigma0)."""
+
+    def __init__(self, units=None):
+        self.left, self.lam = BUDGET if units is None else units, None
+
+    def spend(self, lam, states):
+        self.lam = lam
+        self.left -= states * (1 + (lam / 4) ** 2.3)
+        if self.left < 0:
+            raise OverBudget(lam)
+
+
+BUDGET = 120_000       # twice the costliest fit of tests/test_fit_cohesive.py (12 JKR points, sigma0 at the JKR end)
+
+
+class OverBudget(Exception):
+    """A cohesive fit ran out of :class:`Budget` (not a ValueError: the residuals turn those into NaN walls)."""
+
+    def __init__(self, lam):
+        super().__init__(lam)
+        self.lam = lam
+
+    def message(self):
+        return (f"sigma0: the cohesive fit needs more than {BUDGET} state evaluations here (weighted by their cost; "
+                f"the last at lambda = {self.lam:.3g}, where the law is near JKR's and each state is costly): the "
+                "data barely determine sigma0; fit the JKR law (sigma0=None), fix sigma0, or ask for "
+                "interval='wald' or None")
+
+
+def loads(R, Delta, w, materials, strength, width, slopes=False, clip=False, budget=None):
     """P [N/m] at the contact widths [m] (with clip, a fitted strength, held in the lambda window), and with slopes
-    dP/dwidth, d2P/dwidth2 by central differences (relative step WIDTH_STEP)."""
+    dP/dwidth, d2P/dwidth2 by central differences (relative step WIDTH_STEP); the states are charged to budget."""
     width = np.asarray(width, dtype=float)
     try:
         lo, hi = window(R, Delta, w, materials) if clip else (0.0, math.inf)
         c = model.contact(R, Delta, w, materials, min(max(strength, lo), hi))
         if not LAMBDA_MIN <= c.lambda_ <= FIXED_MAX:
             raise ValueError("lambda outside the range the fit evaluates the law over")
+        if budget is not None:
+            budget.spend(c.lambda_, width.size * (3 if slopes else 1))
         P = c.at_contact(width / (2 * R)).P
         if not slopes:
             return P, None, None
@@ -64,14 +98,14 @@ def loads(R, Delta, w, materials, strength, width, slopes=False, clip=False):
     return P, (up - down) / (2 * h), (up - 2 * P + down) / (h * h)
 
 
-def model_loads(R, inp, width, slopes=False, clip=False):
+def model_loads(R, inp, width, slopes=False, clip=False, budget=None):
     """P (and slopes) at the widths for the model inputs of jkrcyl.fit.params.Inputs (w per point); clip: a fitted
-    sigma0, held in the lambda window."""
+    sigma0, held in the lambda window; budget: the fit's :class:`Budget`."""
     mat = _scaled(inp)
     P, P1, P2 = (np.empty(np.size(width)) for _ in range(3))
     for wv in np.unique(inp.w):
         sel = inp.w == wv
-        out = loads(R, inp.Delta, float(wv), mat, inp.strength, np.asarray(width)[sel], slopes, clip)
+        out = loads(R, inp.Delta, float(wv), mat, inp.strength, np.asarray(width)[sel], slopes, clip, budget)
         for arr, val in zip((P, P1, P2), out):
             arr[sel] = np.nan if val is None else val
     return P, (P1 if slopes else None), (P2 if slopes else None)
@@ -108,6 +142,9 @@ def start(problem, spec, u):
         return [u]
     R, mat = problem.R, _scaled(inp)
     ws = [float(np.max(inp.w))] + ([_w_of_M(problem, inp, M) for M in START_M] if fit_w else [])
+    if "sigma0" not in names:         # a given sigma0: no start further towards JKR than the first (costly states)
+        top = max(LAMBDA_MAX, transition(R, inp.Delta, ws[0], mat, inp.strength))
+        ws = [wv for wv in ws if transition(R, inp.Delta, wv, mat, inp.strength) <= top]
     best = {}                                   # the best start per starting w
     for wv in ws:
         trial = np.array(u, dtype=float)
@@ -197,8 +234,10 @@ def edge_message(side, bound, confidence):
 
 def check(problem, spec, u, cov_u, s2, beyond_sigmas):
     """At the estimate: every width below the traced branch's first turn in eps (a width picks one state there),
-    and no load beyond the fixed-load pull-off force by more than beyond_sigmas standard errors (of the point and
-    of the pull-off force, by finite differences in u).  ValueError naming the rows otherwise."""
+    and no load beyond the fixed-load pull-off force (Contact.pull_off) by more than beyond_sigmas standard errors
+    (of the point's load as the fit models it, and of the pull-off force: at a fold by the envelope theorem, dP/du
+    at the fold's fixed contact; else by finite differences of pull-offs in u).  ValueError naming the rows
+    otherwise; returns {w: pull-off force [N/m] or None}."""
     d, R = problem.data, problem.R
     inp = spec.inputs(u)
     out = {}
@@ -214,20 +253,22 @@ def check(problem, spec, u, cov_u, s2, beyond_sigmas):
                 raise ValueError(f"width: rows {', '.join(str(int(i)) for i in rows[:5])} lie beyond the contact "
                                  f"width {2 * R * eps[turn[0]]:.6g} m where the fitted cohesive branch turns back: "
                                  "a width picks no unique state there; fit smaller contacts or the JKR law")
-        fo = out[float(wv)] = _pull_off(c)
+        po = c.pull_off(control="load")
+        fo = out[float(wv)] = po.P
         if fo is None:
             continue
         grad = np.zeros(u.size)
+        fold = "shrinks away" in po.reason          # a fold of P: dP/du at its fixed contact (envelope theorem)
         for k in range(u.size):
             du = np.array(u, dtype=float)
             du[k] += 1e-5
             ik = spec.inputs(du)
-            fk = _pull_off(ik.contact(R, ik.w[np.nonzero(sel)[0][0]]))
+            ck = ik.contact(R, ik.w[np.nonzero(sel)[0][0]])
+            fk = float(ck.at_contact(np.array([po.state.eps])).P[0]) if fold else _pull_off(ck)
             grad[k] = 0.0 if fk is None else (fk - fo) / 1e-5
         se_fold = math.sqrt(max(float(grad @ cov_u @ grad), 0.0))
-        sP = d.sigma_P[sel] if d.sigma_P is not None else (0.0 if problem.sigma_known else
-                                                             math.sqrt(s2) * problem.nominal)
-        beyond = d.P[sel] < fo - beyond_sigmas * np.sqrt(se_fold ** 2 + np.asarray(sP) ** 2)
+        sP = problem.load_sd(u, s2)[sel]
+        beyond = d.P[sel] < fo - beyond_sigmas * np.sqrt(se_fold ** 2 + sP ** 2)
         if beyond.any():
             rows = np.nonzero(sel)[0][beyond]
             raise ValueError(f"P: row{'s' if rows.size > 1 else ''} {', '.join(str(int(i)) for i in rows[:5])} "

@@ -22,6 +22,7 @@ ABSURD = 1e6         # a positive parameter this many times its start (or 1/this
 FLAT = 1e-8          # Jacobian column norm relative to the largest: the data no longer depend on the parameter
 MISFIT_SIGMAS = 10   # a sum of squares this many sd of chi2(dof) above dof (errors stated): try the backups too
 MAX_NFEV = 2000
+WALL = 1e-6          # a windowed parameter this near its edge (internal coordinate) is at the edge
 
 
 def solve(problem, u0, loss, f_scale):
@@ -38,8 +39,10 @@ def solve(problem, u0, loss, f_scale):
     return res, scale
 
 
-def failure(spec, res, u0):
-    """Why the descent from u0 ending at res did not converge (a phrase naming the parameter), or None."""
+def failure(spec, res, u0, walls=None):
+    """Why the descent from u0 ending at res did not converge (a phrase naming the parameter), or None.  walls:
+    {index: (lo, hi)} of parameters held in a window (the cohesive sigma0): flat at its edge by design (the fit
+    reports an estimate there as a one-sided bound)."""
     if not res.success:
         return f"no convergence within {res.nfev} evaluations ({res.message})"
     if not (np.all(np.isfinite(res.x)) and np.isfinite(res.cost) and np.all(np.isfinite(res.jac))):
@@ -50,7 +53,11 @@ def failure(spec, res, u0):
             return (f"{n} ran from {spec.values(u0)[n]:.4g} to {values[n]:.4g} {DESCRIPTION[n][0]} (a factor "
                     f"{math.exp(abs(res.x[j] - u0[j])):.3g})")
     norms = np.linalg.norm(res.jac, axis=0)
+    walls = walls or {}
     for j, n in enumerate(spec.names):
+        lo, hi = walls.get(j, (-math.inf, math.inf))
+        if not lo + WALL < res.x[j] < hi - WALL:
+            continue
         if norms.max() > 0 and norms[j] <= FLAT * norms.max():
             return f"{n} ran to {values[n]:.4g} {DESCRIPTION[n][0]}, where the data no longer depend on it"
     return None
@@ -68,10 +75,11 @@ def _misfit(problem, spec, res):
     return problem.sigma_known and 2 * res.cost > dof + MISFIT_SIGMAS * math.sqrt(2 * dof)
 
 
-def best(problem, spec, starts, loss, f_scale, backups=None, every=False):
+def best(problem, spec, starts, loss, f_scale, backups=None, every=False, walls=None):
     """The lowest-cost converged descent: (result, scale, start).  Starts are tried best first; a further start
     only where its own cost is below the best descent's so far (every=True: from each start), then the backups
-    (a callable giving more starts) where every descent failed or the best misfits the stated errors."""
+    (a callable giving more starts) where every descent failed or the best misfits the stated errors.  walls(u):
+    the windows of :func:`failure` at u."""
     found, failures = None, []
 
     def run(candidates):
@@ -84,7 +92,7 @@ def best(problem, spec, starts, loss, f_scale, backups=None, every=False):
             if found is not None and not every and c0 >= 2 * found[0].cost:
                 continue
             res, scale = solve(problem, u0, loss, f_scale)
-            why = failure(spec, res, u0)
+            why = failure(spec, res, u0, walls(res.x) if walls else None)
             if why:
                 failures.append(why)
             elif found is None or res.cost < found[0].cost:

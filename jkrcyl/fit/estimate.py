@@ -82,12 +82,20 @@ def fit(P=None, width=None, delta_work=None, *, R, Delta, materials, free=("w", 
     spec = Spec(free, data, R, Delta, materials, w, offset, strength)
     problem = Problem(data, spec, R, control)
     _check_counts(problem, spec)
+    try:
+        return _fit(problem, spec, loss, f_scale, interval, confidence)
+    except cohesive.OverBudget as over:
+        raise ValueError(over.message()) from None
+
+
+def _fit(problem, spec, loss, f_scale, interval, confidence):
+    """Descents from the starts, restarted where the profile finds a better optimum; the result."""
     starts = _start(problem, spec)
     more = lambda: _backups(problem, spec)
     u = None
     for attempt in range(MAX_RESTARTS):
         res, scale, _ = descent.best(problem, spec, starts if attempt == 0 else [u], loss, f_scale, more,
-                                     every=not spec.superposes)
+                                     walls=lambda x: cohesive.bounds(problem, spec, x))
         try:
             return _finish(problem, spec, res, scale, loss, f_scale, interval, confidence)
         except uncertainty.BetterOptimum as better:

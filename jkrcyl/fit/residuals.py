@@ -35,6 +35,7 @@ class Problem:
         # rounding, so the default (~1e-8) step would give Jacobian errors of ~1 %; None keeps the default
         self.diff_step = None if spec.superposes else 1e-6
         self.sigma_known = data.sigma_P is not None or data.sigma_x is not None
+        self.budget = None if spec.superposes else cohesive.Budget()     # the work a cohesive fit may do
         self.a = model.a_of_width(data.x, R) if data.kind == "width" else None
         if data.kind == "width":
             self.mode = "width"
@@ -120,7 +121,8 @@ class Problem:
     def _width_model(self, inp, width, slopes=False):
         """(P, dP/dwidth, d2P/dwidth2) at the widths: superposed library states (JKR) or direct states."""
         if not self.spec.superposes:
-            return cohesive.model_loads(self.R, inp, width, slopes, clip="sigma0" in self.spec.names)
+            return cohesive.model_loads(self.R, inp, width, slopes, clip="sigma0" in self.spec.names,
+                                        budget=self.budget)
         a = model.a_of_width(width, self.R)
         P, P1, P2 = (np.empty(a.size) for _ in range(3))
         for wv, sel in _legs(inp.w):
