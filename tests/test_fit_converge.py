@@ -37,7 +37,8 @@ def _quiet():
 def test_fit_pull_off_equals_contact_pull_off(m, M, f):
     """The force the fit refuses rows with and reports (jkrcyl.fit.branch.pull_off, the contact of the pair's shape
     times a modulus factor f, as the fit builds it) against Contact.pull_off of that contact built from scratch:
-    both none, or equal to 1e-8; random pairs with rigid bodies and alpha* != 0."""
+    both none, or equal to 1e-8; random pairs with rigid bodies and alpha* != 0.  The contact width at the fold
+    is conditioned like the square root of the states' rounding (~1e-11 for the collocation solver): 1e-4."""
     c = contact_of_M(m, M)
     pair = jkrcyl.Materials(G=m.G * f, kappa=m.kappa, G_I=m.G_I * f, kappa_I=m.kappa_I)
     ref = jkrcyl.Contact(c.R, c.Delta, c.w, pair).pull_off()
@@ -45,7 +46,7 @@ def test_fit_pull_off_equals_contact_pull_off(m, M, f):
     assert (fit.P is None) == (ref.P is None), (fit, ref)
     if ref.P is not None:
         assert fit.P == pytest.approx(ref.P, rel=1e-8)
-        assert fit.width == pytest.approx(ref.contact_width, rel=1e-6)
+        assert fit.width == pytest.approx(ref.contact_width, rel=1e-4)
 
 
 # --- divergence -------------------------------------------------------------------------------------------------
@@ -169,11 +170,14 @@ def test_bad_inputs_name_the_parameter(change, message):
         jkrcyl.fit(**_example(**change))
 
 
-@pytest.mark.slow
-def test_jkr_example_with_sigma0_free_is_refused_in_bounded_time():
-    """docs/fit_example.csv (JKR data) with free=("w", "E", "sigma0") ran for minutes: now the estimate at the JKR
-    end of the lambda window is reported as a one-sided bound, naming sigma0."""
-    with pytest.raises(ValueError, match=r"^sigma0: the data do not determine the cohesive strength"):
+def test_jkr_example_with_sigma0_free_is_refused_in_bounded_time(monkeypatch):
+    """docs/fit_example.csv (JKR data) with free=("w", "E", "sigma0") ran for minutes (the estimate near lambda = 8,
+    its profiles towards lambda = 20, where each state costs ~30 ms): the cohesive fit's work is bounded (a weighted
+    count of states, jkrcyl.fit.cohesive.Budget; here a sixth of the default, to keep the test short) and
+    running out of it is a ValueError naming sigma0."""
+    from jkrcyl.fit import cohesive
+    monkeypatch.setattr(cohesive, "BUDGET", 20_000)
+    with pytest.raises(ValueError, match=r"^sigma0: the cohesive fit needs more than 20000 state evaluations"):
         jkrcyl.fit(**_example(free=("w", "E", "sigma0")))
 
 

@@ -1,4 +1,4 @@
-"""``jkrcyl fit data.csv``: fit w and the moduli (and Delta, an approach offset) to measurements (issue 20).
+"""``jkrcyl fit data.csv``: fit w and the moduli (and Delta, an approach offset) to measurements.
 
     jkrcyl fit data.csv --fix R=0.01 --fix Delta=1e-5 --fix E=2.6e9 --fix nu=0.3 --fix E_I=inf --fix nu_I=0.3
     jkrcyl fit docs/fit_example.csv --free w,E --plot fit.png        # setup from the file's '# key=value' lines

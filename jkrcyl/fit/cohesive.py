@@ -83,10 +83,11 @@ def loads(R, Delta, w, materials, strength, width, slopes=False, clip=False, bud
     try:
         lo, hi = window(R, Delta, w, materials) if clip else (0.0, math.inf)
         c = model.contact(R, Delta, w, materials, min(max(strength, lo), hi))
-        if not LAMBDA_MIN <= c.lambda_ <= FIXED_MAX:
-            raise ValueError("lambda outside the range the fit evaluates the law over")
+        lam = c.lambda_                       # the fit evaluates the law over [LAMBDA_MIN, FIXED_MAX] only
+        if not LAMBDA_MIN <= lam <= FIXED_MAX:
+            raise ValueError(f"lambda = {lam:.4g} outside [{LAMBDA_MIN:g}, {FIXED_MAX:g}]")
         if budget is not None:
-            budget.spend(c.lambda_, width.size * (3 if slopes else 1))
+            budget.spend(lam, width.size * (3 if slopes else 1))
         P = c.at_contact(width / (2 * R)).P
         if not slopes:
             return P, None, None

@@ -53,9 +53,11 @@ def fit(P=None, width=None, delta_work=None, *, R, Delta, materials, free=("w", 
     leg : array_like of str, optional
         'loading' or 'unloading' per point.
     control : {'load', 'grip-work'}
-        What the experiment held: delta_work points are sought on the part of the sub-critical branch stable
-        under it (section 8.3); width data fix each state by themselves (any control), and loads below the
-        fitted fixed-load pull-off force are rejected for both kinds.
+        What the experiment held: delta_work points are sought on the part of the sub-critical branch the path
+        from first contact reaches under it (stable, section 8.3, and feasible); width data fix each state by
+        themselves (any control), and loads below the fixed-load pull-off force (Contact.pull_off's path) of the
+        fitted model, or of the model fitted to the other rows where they drag the fit, are rejected for both
+        kinds (jkrcyl.fit.checks).
     loss : {'linear', 'soft_l1', 'huber'}
         least_squares loss; f_scale in units of the normalised residual (of the robust residual scale when
         no error is stated).
@@ -72,7 +74,21 @@ def fit(P=None, width=None, delta_work=None, *, R, Delta, materials, free=("w", 
     ------
     ValueError
         Naming the problem: bad data (NaN rows, widths outside (0, 2 pi R), ...), fewer points than parameters,
-        parameters the data cannot separate, loads beyond the fitted pull-off force.
+        parameters the data cannot separate, loads beyond the fitted pull-off force, a descent that did not
+        converge from any start (a parameter run off to absurd values, jkrcyl.fit.descent: never returned as an
+        estimate), a cohesive fit beyond its work budget or a given sigma0 outside the lambda range the fit
+        evaluates the law over (jkrcyl.fit.cohesive).
+
+    Examples
+    --------
+    >>> import jkrcyl, numpy as np
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> c = jkrcyl.Contact(R=0.01, Delta=3e-6, w=0.05, materials=m)
+    >>> width = np.linspace(7e-3, 20e-3, 12)
+    >>> res = jkrcyl.fit(P=c.state(np.tan(width / 0.04)).P, width=width, R=0.01, Delta=3e-6, materials=m,
+    ...                  free=("w",), sigma_P=1.0, interval=None)
+    >>> round(res.values["w"], 6)
+    0.05
     """
     setup = _setup(R, Delta, materials, w, offset, loss, f_scale, interval, confidence)
     R, Delta, w, offset, f_scale, confidence = setup

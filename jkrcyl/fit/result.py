@@ -21,7 +21,9 @@ class FitResult:
     ``interval_method`` (+-inf or 0 where the data do not bound a parameter; see ``notes``).  covariance, correlation: arrays in the order of ``names``.
     residuals: measured minus fitted (P [N/m] for width data; for delta_work data the residual of the
     variable with the error: delta_work [m], P [N/m], or both stacked); normalised_residuals: divided by the
-    stated standard deviations (equal to residuals when none was stated).
+    stated standard deviations (equal to residuals when none was stated).  pull_off: {w [J/m^2]: the fixed-load
+    pull-off force [N/m] of the fitted contact (None: no detachment on the path from first contact)}, the force the
+    rows were checked against (Contact.pull_off's path; jkrcyl.fit.checks).
     """
 
     names: tuple
