@@ -30,11 +30,11 @@ TOP_GAP = 1e-3       # the branch ends at a_crit (1 - TOP_GAP): loads there are 
 PER_DECADE = 64      # table nodes per decade of a (cubic Hermite in log a: ~1e-8 relative between nodes)
 DECADES = 7          # the table spans a_top 1e-7 .. a_top (alpha* = 0) ...
 DECADES_NUMERIC = 4  # ... or a_top 1e-4 .. a_top: below, the solver's adhesionless part loses digits (1e-5 at 1e-5)
-SPLINE_FIELDS = ("p", "dw", "dn")
+SPLINE_FIELDS = ("p", "dw", "dn")   # the held quantities (and their slopes) interpolated for the search
 SEARCH_TOL = 1e-12   # relative tolerance of a root on the splines
 POLISH = 2           # Newton steps of a refined root on exact states (exact=True)
 LOG_STEP = 1e-4      # central differences in log a for the slopes of the weighted parts (error ~1e-8 relative) ...
-LOG_STEP_NUMERIC = 1e-3   # ... and for alpha* != 0, whose adhesionless part carries ~1e-9 noise at a ~ 1e-3      # the held quantities (and their slopes) interpolated for the search
+LOG_STEP_NUMERIC = 1e-3   # ... and for alpha* != 0, whose adhesionless part carries ~1e-9 noise at a ~ 1e-3
 
 
 def _exact(materials):
@@ -107,11 +107,11 @@ class Table:
         t = (x - self.x[i]) / h
         j = 2 * SPLINE_FIELDS.index(field)
         Y = []
-        for col in (j, j + 1):
+        t2, t3 = t * t, t * t * t
+        for col in (j, j + 1):          # the cubic Hermite basis and its first two derivatives in x = log a
             y0, y1, m0, m1 = self.y[i, col], self.y[i + 1, col], h * self.dy[i, col], h * self.dy[i + 1, col]
-            Y.append(((2 * t ** 3 - 3 * t ** 2 + 1) * y0 + (t ** 3 - 2 * t ** 2 + t) * m0 + (3 * t ** 2 - 2 * t ** 3) * y1
-                      + (t ** 3 - t ** 2) * m1,
-                      ((6 * t ** 2 - 6 * t) * (y0 - y1) + (3 * t ** 2 - 4 * t + 1) * m0 + (3 * t ** 2 - 2 * t) * m1) / h,
+            Y.append(((2 * t3 - 3 * t2 + 1) * y0 + (t3 - 2 * t2 + t) * m0 + (3 * t2 - 2 * t3) * y1 + (t3 - t2) * m1,
+                      ((6 * t2 - 6 * t) * (y0 - y1) + (3 * t2 - 4 * t + 1) * m0 + (3 * t2 - 2 * t) * m1) / h,
                       ((12 * t - 6) * (y0 - y1) + (6 * t - 4) * m0 + (6 * t - 2) * m1) / (h * h)))
         y, yx, yxx = (Y[0][n] + k * Y[1][n] for n in range(3))
         w = 1.0 if math.isinf(self.pole) else 1 - a / self.pole

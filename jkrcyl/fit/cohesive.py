@@ -22,7 +22,6 @@ import math
 
 import numpy as np
 
-from ..contact import Contact
 from . import model
 
 LAMBDA_MIN = 0.01      # Baney-Hui's tested range starts here (tests/test_cohesive_api.py)
@@ -36,7 +35,7 @@ TURN_POINTS = 64       # states of the traced branch searched for its first turn
 
 def window(R, Delta, w, materials):
     """(sigma0 at LAMBDA_MIN, at LAMBDA_MAX) [Pa] for this contact (lambda is proportional to sigma0)."""
-    return tuple(Contact.with_lambda(R, Delta, w, materials, lam).sigma0 for lam in (LAMBDA_MIN, LAMBDA_MAX))
+    return tuple(model.contact_with_lambda(R, Delta, w, materials, lam).sigma0 for lam in (LAMBDA_MIN, LAMBDA_MAX))
 
 
 def transition(R, Delta, w, materials, strength):
@@ -188,7 +187,7 @@ def _strengths(spec, R, Delta, w, mat):
     lo, hi = window(R, Delta, w, mat)
     if spec.fixed["sigma0"] is not None:
         return [min(max(spec.fixed["sigma0"], lo * 1.01), hi / 1.01)]
-    return [Contact.with_lambda(R, Delta, w, mat, lam).sigma0 for lam in START_LAMBDAS]
+    return [model.contact_with_lambda(R, Delta, w, mat, lam).sigma0 for lam in START_LAMBDAS]
 
 
 def _w_of_M(problem, inp, M):

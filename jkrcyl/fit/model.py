@@ -49,11 +49,22 @@ def contact(R, Delta, w, materials, strength=None) -> Contact:
     return Contact(R=R, Delta=Delta, w=w, materials=materials, sigma0=strength)
 
 
+def contact_with_lambda(R, Delta, w, materials, lambda_) -> Contact:
+    """The library's cohesive contact of transition parameter lambda_ (Contact.with_lambda)."""
+    return Contact.with_lambda(R, Delta, w, materials, lambda_)
+
+
+def law_coefficient(pb, m: float) -> float:
+    """k of the edge law of the normalised problem pb at the adhesion m = M vartheta (kernel scale; Griffith's
+    (3.5)-(3.6): k = m/pi, K = sqrt(8 w/beta*)): the one place the fit asks a law for the adhesive part.  The
+    superposition holds for laws that fix k at an edge in equilibrium (the fit's JKR path)."""
+    return pb.edge.edge_coefficient(m)
+
+
 def edge_coefficient(c: Contact) -> float:
-    """k of the contact's edge law at its adhesion, in the kernel scale of its normalised problem (Griffith:
-    k = m/pi, jkrcyl.model.problem).  The superposition holds for laws that fix k (the fit's JKR path)."""
+    """k of the contact's edge law at its adhesion, in the kernel scale of its normalised problem."""
     pb = c.problem
-    return pb.edge.edge_coefficient(pb.m)
+    return law_coefficient(pb, pb.m)
 
 
 def scaled(materials: Materials, f: float) -> Materials:
@@ -191,7 +202,7 @@ class Superposed:
     @classmethod
     def of(cls, c: Contact, materials: Materials) -> "Superposed":
         pb = c.problem
-        return cls(materials, pb.edge.edge_coefficient(pb.m), c.load_scale / pb.scale, c.Delta, pb.work_shift,
+        return cls(materials, law_coefficient(pb, pb.m), c.load_scale / pb.scale, c.Delta, pb.work_shift,
                    lambda: c)
 
     @classmethod
@@ -202,7 +213,7 @@ class Superposed:
             raise ValueError(f"Delta, w: outside 0 < Delta < R, w >= 0 (Delta = {Delta!r}, w = {w!r}, f = {f!r})")
         ref, pb = reference(R, materials)
         M = pb.M * math.sqrt(w / (REF_W * f)) * ref.Delta / Delta
-        return cls(materials, pb.edge.edge_coefficient(M * pb.scale), ref.load_scale / pb.scale * f * Delta / ref.Delta,
+        return cls(materials, law_coefficient(pb, M * pb.scale), ref.load_scale / pb.scale * f * Delta / ref.Delta,
                    Delta, pb.work_shift, lambda: contact(R, Delta, w, scaled(materials, f) if f != 1.0 else materials))
 
     @functools.cached_property

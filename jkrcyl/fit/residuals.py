@@ -7,11 +7,12 @@ variance of P(width + e) to second order, so that it stays > 0 at the pull-off, 
 
 Load against approach delta_work (a testing machine): each point's contact parameter a_i is a nuisance, the point
 of the part of the sub-critical branch the path reaches under the stated control (stable, section 8.3, and
-feasible; jkrcyl.fit.branch.segment) nearest to the measurement in the metric of the standard deviations (orthogonal-distance regression, two
-residuals per point).  A variable without a stated error (P under 'load' control when neither is stated,
-delta_work under 'grip-work') is treated as exact: its standard deviation is set EXACT times the other's (scaled
-by the data's slope), so a_i is the root of the model for it to 1e-3 of the noise, while a point beyond the end
-of the stable segment (a load below the pull-off force) keeps a smooth, steep penalty instead of a kink.
+feasible; jkrcyl.fit.branch.segment) nearest to the measurement in the metric of the standard deviations
+(orthogonal-distance regression, two residuals per point; located on the table's splines, then polished on exact
+states).  A variable without a stated error (P under 'load' control when neither is stated, delta_work under
+'grip-work') is treated as exact: its standard deviation is set EXACT times the other's (scaled by the data's
+slope), so a_i is the root of the model for it to 1e-3 of the noise, while a point beyond the end of the stable
+segment (a load below the pull-off force) keeps a smooth, steep penalty instead of a kink.
 """
 from __future__ import annotations
 
