@@ -49,6 +49,31 @@ def test_fit_pull_off_equals_contact_pull_off(m, M, f):
         assert fit.width == pytest.approx(ref.contact_width, rel=1e-4)
 
 
+RUBBER = jkrcyl.Materials.from_young(E=float("inf"), nu=0.3, E_I=2e6, nu_I=0.45)   # roller in a rigid cradle
+
+
+@pytest.mark.parametrize("m,R_,D", [(RUBBER, 0.02, 5e-5), (STEEL, 0.01, 1e-5), (POLYMER, 0.01, 1e-5)],
+                         ids=["rigid-cradle", "alpha-pair", "closed-form"])
+@pytest.mark.parametrize("control", ["load", "grip", "grip-work"])
+def test_fit_track_flags_are_the_core_flags(m, R_, D, control):
+    """The stability and feasibility flags the fit walks (superposed unit parts of the pair, jkrcyl.fit.branch)
+    equal the library's branch flags (jkrcyl.analysis.branches.curve: the solver's states at this M) at the same
+    contact parameters, away from the flips (where the deciding product changes sign, both routes round)."""
+    from jkrcyl.analysis import branches
+    c = jkrcyl.Contact(R_, D, 0.05, m)
+    tr = branch.Track(model.Superposed.of(c, m), control)
+    a = tr.a[tr.a < 0.99 * c.a_crit][::3]
+    core = branches.curve(c.problem, "sub-critical", a=a)
+    flags = {"load": core.stable_load, "grip": core.stable_grip, "grip-work": core.stable_grip_work}[control]
+    mine = tr.stable[np.isin(tr.a, a)]
+    away = np.ones(a.size, bool)
+    for i in np.nonzero(np.diff(flags.astype(int)))[0]:
+        away[max(i - 1, 0):i + 3] = False
+    assert away.sum() > 0.8 * a.size
+    assert np.array_equal(mine[away], flags[away])
+    assert np.array_equal(tr.feasible[np.isin(tr.a, a)][away], core.feasible[away])
+
+
 # --- divergence -------------------------------------------------------------------------------------------------
 def near_pole_data(seed, n=30, hi=14.0):
     """The steel/aluminium case, n widths from 1.05 to hi times the pull-off width (up to 0.92 of the pole), 1 %

@@ -10,7 +10,7 @@ rows then sit on the fitted force instead of beyond it.  So the rows at or below
 tolerance and their own misfit, and widths below the pull-off's) are also tried against the model fitted to the
 other rows (a deletion diagnostic: one descent from the estimate, screened by its linearisation): where leaving
 them out lowers the sum of squares significantly (an outlier test at DRAG_LEVEL) and they lie beyond that model's
-pull-off, they are refused.  The standard error of a pull-off force comes from the envelope theorem: at a fold of
+pull-off by DRAG_SIGMAS standard errors, they are refused.  The standard error of a pull-off force comes from the envelope theorem: at a fold of
 P in a, dP_fold/du = dP/du at the fold's fixed a (superposed states).
 """
 from __future__ import annotations
@@ -24,7 +24,10 @@ from . import branch, model
 
 BEYOND_SIGMAS = 3.0      # a load this many standard errors beyond the fitted pull-off is rejected
 FD_STEP = 1e-6           # step in the internal coordinates for the envelope gradient
-DRAG_LEVEL = 1e-4        # significance at which rows near the pull-off count as dragging the fit
+DRAG_LEVEL = 1e-6        # significance at which rows near the pull-off count as dragging the fit (small: near a
+#                          fold the effective variance of a width error is second order and its residual skewed)
+DRAG_SIGMAS = 5.0        # ... and the standard errors they must then lie beyond the refit's pull-off (extrapolated)
+ROUNDS = 4               # rounds of the forward search (rows left out in groups, most outlying first)
 
 
 class Leg:
@@ -59,38 +62,75 @@ def _standard_error(problem, spec, u, cov_u, rows, a, P):
     return math.sqrt(max(float(grad @ cov_u @ grad), 0.0))
 
 
-def _tolerance(leg, sd):
-    return BEYOND_SIGMAS * np.sqrt(leg.se ** 2 + sd ** 2)
+def _tolerance(leg, sd, sigmas=BEYOND_SIGMAS):
+    return sigmas * np.sqrt(leg.se ** 2 + sd ** 2)
+
+
+class Fit:
+    """One fitted problem as the checks read it: problem, spec, estimate u, its covariance, variance scale s2, the
+    Jacobian of its normalised residuals, and the rows of the full data set it holds (indices)."""
+
+    def __init__(self, problem, spec, u, cov_u, s2, jac, rows):
+        self.problem, self.spec, self.u, self.cov_u, self.s2, self.jac = problem, spec, u, cov_u, s2, jac
+        self.rows = rows
+
+    def raw_cost(self):
+        """Sum of squared residuals in the unit of the stated errors (or of the data when none is stated)."""
+        return float(np.sum(self.problem.residuals(self.u) ** 2)) * self.problem.nominal ** 2
 
 
 def check(problem, spec, u, cov_u, s2, refit, jac=None):
     """ValueError naming the rows beyond the fitted pull-off, or beyond that of the model fitted to the other rows
-    where they drag the fit (``refit(keep)``: (problem, spec, u, cov_u, s2) of the fit to the rows of the mask keep,
-    or None); returns {w: pull-off force [N/m] or None} of the estimate."""
+    where they drag the fit (``refit(keep)``: (problem, spec, u, cov_u, s2, jac) of the fit to the rows of the mask
+    keep, or None); returns {w: pull-off force [N/m] or None} of the estimate."""
     d = problem.data
-    sd = problem.load_sd(u, s2)
-    misfit = np.abs(problem.residuals(u, normalised=False)[:d.n])     # measured minus model load [N/m]
+    fit = Fit(problem, spec, u, cov_u, s2, jac, np.arange(d.n))
     found = legs(problem, spec, u, cov_u)
+    near = _near(fit, found, refuse=True)
+    left_out = np.zeros(d.n, dtype=bool)
+    for _ in range(ROUNDS):                      # a forward search: leave out the most outlying near rows ...
+        sub = _most_outlying(fit, near) if near.any() else None
+        if sub is None:
+            break
+        keep = ~left_out
+        keep[fit.rows[sub]] = False
+        other = refit(keep)
+        if other is None:
+            break
+        other = Fit(*other, np.nonzero(keep)[0])
+        if not _dragged(fit, other):             # ... while leaving them out lowers the cost significantly
+            break
+        left_out, fit = ~keep, other
+        near = _near(fit, legs(fit.problem, fit.spec, fit.u, fit.cov_u), refuse=False)
+    if left_out.any():
+        sd = problem.load_sd(spec.to_internal(fit.spec.values(fit.u)), fit.s2) if problem.sigma_known else \
+            np.full(d.n, math.sqrt(fit.s2) * fit.problem.nominal)
+        for leg in legs(fit.problem, fit.spec, fit.u, fit.cov_u):
+            if leg.P is not None:
+                beyond = d.P < leg.P - _tolerance(leg, sd, DRAG_SIGMAS)
+                _refuse(d, left_out & _rows_of(spec, fit.spec, leg) & beyond, leg.P,
+                        "of the model fitted to the other rows (these rows drag the fit: it reaches them only by "
+                        "moving its pull-off)")
+    return {float(spec.inputs(u).w[np.nonzero(leg.rows)[0][0]]): leg.P for leg in found}
+
+
+def _near(fit, found, refuse):
+    """Rows of a fit (a mask over its own rows) at or below its pull-off within the tolerance and their own
+    misfit, or (width data) smaller than the pull-off's contact; refuse=True: ValueError for rows beyond it."""
+    pr, d = fit.problem, fit.problem.data
+    sd = pr.load_sd(fit.u, fit.s2)
+    misfit = np.abs(pr.residuals(fit.u, normalised=False)[:d.n])     # measured minus model load [N/m]
     near = np.zeros(d.n, dtype=bool)
     for leg in found:
         if leg.P is None:
             continue
         tol = _tolerance(leg, sd)
-        _refuse(d, leg.rows & (d.P < leg.P - tol), leg.P, "of the fitted model")
+        if refuse:
+            _refuse(d, leg.rows & (d.P < leg.P - tol), leg.P, "of the fitted model")
         near |= leg.rows & (d.P <= leg.P + tol + misfit)
         if d.kind == "width":                  # smaller contacts than at pull-off: off the path under load
             near |= leg.rows & (d.x < leg.width)
-    other = refit(~near) if near.any() and _may_drag(problem, spec, u, jac, near) else None
-    if other is not None and _dragged(problem, u, other, near):
-        p2, s2_spec, u2, cov2, s2b = other
-        sd2 = problem.load_sd(spec.to_internal(s2_spec.values(u2)), s2b) if problem.sigma_known else \
-            np.full(d.n, math.sqrt(s2b) * p2.nominal)
-        for leg in legs(p2, s2_spec, u2, cov2):
-            if leg.P is not None:
-                _refuse(d, near & _rows_of(spec, s2_spec, leg) & (d.P < leg.P - _tolerance(leg, sd2)), leg.P,
-                        "of the model fitted to the other rows (these rows drag the fit: it reaches them only by "
-                        "moving its pull-off)")
-    return {float(spec.inputs(u).w[np.nonzero(leg.rows)[0][0]]): leg.P for leg in found}
+    return near
 
 
 def _threshold(problem, q, dof):
@@ -98,39 +138,53 @@ def _threshold(problem, q, dof):
     return stats.chi2.isf(DRAG_LEVEL, q) if problem.sigma_known else stats.f.isf(DRAG_LEVEL, q, max(dof, 1))
 
 
-def _may_drag(problem, spec, u, jac, near):
-    """A cheap screen of :func:`_dragged`: the drop of the sum of squares on deleting the rows ``near`` from the
-    linearised model (r_D^T (I - H_DD)^-1 r_D, H the hat matrix of the Jacobian; exact for a linear model) against
-    a quarter of the threshold.  True (refit) without a Jacobian."""
-    if jac is None:
-        return True
-    d = problem.data
-    idx = np.nonzero(near)[0] if problem.n_residuals == d.n else np.concatenate([np.nonzero(near)[0],
-                                                                                 d.n + np.nonzero(near)[0]])
-    r = problem.residuals(u)
-    q, dof = idx.size, problem.n_residuals - len(spec.names) - problem.nuisance
-    try:
-        Q = np.linalg.qr(jac)[0]
-        H = Q[idx] @ Q[idx].T
-        drop = float(r[idx] @ np.linalg.solve(np.eye(q) - H, r[idx]))
-    except np.linalg.LinAlgError:
-        return True
-    stat = drop if problem.sigma_known else drop / q / max((float(r @ r) - drop) / max(dof - q, 1), 1e-300)
-    return stat > _threshold(problem, q, dof - q) / 4
+def _residual_index(problem, mask):
+    rows = np.nonzero(mask)[0]
+    return rows if problem.n_residuals == problem.data.n else np.concatenate([rows, problem.data.n + rows])
 
 
-def _dragged(problem, u, other, near):
-    """Whether the rows ``near`` are inconsistent with the model fitted to the others: the drop of the sum of
-    squares on leaving them out, in units of the error variance (stated, or the refit's residual variance),
-    beyond the chi2 (errors stated) or F quantile (estimated) of its degrees of freedom at DRAG_LEVEL."""
-    p2, s2_spec, u2, _, s2b = other
-    raw = lambda pr, v: float(np.sum(pr.residuals(v) ** 2)) * pr.nominal ** 2
-    drop = raw(problem, u) - raw(p2, u2)
-    q = problem.n_residuals - p2.n_residuals
-    if problem.sigma_known:
-        return drop > _threshold(problem, q, 0)
-    dof = p2.n_residuals - len(s2_spec.names) - p2.nuisance
-    return dof > 0 and drop / q / (s2b * p2.nominal ** 2) > _threshold(problem, q, dof)
+def _most_outlying(fit, near):
+    """The rows to leave out (a mask over the fit's rows): of the nested sets of the ``near`` rows taken most
+    tensile first, the one whose deletion from the linearised model (drop of the sum of squares
+    r_D^T (I - H_DD)^-1 r_D, H the hat matrix of the Jacobian; exact for a linear model) is the most significant;
+    None where even that one stays above DRAG_LEVEL at four times its drop (no refit).  All of them without a
+    Jacobian."""
+    pr, d = fit.problem, fit.problem.data
+    if fit.jac is None:
+        return near
+    r = pr.residuals(fit.u)
+    dof = pr.n_residuals - len(fit.spec.names) - pr.nuisance
+    Q = np.linalg.qr(fit.jac)[0]
+    best, mask = (math.inf, None), np.zeros(d.n, dtype=bool)
+    for i in np.nonzero(near)[0][np.argsort(d.P[near], kind="stable")]:
+        mask[i] = True
+        idx = _residual_index(pr, mask)
+        q = idx.size
+        if q >= dof:
+            break
+        try:
+            drop = float(r[idx] @ np.linalg.solve(np.eye(q) - Q[idx] @ Q[idx].T, r[idx]))
+        except np.linalg.LinAlgError:
+            continue
+        if pr.sigma_known:
+            level = stats.chi2.sf(4 * drop, q)
+        else:
+            level = stats.f.sf(4 * drop / q / max((float(r @ r) - drop) / (dof - q), 1e-300), q, dof - q)
+        if level < best[0]:
+            best = (level, mask.copy())
+    return best[1] if best[0] < DRAG_LEVEL else None
+
+
+def _dragged(fit, other):
+    """Whether the rows the fit ``other`` leaves out of ``fit`` are inconsistent with the model fitted to the
+    others: the drop of the sum of squares, in units of the error variance (stated, or the refit's residual
+    variance), beyond the chi2 (errors stated) or F quantile (estimated) of its degrees of freedom at DRAG_LEVEL."""
+    drop = fit.raw_cost() - other.raw_cost()
+    q = fit.problem.n_residuals - other.problem.n_residuals
+    if fit.problem.sigma_known:
+        return drop > _threshold(fit.problem, q, 0)
+    dof = other.problem.n_residuals - len(other.spec.names) - other.problem.nuisance
+    return dof > 0 and drop / q / (other.s2 * other.problem.nominal ** 2) > _threshold(fit.problem, q, dof)
 
 
 def _rows_of(spec, other_spec, leg):

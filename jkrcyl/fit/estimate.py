@@ -267,8 +267,8 @@ def _to_values(spec, u, j, lo, hi):
 
 
 def _refit(problem, spec, u, keep, loss, f_scale):
-    """(problem, spec, u, cov_u, s2) of the fit to the rows of the mask keep, descending from u; None where too few
-    rows remain or the descent fails (the deletion diagnostic of jkrcyl.fit.checks)."""
+    """(problem, spec, u, cov_u, s2, jac) of the fit to the rows of the mask keep, descending from u; None where too
+    few rows remain or the descent fails (the deletion diagnostic of jkrcyl.fit.checks)."""
     d = problem.data
     pick = lambda v: None if v is None else v[keep]
     sub = Data(P=d.P[keep], x=d.x[keep], kind=d.kind, sigma_P=pick(d.sigma_P), sigma_x=pick(d.sigma_x),
@@ -287,4 +287,4 @@ def _refit(problem, spec, u, keep, loss, f_scale):
         _, cov_u = uncertainty.covariance(res.jac, res.x, other, s2)
     except np.linalg.LinAlgError:
         return None
-    return p2, other, res.x, cov_u, s2
+    return p2, other, res.x, cov_u, s2, res.jac
