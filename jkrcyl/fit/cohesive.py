@@ -45,33 +45,35 @@ def transition(R, Delta, w, materials, strength):
 
 class Budget:
     """The work one cohesive fit may do, counted in states weighted by their cost at lambda (a state's
-    collocation grows with lambda: ~1 ms at lambda <= 3, ~30 ms at 20): BUDGET units, about a minute.  Past it,
-    :class:`OverBudget` (jkrcyl.fit.fit turns it into a ValueError naming sigma0)."""
+    collocation grows with lambda: ~1 ms at lambda <= 3, ~30 ms at 20): max(BUDGET, PER_POINT n) units for n
+    points.  Past it, :class:`OverBudget` (jkrcyl.fit.fit turns it into a ValueError naming sigma0)."""
 
-    def __init__(self, units=None):
-        self.left, self.lam = BUDGET if units is None else units, None
+    def __init__(self, points):
+        self.units = max(BUDGET, PER_POINT * points)
+        self.left, self.lam = self.units, None
 
     def spend(self, lam, states):
         self.lam = lam
         self.left -= states * (1 + (lam / 4) ** 2.3)
         if self.left < 0:
-            raise OverBudget(lam)
+            raise OverBudget(lam, self.units)
 
 
-BUDGET = 120_000       # twice the costliest fit of tests/test_fit_cohesive.py (12 JKR points, sigma0 at the JKR end)
+BUDGET = 100_000       # typical fits with profile intervals spend 600-900 units per point (lambda 1-3), a fit whose
+PER_POINT = 6_000      # sigma0 ends at the JKR edge ~5000 (12 points; tests/test_fit_cohesive.py): about a minute
 
 
 class OverBudget(Exception):
     """A cohesive fit ran out of :class:`Budget` (not a ValueError: the residuals turn those into NaN walls)."""
 
-    def __init__(self, lam):
+    def __init__(self, lam, units):
         super().__init__(lam)
-        self.lam = lam
+        self.lam, self.units = lam, units
 
     def message(self):
-        return (f"sigma0: the cohesive fit needs more than {BUDGET} state evaluations here (weighted by their cost; "
-                f"the last at lambda = {self.lam:.3g}, where the law is near JKR's and each state is costly): the "
-                "data barely determine sigma0; fit the JKR law (sigma0=None), fix sigma0, or ask for "
+        return (f"sigma0: the cohesive fit needs more than {self.units:.0f} state evaluations here (weighted by their "
+                f"cost; the last at lambda = {self.lam:.3g}, where the law is near JKR's and each state is costly): "
+                "the data barely determine sigma0; fit the JKR law (sigma0=None), fix sigma0, or ask for "
                 "interval='wald' or None")
 
 

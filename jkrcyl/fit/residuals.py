@@ -36,7 +36,7 @@ class Problem:
         # rounding, so the default (~1e-8) step would give Jacobian errors of ~1 %; None keeps the default
         self.diff_step = None if spec.superposes else 1e-6
         self.sigma_known = data.sigma_P is not None or data.sigma_x is not None
-        self.budget = None if spec.superposes else cohesive.Budget()     # the work a cohesive fit may do
+        self.budget = None if spec.superposes else cohesive.Budget(data.n)     # the work a cohesive fit may do
         self.a = model.a_of_width(data.x, R) if data.kind == "width" else None
         if data.kind == "width":
             self.mode = "width"
