@@ -81,22 +81,21 @@ class Table:
             return np.ones_like(a), np.zeros_like(a)
         return 1 - a / self.pole, np.full_like(a, -1 / self.pole)
 
-    def interpolate(self, a, k):
+    def interpolate(self, a, k, fields=SPLINE_FIELDS):
         """{field: (value, d/da, d2/da2)} of the held quantities p, dw, dn (kernel scale) at edge coefficient k."""
         a = np.asarray(a, dtype=float)
         x = np.log(a)
-        w, dw = self._weight(a)
-        y, yx, yxx = self.spline(x), self.slope(x), self.curvature(x)
-        a_, w_, dw_ = a[..., None], w[..., None], dw[..., None]
-        ya, yaa = yx / a_, (yxx - yx) / (a_ * a_)
-        v = y / w_
-        d1 = (ya - v * dw_) / w_
-        d2 = (yaa - 2 * d1 * dw_) / w_
-        out = {}
-        for i, f in enumerate(SPLINE_FIELDS):
-            out[f] = tuple(z[..., 2 * i] + k * z[..., 2 * i + 1] for z in (v, d1, d2))
-        return out
-
+        cols = [c for f in fields for c in (2 * SPLINE_FIELDS.index(f), 2 * SPLINE_FIELDS.index(f) + 1)]
+        y, yx, yxx = self.spline(x)[..., cols], self.slope(x)[..., cols], self.curvature(x)[..., cols]
+        if math.isinf(self.pole):
+            w, dw = 1.0, 0.0
+        else:
+            w, dw = (1 - a / self.pole)[..., None], -1 / self.pole
+        a_ = a[..., None]
+        v = y / w
+        d1 = (yx / a_ - v * dw) / w
+        d2 = ((yxx - yx) / (a_ * a_) - 2 * d1 * dw) / w
+        return {f: tuple(z[..., 2 * i] + k * z[..., 2 * i + 1] for z in (v, d1, d2)) for i, f in enumerate(fields)}
 
     def point(self, field, a, k):
         """(value, d/da, d2/da2) of one held quantity at one a (the same cubic as :meth:`interpolate`, evaluated
@@ -195,8 +194,13 @@ class Track:
         """Node index of the smallest stable, feasible state where the held quantity is 0 (and its a), or None."""
         for r, _ in _roots.roots_on_grid(self.y, self.a, lambda lo, hi, flo, fhi: self._root(self.held, lo, hi,
                                                                                               flo, fhi)):
-            s = model.superpose(model.unit_slices(self.materials, [r]), self.k)
-            if _stab.single_patch_flags(s, self.sp.work_shift)[self.control][0] and s.gap_open[0]:
+            i = int(np.searchsorted(self.a, r))
+            near = slice(max(i - 1, 0), i + 1)          # the flags of the cell's nodes, where they agree ...
+            ok = self.stable[near] & self.feasible[near]
+            if ok.all() != ok.any():                   # ... else the core's rule at the root itself
+                s = model.superpose(model.unit_slices(self.materials, [r]), self.k)
+                ok = _stab.single_patch_flags(s, self.sp.work_shift)[self.control] & s.gap_open
+            if ok.all():
                 return self.index(r), r
         return None
 

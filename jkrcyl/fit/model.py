@@ -121,19 +121,26 @@ POINTS_KEPT = 50_000  # unit states kept per pair (a subset of measured widths, 
 _points = {}
 
 
-def _unit(materials, a):
-    """The unit parts at a: solved where not kept (two library states per contact parameter), kept per point."""
-    kept = _points.setdefault(materials, {})
-    if len(kept) > POINTS_KEPT:
-        kept.clear()
-    new = np.array(sorted({float(x) for x in a if float(x) not in kept}))
-    if new.size:
-        s0, s1, k1 = shape(materials)
-        lo, hi = s0.states(new), s1.states(new)
-        rows = [getattr(lo, f) for f in LINEAR_FIELDS] + [(getattr(hi, f) - getattr(lo, f)) / k1
-                                                           for f in LINEAR_FIELDS] + [hi.p_k, hi.dn_k]
-        kept.update(zip(new.tolist(), np.array(rows).T))
-    table = np.array([kept[float(x)] for x in a]).T
+def _solve(materials, a):
+    """The unit parts at a as rows (base of each LINEAR_FIELDS, unit of each, p_k, dn_k): two library states."""
+    s0, s1, k1 = shape(materials)
+    lo, hi = s0.states(a), s1.states(a)
+    return np.array([getattr(lo, f) for f in LINEAR_FIELDS] + [(getattr(hi, f) - getattr(lo, f)) / k1
+                                                               for f in LINEAR_FIELDS] + [hi.p_k, hi.dn_k])
+
+
+def _unit(materials, a, keep=True):
+    """The unit parts at a: solved where not kept, kept per point (keep=False: solved afresh, not kept)."""
+    if keep:
+        kept = _points.setdefault(materials, {})
+        if len(kept) > POINTS_KEPT:
+            kept.clear()
+        new = np.array(sorted({float(x) for x in a if float(x) not in kept}))
+        if new.size:
+            kept.update(zip(new.tolist(), _solve(materials, new).T))
+        table = np.array([kept[float(x)] for x in a]).T
+    else:
+        table = _solve(materials, a)
     n = len(LINEAR_FIELDS)
     parts = {f: (table[i], table[n + i]) for i, f in enumerate(LINEAR_FIELDS)}
     return Unit(np.asarray(a, dtype=float), parts, table[2 * n], table[2 * n + 1])
@@ -144,10 +151,12 @@ def _cached_unit(materials, a_bytes):
     return _unit(materials, np.frombuffer(a_bytes, dtype=float).copy())
 
 
-def unit_slices(materials: Materials, a) -> Unit:
-    """The unit parts at the contact parameters a (1-D), cached per pair and set of a (the measured widths)."""
+def unit_slices(materials: Materials, a, keep=True) -> Unit:
+    """The unit parts at the contact parameters a (1-D), cached per pair and set of a (the measured widths);
+    keep=False: solved afresh (contact parameters that change with every evaluation, the located states of
+    delta_work data)."""
     a = np.ascontiguousarray(np.atleast_1d(np.asarray(a, dtype=float)))
-    return _cached_unit(materials, a.tobytes())
+    return _cached_unit(materials, a.tobytes()) if keep else _unit(materials, a, keep=False)
 
 
 def superpose(u: Unit, k: float) -> Slice:
@@ -221,16 +230,16 @@ class Superposed:
         """The library's contact (built on demand: the pull-off and the checks ask it)."""
         return self._make()
 
-    def slice(self, a) -> Slice:
-        return superpose(unit_slices(self.materials, a), self.k)
+    def slice(self, a, keep=True) -> Slice:
+        return superpose(unit_slices(self.materials, a, keep), self.k)
 
     def physical(self, s: Slice) -> States:
         L, D = self.L, self.D
         return States(s.a, L * s.p, D * s.dw, D * s.h, L * s.dp_da, D * s.ddw_da, s)
 
-    def states(self, a) -> States:
-        """States at the contact parameters a (1-D)."""
-        return self.physical(self.slice(a))
+    def states(self, a, keep=True) -> States:
+        """States at the contact parameters a (1-D; keep: see :func:`unit_slices`)."""
+        return self.physical(self.slice(a, keep))
 
     def loads(self, a, slopes=False):
         """(P, dP/da) [N/m] at a (dP/da None unless slopes): the load alone, for the width residuals."""

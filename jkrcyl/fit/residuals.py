@@ -22,7 +22,7 @@ from . import branch, cohesive, model
 
 CONTROLS = ("load", "grip-work")
 EXACT = 1e-3          # standard deviation of an 'exact' variable relative to the other one's (see above)
-POLISH = 2            # Gauss-Newton steps of each located contact on exact states
+POLISH = 1            # Gauss-Newton steps of each located contact on exact states (the splines hold ~1e-8)
 
 
 class Problem:
@@ -167,7 +167,7 @@ class Problem:
         P, P1, X, X1 = (np.empty(d.n) for _ in range(4))
         for step in range(POLISH + 1):
             for sp, sel in legs:
-                st = sp.states(a[sel])
+                st = sp.states(a[sel], keep=False)
                 P[sel], P1[sel], X[sel], X1[sel] = st.P, st.dP_da, st.delta_work, st.ddelta_work_da
             if step == POLISH:
                 return a, P, X
@@ -211,7 +211,7 @@ class Problem:
         a_hi = cand[rows, np.minimum(best + 1, nodes.size - 1)]
 
         def grad(a):
-            v = tab.interpolate(a, k)
+            v = tab.interpolate(a, k, ("p", "dw"))
             (p, p1, p2), (x, x1, x2) = v["p"], v["dw"]
             eP, ex = d.P - L * p, d.x - inp.offset - D * x
             P1, X1, P2, X2 = L * p1, D * x1, L * p2, D * x2
