@@ -7,7 +7,9 @@
 The kernels are emitted by ``make derive`` into jkrcyl.generated and reached through jkrcyl.numerics;
 the printed formulas the tests compare with live in the top-level package reference/ (not shipped).
 """
+from . import laws
 from .contact import Contact, State
+from .notices import BranchLimitWarning, ValidityWarning
 from .critical import a_crit
 from .equilibria import zero_load_contact, zero_load_max_M
 from .materials import Materials
@@ -18,7 +20,7 @@ try:
 except PackageNotFoundError:         # running from a source tree that was never installed
     __version__ = "0.1.0"
 
-__all__ = ["__version__", "Contact", "Materials", "State", "a_crit", "fit", "zero_load_contact", "zero_load_max_M"]
+__all__ = ["__version__", "Contact", "Materials", "State", "ValidityWarning", "BranchLimitWarning", "a_crit", "laws", "fit", "zero_load_contact", "zero_load_max_M"]
 
 
 def __getattr__(name):

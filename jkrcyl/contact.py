@@ -3,11 +3,12 @@
 Units: any consistent set (SI: R, Delta [m], w [J/m^2], moduli [Pa], loads per unit length [N/m]).
 """
 import math
+import warnings
 from dataclasses import dataclass
+from typing import Optional
 
-import numpy as np
 
-from ._validate import PRESSURE_A_MAX, angle, contact_parameter, count, finite_scalar
+from ._validate import count, finite_scalar
 from .analysis import branches as _br
 from .analysis import confined as _confined
 from .analysis import cycle as _cycle
@@ -15,28 +16,67 @@ from .analysis import forward as _fw
 from .analysis import pull_off as _pull_off
 from .analysis import tracing as _tr
 from .contact_cohesive import CohesiveLaw
+from .contact_fields import AtContactSize, State  # noqa: F401  (State: jkrcyl.State)
 from .materials import Materials
+from .laws import Dugdale, EdgeLaw, Griffith
 from .model import two_patch as _two
 from .model.problem import Problem
-from .model.single_patch import physical, solver
+from .model.single_patch import solver
+from .notices import ValidityWarning
 from .numerics import kernels as _k
 
 PARALLEL_MIN = _k.PARALLEL_MIN   # state() uses the prange kernel from this many contact parameters on
 
 
+#: Delta/R above which Contact warns: the gap Delta (1 - cos phi) of section 2 is the first order in Delta/R
+#: of the exact gap between the circles, so the states carry relative errors of order Delta/R
+DELTA_OVER_R_WARN = 0.05
+
+
 @dataclass(frozen=True)
-class Contact(CohesiveLaw):
-    """Hole radius R, clearance Delta = R - R_D >= 0, work of adhesion w >= 0, the materials, and the edge law:
-    sigma0 = None (JKR: adhesion of zero range, the Griffith edge) or the Maugis-Dugdale cohesive strength
-    sigma0 > 0 [Pa] (the traction sigma0 wherever 0 < gap <= h0 = w/sigma0; needs w > 0 and Delta > 0; or give
-    the transition parameter: :meth:`with_lambda`).  Every analysis (solve, pull_off, cycle, curve, adherence)
-    uses the law; two patches and full contact are modelled for JKR only (ValueError with sigma0)."""
+class Contact(CohesiveLaw, AtContactSize):
+    """A pin of radius R_D = R - Delta in a hole of radius R: the contact of the paper (SI units throughout).
+
+    Parameters
+    ----------
+    R : float
+        Hole radius [m], > 0.
+    Delta : float
+        Radial clearance R - R_D [m], in [0, R).  The theory assumes Delta << R (a
+        :class:`ValidityWarning` above Delta/R = 0.05).
+    w : float
+        Work of adhesion [J/m^2], >= 0.
+    materials : jkrcyl.Materials
+        The plane-strain material pair (hole and pin; either may be rigid).
+    sigma0 : float, optional
+        Shorthand for ``law=jkrcyl.laws.Dugdale(sigma0)``: the Maugis-Dugdale cohesive strength [Pa] > 0 (the
+        traction sigma0 wherever 0 < gap <= h0 = w/sigma0; needs w > 0 and Delta > 0; or give the transition
+        parameter: :meth:`with_lambda`).  The two spellings make the same contact.
+    law : jkrcyl.laws.EdgeLaw, optional
+        The edge law: ``jkrcyl.laws.Griffith()`` (JKR, the default), ``jkrcyl.laws.Dugdale(sigma0)`` or a law of
+        one's own (jkrcyl.laws).  Every analysis (solve, pull_off, cycle, curve, adherence, two_patch) uses it;
+        a branch family the law does not model is a ValueError naming the law's parameter.
+
+    Raises
+    ------
+    ValueError
+        Naming the parameter and its allowed range, for any input outside it.
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m)
+    >>> round(pin.pull_off().P)                  # N/m
+    -1555
+    """
 
     R: float
     Delta: float
     w: float
     materials: Materials
-    sigma0: float = None
+    sigma0: Optional[float] = None
+    law: Optional[EdgeLaw] = None
 
     def __post_init__(self):
         object.__setattr__(self, "R", finite_scalar("R", self.R, low=0.0, low_open=True))
@@ -47,11 +87,13 @@ class Contact(CohesiveLaw):
         object.__setattr__(self, "w", finite_scalar("w", self.w, low=0.0))
         if not isinstance(self.materials, Materials):
             raise ValueError(f"materials must be a jkrcyl.Materials, got {type(self.materials).__name__}")
-        if self.sigma0 is not None:
-            object.__setattr__(self, "sigma0", finite_scalar("sigma0", self.sigma0, low=0.0, low_open=True))
-            if self.w == 0 or self.Delta == 0:
-                raise ValueError(f"sigma0: a cohesive law needs w > 0 and Delta > 0 (h0 = w/sigma0, lengths over "
-                                 f"Delta), got w = {self.w!r}, Delta = {self.Delta!r}")
+        object.__setattr__(self, "law", _law(self.sigma0, self.law))
+        object.__setattr__(self, "sigma0", getattr(self.law, "sigma0", None))
+        self.law.check(self)
+        if self.Delta > DELTA_OVER_R_WARN * self.R:
+            warnings.warn(f"Delta/R = {self.Delta / self.R:.3g}: the theory assumes a clearance small against the "
+                          f"hole radius (the gap of section 2 is first order in Delta/R); expect relative errors of "
+                          f"order Delta/R", ValidityWarning, stacklevel=3)
 
     # --- parameters of sections 3-6 ---------------------------------------------------------------
     @property
@@ -71,8 +113,8 @@ class Contact(CohesiveLaw):
 
     @property
     def zeta(self):
-        """zeta* = sqrt(2 w R/A) of (3.6)."""
-        return math.sqrt(2 * self.w * self.R / self.A)
+        """zeta* = sqrt(2 w R/A) of (3.6) (w: the law's edge work, jkrcyl.model.edge.EdgeLaw.edge_work)."""
+        return math.sqrt(2 * self.law.edge_work(self.w) * self.R / self.A)
 
     @property
     def a_crit(self):
@@ -103,32 +145,6 @@ class Contact(CohesiveLaw):
             raise ValueError(f"{what} is undefined for Delta = 0 (neat fit, section 7.3): "
                              "it normalises by Delta; use the dimensional values")
 
-    # --- states --------------------------------------------------------------------------------
-    def state(self, a, method="auto"):
-        """Equilibrium at contact parameter(s) a = tan(eps/2) > 0: see :class:`State`.
-
-        method: "closed-form" (the paper's (4.4)-(5.10); ValueError unless alpha* = 0), "numeric" (collocation
-        solution of (2.1)/(5.2), jkrcyl.numerics.one_arc, any alpha*) or "auto" (closed form where alpha* = 0).
-        """
-        self._require_griffith("state(a)")
-        if method not in ("auto", "closed-form", "numeric"):
-            raise ValueError(f"method must be 'auto', 'closed-form' or 'numeric', got {method!r}")
-        if method == "closed-form":
-            self.materials.require_closed_form("method='closed-form'")
-        arr = contact_parameter(a)
-        flat = np.ascontiguousarray(arr.ravel())
-        sv = physical(self, method)
-        fields = {k: _shaped(v, arr.shape) for k, v in sv.states(flat).items()}
-        return State(contact=self, a=_shaped(flat, arr.shape), **fields)
-
-    def approach_work(self, P, delta):
-        """Work-conjugate approach delta_work = delta + P/(8 pi G_I) [m] (derive/green.py) of a state with load P
-        [N/m] and the paper's approach delta [m] (5.8); only the net load enters (the n = 1 Michell mode), so it
-        holds for one patch, two patches and full contact alike.  Scalars or arrays of equal shape."""
-        shape = np.broadcast(np.asarray(P), np.asarray(delta)).shape
-        out = _k.approach_work(P, delta, inv_G_I=self.materials.inv_G_I)
-        return _shaped(out, shape)
-
     # --- sections 6 and 8 ----------------------------------------------------------------------------
     def curve(self, regime="sub-critical", n=2000):
         """Equilibrium branch with P [N/m], delta and delta_work [m]: jkrcyl.equilibria.curve."""
@@ -144,12 +160,13 @@ class Contact(CohesiveLaw):
 
     def two_patch(self, n=None):
         """Two-patch branches (second contact at the top of the hole), with P [N/m], delta, delta_work [m]."""
-        pb = _two.require_finite_theta(self.problem.require_confined("two_patch() is"))
+        pb = _two.require_finite_theta(self.problem.require("two-patch", "two_patch() is"))
         return tuple(b.with_units(self.load_scale, self.Delta) for b in _tr.branches(pb, n))
 
     def confined_events(self):
         """What follows when the gap closes at phi = pi under slow pulling: jkrcyl.analysis.confined."""
-        return _confined.confined_events(_two.require_finite_theta(self.problem.require_confined("confined_events() is")))
+        pb = self.problem.require("two-patch", "confined_events() is")
+        return _confined.confined_events(_two.require_finite_theta(pb))
 
     # --- forward problems and paths (jkrcyl.analysis) -----------------------------------------------------
     def solve(self, P=None, delta=None, branches=None, delta_work=None):
@@ -194,126 +211,14 @@ class Contact(CohesiveLaw):
             raise ValueError(f"{names[1]} must be < {names[0]}, got {names[1]} = {lo!r}, {names[0]} = {hi!r}")
         return _cycle.cycle(self.problem, _fw.Units.of(self), control, hi, lo, n, self.approach_work)
 
-    def pressure(self, a, phi, parts=False):
-        """Contact pressure N(phi) of (5.4) [Pa], compressive positive (section 6); 0 outside the contact.
-
-        Parameters
-        ----------
-        a : float or array_like
-            Contact parameter(s) tan(eps/2) > 0, numpy-broadcast against phi.
-        phi : float or array_like
-            Angle(s) from the bottom of the hole [rad], wrapped to (-pi, pi] as in :meth:`gap`.
-        parts : bool
-            False: the total N = bounded + unbounded.  True: the tuple (bounded, unbounded), the unbounded
-            part being the r0 term of (5.4) (square-root singular at the edges, negative under adhesion).
-
-        Returns
-        -------
-        ndarray or float, or a tuple of two when parts=True
-        """
-        self._require_griffith("pressure(a, phi)")
-        a_arr, phi_arr = _broadcast(contact_parameter(a), angle(phi))
-        if np.max(a_arr) > PRESSURE_A_MAX:
-            raise ValueError(f"a must be <= {PRESSURE_A_MAX:g} in pressure() (the bounded part of (5.4) loses its "
-                             f"digits beyond: atanh near 1), got {np.max(a_arr)!r}")
-        wrapped = np.mod(phi_arr + math.pi, 2 * math.pi) - math.pi
-        wrapped = np.where(wrapped == -math.pi, math.pi, wrapped).ravel()
-        flat_a = a_arr.ravel()
-        nb, nu = np.zeros(flat_a.size), np.zeros(flat_a.size)
-        sv = physical(self)
-        for ai in np.unique(flat_a):
-            sel = flat_a == ai
-            nb[sel], nu[sel] = sv.pressure(float(ai), wrapped[sel])
-        if parts:
-            return _shaped(nb, a_arr.shape), _shaped(nu, a_arr.shape)
-        return _shaped(nb + nu, a_arr.shape)
-
-    def gap(self, a, phi):
-        """Gap h(phi) of (5.9) [m]: numpy-broadcast over a and phi; 0 inside the contact."""
-        self._require_griffith("gap(a, phi)")
-        a_arr, phi_arr = _broadcast(contact_parameter(a), angle(phi))
-        return _shaped(physical(self).gap(a_arr.ravel(), phi_arr.ravel()), a_arr.shape)
-
-
-def _broadcast(*arrays):
-    """np.broadcast_arrays as owned, writeable copies (numba warns on broadcast views)."""
-    return [np.array(x) for x in np.broadcast_arrays(*arrays)]
-
-
-def _shaped(values, shape):
-    out = np.asarray(values).reshape(shape)
-    return out[()] if out.ndim == 0 else out
-
-
-@dataclass(frozen=True)
-class State:
-    """Equilibria at the contact parameters a (arrays shaped like a).
-
-    P [N/m] (4.4), B [N/m] (4.5a), C [N/m] (4.5b), c0 [m], c1 [m] (2.6), r0 [Pa] (2.12),
-    K [Pa m^1/2] (3.4), G_release [J/m^2] (3.5), delta [m] (5.8), h_pi [m] (5.10);
-    delta_work [m]: the work-conjugate approach (derive/green.py).
-    """
-
-    contact: Contact
-    a: np.ndarray
-    P: np.ndarray
-    B: np.ndarray
-    C: np.ndarray
-    c0: np.ndarray
-    c1: np.ndarray
-    r0: np.ndarray
-    K: np.ndarray
-    G_release: np.ndarray
-    delta: np.ndarray
-    h_pi: np.ndarray
-
-    def __repr__(self):
-        a, P = np.ravel(self.a), np.ravel(self.P)
-        if a.size == 1:
-            return (f"State(a={a[0]:.6g}, P={P[0]:.6g} N/m, delta={float(np.ravel(self.delta)[0]):.4g} m, "
-                    f"feasible={bool(np.ravel(self.feasible)[0])})")
-        return (f"State({a.size} points, a in [{a.min():.4g}, {a.max():.4g}], P in [{P.min():.4g}, {P.max():.4g}] "
-                f"N/m, {int(np.sum(np.ravel(self.feasible)))} feasible)")
-
-    @property
-    def eps(self):
-        """Contact half-angle eps = 2 atan(a) [rad]."""
-        return 2 * np.arctan(self.a)
-
-    @property
-    def eps_star(self):
-        """Normalised half-angle eps* = 2 atan(a/a_crit)/pi (section 6)."""
-        return 2 * np.arctan(self.a / self.contact.a_crit) / math.pi
-
-    @property
-    def P_star(self):
-        """P* = P beta*/(4 pi Delta vartheta) (section 6); P_R* of (7.6) when vartheta = inf."""
-        return self.P / self.contact.load_scale
-
-    @property
-    def delta_over_Delta(self):
-        self.contact._require_clearance("delta_over_Delta")
-        return self.delta / self.contact.Delta
-
-    @property
-    def delta_work(self):
-        """Work-conjugate approach delta_work = delta + P/(8 pi G_I) [m] (derive/green.py): displacement of the
-        pin's centroid relative to the hole's rim for a load spread over the pin, so that P d(delta_work) is
-        the work done on the contact.  The paper's delta (5.8) is the rims' approach with the load at the
-        pin's centre; it differs by P/(8 pi G_I) and is not the conjugate of P (Fig. 7: negative stiffness)."""
-        return self.contact.approach_work(self.P, self.delta)
-
-    @property
-    def delta_work_over_Delta(self):
-        self.contact._require_clearance("delta_work_over_Delta")
-        return self.delta_work / self.contact.Delta
-
-    @property
-    def h_pi_over_Delta(self):
-        self.contact._require_clearance("h_pi_over_Delta")
-        return self.h_pi / self.contact.Delta
-
-    @property
-    def feasible(self):
-        """Gap inequality h >= 0 at every exterior angle; its minimum is min(0, h(pi)) (derive/gap.py)."""
-        return self.h_pi >= 0
+def _law(sigma0, law) -> EdgeLaw:
+    """The contact's law from the shorthand sigma0 or law= (both: they must agree)."""
+    if law is not None and not isinstance(law, EdgeLaw):
+        raise ValueError(f"law must be a jkrcyl.laws.EdgeLaw (e.g. jkrcyl.laws.Griffith() or "
+                         f"jkrcyl.laws.Dugdale(sigma0)), got {law!r}")
+    if sigma0 is None:
+        return Griffith() if law is None else law
+    shorthand = Dugdale(sigma0)
+    if law is not None and law != shorthand:
+        raise ValueError(f"sigma0: give the law once (sigma0={sigma0!r} is Dugdale(sigma0), law={law!r})")
+    return shorthand

@@ -194,5 +194,5 @@ def test_problem_carries_the_law_and_is_hashable():
     c = pin(3.0)
     assert c.lambda_ == pytest.approx(3.0, rel=1e-13) and c.h0 == pytest.approx(c.w / c.sigma0)
     pb = c.problem
-    assert pb.edge.name == "Dugdale" and hash(pb) == hash(pin(3.0).problem) and pb != JKR.problem
+    assert pb.edge.name == "Maugis-Dugdale" and hash(pb) == hash(pin(3.0).problem) and pb != JKR.problem
     assert pb.edge.s0 == pytest.approx(c.sigma0 * c.R * c.beta / (4 * math.pi * c.Delta), rel=1e-14)

@@ -76,7 +76,7 @@ def outcomes(pb: Problem, points):
     from dataclasses import replace
     regime = None
     if any(not p.feasible for p in points):
-        regime = ("gap-closes-first" if pb.rigid_cradle or pb.M == 0 or not _br.solver(pb).models_confined
+        regime = ("gap-closes-first" if pb.rigid_cradle or pb.M == 0 or not pb.models("two-patch")
                   else confined_events(pb).regime)
     return [replace(p, outcome=(regime if not p.feasible else
                                 "zip-full" if _po.grows_under_pull(pb, p.a, "load") else "detachment"))

@@ -26,6 +26,7 @@ are positive downward (pushing the pin into the bottom of the hole).
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 from typing import Callable, Dict, List
 
@@ -36,6 +37,7 @@ from ..model import stability as _stab
 from ..model import two_patch as _two
 from ..model.problem import Problem
 from ..model.single_patch import solver
+from ..notices import BranchLimitWarning
 from ..results import Equilibrium
 from ..results.states import CONTROLS
 from . import branches as _br
@@ -59,7 +61,7 @@ class Units:
     @classmethod
     def of(cls, contact) -> "Units":
         return cls(contact.R, contact.Delta, contact.load_scale,
-                   contact.problem.edge.stress_intensity(contact.w, contact.beta),
+                   contact.law.stress_intensity(contact),
                    4 * math.pi * contact.Delta ** 2 / contact.beta)
 
 
@@ -114,15 +116,31 @@ def _single(regime: str, side: str = "bottom"):
             target = -target if key == "P_star" else -2.0 - target
         field = FIELD_OF_KEY[key]
         t = target * (pb.scale if field == "p" else 1.0)
+        _warn_past_table(pb, un, regime, field, t, side)
         return single_patch_states(pb, un, regime, [r for r, _ in _br.roots(pb, regime, field, t)], control, side)
     solver.__doc__ = f"{regime} single patch at the {side} of the hole."
     return solver
 
 
+def _warn_past_table(pb, un, regime, field, target, side):
+    """BranchLimitWarning where the target lies beyond the held quantity's range on a branch's table and the
+    table stops short of the branch's end (the solver's extent, e.g. the cohesive law's traced load cap); the
+    closed forms' tables reach a_crit, where the load is unbounded."""
+    name, scaled = _br.SLICE_OF_CURVE[field]
+    values = np.asarray(getattr(_br.table(pb, regime), name)) * (pb.scale if scaled else 1.0)
+    if values.size and target > values.max() and solver(pb).stops_short(regime):
+        what, unit = ("P", un.load_scale / pb.scale) if field == "p" else ("the approach", un.Delta)
+        sgn = -1.0 if side == "top" else 1.0
+        end = sgn * values.max() * unit
+        warnings.warn(f"{what}: the {regime}{'-top' if side == 'top' else ''} branch of the {pb.edge.name} law is "
+                      f"traced up to {what} = {end:.6g} (the solver's table: {solver(pb).stops_short(regime)}); "
+                      "states beyond were not searched", BranchLimitWarning, stacklevel=5)
+
+
 def confined(pb: Problem) -> bool:
     """True when some single-patch state closes the gap at phi = pi (h(pi) = 0 of (5.10)): two-patch states
     exist (finite vartheta, M > 0).  False where two patches are not modelled (the cohesive law)."""
-    return solver(pb).models_confined and bool(_tr.onset_angles(pb))
+    return pb.models("two-patch") and bool(_tr.onset_angles(pb))
 
 
 def two_patch_state(pb: Problem, un: Units, s, control) -> Equilibrium:
@@ -199,8 +217,9 @@ def check_branches(branches, pb: Problem = None) -> list:
     for b in names:
         if not isinstance(b, str) or b not in BRANCH_SOLVERS:
             raise ValueError(f"branches: unknown branch {b!r} (choose from {', '.join(BRANCH_SOLVERS)})")
-    if pb is not None and {"two-patch", "full-contact"} & set(names):
-        pb.require_confined("the two-patch and full-contact branches are", "branches")
+    for family in ("two-patch", "full-contact", "super-critical"):
+        if pb is not None and any(b.startswith(family) for b in names):
+            pb.require(family, f"the {family} branch is")
     return names
 
 

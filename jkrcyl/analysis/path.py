@@ -245,9 +245,9 @@ def unmodelled(pb: Problem) -> str:
 def no_first_contact_reason(pb: Problem) -> str:
     """Why first contact snaps into no state: the reason pull_off and cycle print."""
     why = "no stable, feasible state at first contact"
-    if not solver(pb).models_confined:      # the cohesive law: one patch, traced on its sub-critical branch
-        return why + (" on the sub-critical branch, the one modelled for this edge law (its super-critical side, "
-                      "two patches and full contact are not)")
+    if not pb.models("two-patch"):      # e.g. the cohesive law: one patch, traced on its sub-critical branch
+        return why + (f" on the sub-critical branch, the one modelled for the {pb.edge.name} law (its "
+                      "super-critical side, two patches and full contact are not)")
     if pb.rigid_cradle:      # full contact and two patches need a finite vartheta (model.full_contact)
         why += (" (a rigid cradle, vartheta = inf: a pin that zips round into full contact at first touch is not "
                 "modelled, full contact and two patches needing a finite vartheta)")

@@ -75,7 +75,7 @@ def _print_text(pi, load, grip, a0, Mmax, confined):
 
 def run(args):
     pi = inputs.resolve(args)
-    modelled = solver(eq.problem(pi.M, pi.theta, pi.gb, pi.alpha_ratio, s0=pi.s0)).models_confined
+    modelled = eq.problem(pi.M, pi.theta, pi.gb, pi.alpha_ratio, s0=pi.s0).models("two-patch")
     want_confined = not math.isinf(pi.theta) and pi.M > 0 and not args.no_confined and modelled
     common = dict(gb=pi.gb, alpha_ratio=pi.alpha_ratio)
     load = eq.adherence(pi.M, pi.theta, "load", confined=want_confined, s0=pi.s0, **common)

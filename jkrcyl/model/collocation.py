@@ -56,7 +56,7 @@ class CollocationPhysical:
         self.L = contact.Delta if contact.Delta > 0 else contact.R
         self.clearance = contact.Delta / self.L
         self.f = 4 * math.pi * self.L / (contact.R * contact.beta)          # N = f nu
-        K_w = math.sqrt(8 * contact.w / contact.beta)                        # (3.5)-(3.6): (pi/4) A K^2 = w
+        K_w = contact.law.stress_intensity(contact)                          # (3.5)-(3.6): (pi/4) A K^2 = w
         self.k = K_w / math.sqrt(2 * math.pi * contact.R) / self.f           # edge coefficient in nu
         self.kernel = (m.theta, m.inv_G_I / contact.beta, m.alpha_ratio)
 

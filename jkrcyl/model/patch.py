@@ -11,7 +11,6 @@ import numpy as np
 from .._validate import A_MAX
 from ..numerics import roots as _roots
 from . import stability as _stab
-from .problem import Problem
 
 A_SMALLEST = 1e-15       # the dense tables reach down to this contact parameter (or below, for tiny M)
 
@@ -61,10 +60,11 @@ class Slice(NamedTuple):
 class SinglePatch:
     """The interface: states, field values for root refinement, the pole a_crit and the branches' extent."""
 
-    problem: Problem
+    problem: "Problem"     # jkrcyl.model.problem (not imported: the problem imports the default law, whose solvers this)
     dense_points: int          # points of a branch's search table: what the solver's cost allows
     a_max: float               # the largest contact parameter the solver resolves (the tables stop there)
     noise: float               # relative rounding of its states (what a difference quotient must stay above)
+    pole_needs_gb = True       # whether a_crit depends on gb = (1/G_I)/beta* (not for the closed forms)
 
     def states(self, a) -> Slice:                       # pragma: no cover - interface
         raise NotImplementedError
@@ -97,6 +97,11 @@ class SinglePatch:
         """(lo, hi) of delta/Delta where the free pin (no contact, no traction) is an equilibrium."""
         return -2.0, 0.0
 
+    def stops_short(self, regime: str, a=None) -> str:
+        """Why the branch's table ends before the branch does ('' where it reaches the end: a_crit, round);
+        with a: only where a is the table's last point (the end the table stops short at)."""
+        return ""
+
     def continues(self, regime: str, a: float):
         """Where a branch continues past its end at a: (regime, a) on another branch, or None."""
         return None
@@ -104,11 +109,6 @@ class SinglePatch:
     adheres = True               # some state pulls (P < 0) where M > 0
     no_adherence_reason = ""
     unmodelled = ""              # why the analyses cannot follow the branch ('' when they can)
-
-    @property
-    def models_confined(self) -> bool:
-        """Whether two-patch and full-contact states are modelled for this edge law."""
-        return True
 
     def grid(self, regime: str, n: int, small=0, a_max=None) -> np.ndarray:
         """n contact parameters uniform in eps* over a branch (midpoints; eps* <= that of a_max if given), with

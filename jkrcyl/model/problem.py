@@ -15,58 +15,10 @@ import math
 from dataclasses import InitVar, dataclass
 
 from .._validate import finite_scalar, theta as _check_theta
+from ..laws.griffith import GRIFFITH_EDGE
+from ..materials import snap_alpha
 from ..numerics import kernels as _k
-
-
-@dataclass(frozen=True)
-class Griffith:
-    """JKR's edge law: the contact edge is a crack tip in equilibrium when G = w (3.5)-(3.6), i.e. the edge
-    coefficient of nu ~ -k/sqrt(eps - |phi|) is k = m/pi (m = M vartheta)."""
-
-    name: str = "JKR"
-
-    def edge_coefficient(self, m: float) -> float:
-        """k of nu = N R beta*/(4 pi Delta) at an edge in equilibrium (Griffith: (pi k/m)^2 = G/w = 1)."""
-        return m / math.pi
-
-
-    def stress_intensity(self, w: float, beta: float) -> float:
-        """K [Pa m^1/2] at an edge in equilibrium: (pi/4) A K^2 = w (3.5)-(3.6), A = beta*/(2 pi)."""
-        return math.sqrt(8 * w / beta)
-
-
-GRIFFITH = Griffith()
-
-
-@dataclass(frozen=True)
-class Dugdale:
-    """The Maugis-Dugdale cohesive law (issue 19): the traction sigma0 wherever 0 < gap <= h0 (anywhere on the
-    circumference), w = sigma0 h0.  Normalised: s0 = sigma0 R beta*/(4 pi Delta) > 0 (the zone traction in the
-    units of nu = N R beta*/(4 pi Delta)); the range h0/Delta = m^2/s0 (m = M vartheta).  The contact edge has a
-    finite stress in equilibrium (edge coefficient k = 0); the states are those of jkrcyl.model.cohesive."""
-
-    s0: float
-    name: str = "Dugdale"
-
-    def __post_init__(self):
-        object.__setattr__(self, "s0", finite_scalar("s0", self.s0, low=0.0, low_open=True))
-
-    def edge_coefficient(self, m: float) -> float:
-        """k of nu ~ -k/sqrt(eps - |phi|) at a contact edge in equilibrium: 0 (finite stress, Maugis)."""
-        return 0.0
-
-    def stress_intensity(self, w: float, beta: float) -> float:
-        """K at the contact edge in equilibrium: 0 (the zone carries the adhesion)."""
-        return 0.0
-
-    def range_over_Delta(self, m: float) -> float:
-        """h0/Delta = m^2/s0."""
-        return m * m / self.s0
-
-
-def edge_law(s0=None):
-    """The edge law of a normalised cohesive strength s0: None -> Griffith (JKR), else Dugdale(s0)."""
-    return GRIFFITH if s0 is None else Dugdale(s0)
+from .edge import Edge
 
 
 @dataclass(frozen=True)
@@ -84,15 +36,16 @@ class Problem:
     alpha_ratio : float
         alpha*/beta* in (-1, 1) (0: the paper's closed forms); every material pair has it below 1/(2 vartheta)
         (:meth:`require_material_pair`, which full contact and two patches need).
-    edge : Griffith or Dugdale
-        The edge law: JKR's Griffith condition (default), or the Maugis-Dugdale cohesive law ``Dugdale(s0)``.
+    edge : jkrcyl.model.edge.Edge
+        The normalised edge law: JKR's Griffith condition (default, jkrcyl.laws.griffith.GRIFFITH_EDGE), or any
+        other law's (e.g. the Maugis-Dugdale ``jkrcyl.laws.DugdaleEdge(s0)``).
     """
 
     M: float
     theta: float
     gb: float
     alpha_ratio: float = 0.0
-    edge: object = GRIFFITH
+    edge: Edge = GRIFFITH_EDGE
     strict: InitVar[bool] = True     # False: derived from a validated Contact (no magnitude floor on M, gb)
 
     def __post_init__(self, strict):
@@ -108,11 +61,11 @@ class Problem:
         ar = finite_scalar("alpha_ratio", self.alpha_ratio, low=-1.0, high=1.0, low_open=True, **tiny)
         if ar == 1.0:
             raise ValueError("alpha_ratio must be in (-1, 1) (|alpha*| < beta* for every elastic pair), got 1")
-        object.__setattr__(self, "alpha_ratio", ar)
-        if not isinstance(self.edge, (Griffith, Dugdale)):
-            raise ValueError(f"edge must be jkrcyl.model.problem.Griffith() or Dugdale(s0), got {self.edge!r}")
-        if isinstance(self.edge, Dugdale) and self.M == 0:
-            raise ValueError("M must be > 0 with a Dugdale edge law (w > 0: lambda and h0 = w/sigma0 need it)")
+        object.__setattr__(self, "alpha_ratio", snap_alpha(ar))
+        if not isinstance(self.edge, Edge):
+            raise ValueError(f"edge must be a normalised edge law (jkrcyl.model.edge.Edge, e.g. "
+                             f"jkrcyl.laws.GRIFFITH_EDGE or jkrcyl.laws.DugdaleEdge(s0)), got {self.edge!r}")
+        self.edge.check(self)
 
     def require_material_pair(self):
         """alpha*/beta* < 1/(2 vartheta), which every material pair has (1/vartheta - 2 alpha*/beta* =
@@ -123,28 +76,28 @@ class Problem:
                              f"{self.theta!r} (no material pair has more), got {self.alpha_ratio!r}")
         return self
 
-    def require_confined(self, what="two patches and full contact are", param="sigma0"):
-        """ValueError for an edge law whose two-patch and full-contact states are not modelled (the cohesive law);
-        returns the problem."""
-        if not isinstance(self.edge, Griffith):
-            raise ValueError(f"{param}: {what} not modelled for the cohesive (Maugis-Dugdale) law (two patches and "
-                             "full contact are JKR's only, issue 19); use sigma0=None")
+    def models(self, family: str) -> bool:
+        """Whether the branch family (two-patch, full-contact, super-critical, contactless) is modelled for the
+        problem's edge law."""
+        return self.edge.models(family)
+
+    def require(self, family: str, what: str = "", param: str = "") -> "Problem":
+        """ValueError (the edge law's one message) unless the branch family is modelled for its law; returns the
+        problem."""
+        self.edge.require(family, what, param)
         return self
 
     @classmethod
     def of(cls, contact) -> "Problem":
-        """The normalised problem of a :class:`jkrcyl.Contact` with Delta > 0, with its edge law (Griffith, or
-        Dugdale(s0) when the contact has sigma0: s0 = sigma0 R beta*/(4 pi Delta))."""
+        """The normalised problem of a :class:`jkrcyl.Contact` with Delta > 0, with its law's normalised edge."""
         m = contact.materials
-        edge = GRIFFITH if contact.sigma0 is None else Dugdale(contact.sigma0 * contact.R * m.beta /
-                                                                (4 * math.pi * contact.Delta))
-        return cls(contact.M, m.theta, m.inv_G_I / m.beta, m.alpha_ratio, edge, False)
+        return cls(contact.M, m.theta, m.inv_G_I / m.beta, m.alpha_ratio, contact.law.edge(contact), False)
 
     @classmethod
     def of_materials(cls, materials, M: float = 0.0) -> "Problem":
         """The problem of a :class:`jkrcyl.Materials` pair at adhesion M (M = 0: what does not depend on it)."""
         m = materials
-        return cls(M, m.theta, m.inv_G_I / m.beta, m.alpha_ratio, GRIFFITH, False)
+        return cls(M, m.theta, m.inv_G_I / m.beta, m.alpha_ratio, GRIFFITH_EDGE, False)
 
     @property
     def rigid_cradle(self) -> bool:
@@ -173,6 +126,6 @@ class Problem:
 
 
     def __repr__(self):
-        law = self.edge.name if isinstance(self.edge, Griffith) else f"{self.edge.name}(s0={self.edge.s0!r})"
+        law = self.edge.name if self.edge == GRIFFITH_EDGE else repr(self.edge)
         return (f"Problem(M={self.M!r}, theta={self.theta!r}, gb={self.gb!r}, alpha_ratio={self.alpha_ratio!r}, "
                 f"edge={law})")

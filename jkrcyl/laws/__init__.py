@@ -1,0 +1,29 @@
+"""Edge laws: what holds the contact edge, the extension point of jkrcyl.
+
+``jkrcyl.Contact(..., law=...)`` takes any law; every analysis reaches it only through the interface of
+jkrcyl.model.edge (:class:`EdgeLaw`, dimensional, and :class:`Edge`, normalised).
+
+* :class:`Griffith` -- JKR (the default): the edge a crack with critical energy release rate w (3.5)-(3.6);
+* :class:`Dugdale` -- the Maugis-Dugdale cohesive zone of strength sigma0 and range h0 = w/sigma0.
+
+Each has its normalised twin (:class:`GriffithEdge`, the one instance :data:`GRIFFITH_EDGE`; :class:`DugdaleEdge`),
+what the model core asks (jkrcyl.model.edge).
+
+A law of one's own subclasses one of them (or both classes of jkrcyl.model.edge); e.g. an edge whose critical
+energy release rate is twice w:
+
+>>> import jkrcyl
+>>> class Doubled(jkrcyl.laws.Griffith):
+...     def edge_work(self, w):
+...         return 2 * w
+>>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+>>> a = jkrcyl.Contact(R=1e-2, Delta=1e-6, w=0.025, materials=m, law=Doubled()).pull_off().P
+>>> b = jkrcyl.Contact(R=1e-2, Delta=1e-6, w=0.05, materials=m).pull_off().P
+>>> round(a), abs(a / b - 1) < 1e-12                  # N/m: JKR's pull-off at 2w
+(-1555, True)
+"""
+from ..model.edge import Edge, EdgeLaw
+from .dugdale import Dugdale, DugdaleEdge
+from .griffith import GRIFFITH_EDGE, Griffith, GriffithEdge
+
+__all__ = ["Edge", "EdgeLaw", "Griffith", "GriffithEdge", "GRIFFITH_EDGE", "Dugdale", "DugdaleEdge"]
