@@ -197,9 +197,9 @@ def test_bad_inputs_name_the_parameter(change, message):
 
 def test_jkr_example_with_sigma0_free_is_refused_in_bounded_time(monkeypatch):
     """docs/fit_example.csv (JKR data) with free=("w", "E", "sigma0") ran for minutes (the estimate near lambda = 8,
-    its profiles towards lambda = 20, where each state costs ~30 ms): the cohesive fit's work is bounded (a weighted
-    count of states, jkrcyl.fit.cohesive.Budget; here a ninth of the default, to keep the test short) and
-    running out of it is a ValueError naming sigma0."""
+    its profiles towards the JKR end, five times costlier per state than at lambda = 1): the cohesive fit's work is
+    bounded (a weighted count of states, jkrcyl.fit.cohesive.Budget; here a ninth of the default, to keep the
+    test short) and running out of it is a ValueError naming sigma0."""
     from jkrcyl.fit import cohesive
     monkeypatch.setattr(cohesive, "BUDGET", 20_000)
     monkeypatch.setattr(cohesive, "PER_POINT", 0)

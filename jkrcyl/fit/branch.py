@@ -151,7 +151,7 @@ class Track:
         """Where the field ``name`` equals target in [lo, hi] (a sign change of the node values; None: a pole): on
         the splines, then (exact=True) POLISH Newton steps on exact superposed states, the slope from the splines."""
         f = lambda x: self._spline(name, x) - target
-        r = _roots.brent_to(f, lo, hi, SEARCH_TOL * hi)
+        r = _roots.root(f, lo, hi, SEARCH_TOL * hi)
         if _roots.is_pole(f(r), flo - target, fhi - target):
             return None
         if not self.exact_refine:

@@ -26,8 +26,8 @@ from . import model
 
 LAMBDA_MIN = 0.01      # Baney-Hui's tested range starts here (tests/test_cohesive_api.py)
 LAMBDA_MAX = 20.0      # the law is JKR's to ~C/lambda^2 ~ 1 % here (C ~ 3.7); a state costs ~5 ms, more beyond
-FIXED_MAX = 100.0      # a given, fixed sigma0 is used as it is in [LAMBDA_MIN, FIXED_MAX] (the range the library's
-#                        cohesive states are tested over); outside, ValueError naming sigma0 (and a wall mid-fit)
+FIXED_MAX = math.inf   # a given, fixed sigma0 is used as it is from LAMBDA_MIN up to what the library resolves (its
+#                        own ValueError beyond); below, ValueError naming sigma0 (and a wall mid-fit)
 START_LAMBDAS = (0.1, 0.3, 1.0, 3.0)     # starting values of a fitted sigma0 without one given
 WIDTH_STEP = 1e-4      # relative step of the central differences dP/dwidth (states to ~1e-10)
 TURN_POINTS = 64       # states of the traced branch searched for its first turn in eps (check)
@@ -44,9 +44,9 @@ def transition(R, Delta, w, materials, strength):
 
 
 class Budget:
-    """The work one cohesive fit may do, counted in states weighted by their cost at lambda (a state's
-    collocation grows with lambda: ~1 ms at lambda <= 3, ~30 ms at 20): max(BUDGET, PER_POINT n) units for n
-    points.  Past it, :class:`OverBudget` (jkrcyl.fit.fit turns it into a ValueError naming sigma0)."""
+    """The work one cohesive fit may do, counted in states weighted by their cost at lambda (a state costs ~0.25 ms
+    at lambda <= 1, ~5 times that from lambda ~ 8 on): max(BUDGET, PER_POINT n) units for n points.  Past it,
+    :class:`OverBudget` (jkrcyl.fit.fit turns it into a ValueError naming sigma0)."""
 
     def __init__(self, points):
         self.units = max(BUDGET, PER_POINT * points)
@@ -54,13 +54,13 @@ class Budget:
 
     def spend(self, lam, states):
         self.lam = lam
-        self.left -= states * (1 + (lam / 4) ** 2.3)
+        self.left -= states * (1 + min(lam, 8.0) / 2)
         if self.left < 0:
             raise OverBudget(lam, self.units)
 
 
-BUDGET = 100_000       # typical fits with profile intervals spend 600-900 units per point (lambda 1-3), a fit whose
-PER_POINT = 6_000      # sigma0 ends at the JKR edge ~5000 (12 points; tests/test_fit_cohesive.py): about a minute
+BUDGET = 100_000       # fits with profile intervals spend 900-1100 units per point (lambda ~ 1, or sigma0 at the JKR
+PER_POINT = 6_000      # edge: tests/test_fit_cohesive.py, the README's): about half a minute for 30 points
 
 
 class OverBudget(Exception):

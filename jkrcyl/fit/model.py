@@ -43,10 +43,10 @@ def width_of_a(a, R):
     return 4 * R * np.arctan(np.asarray(a, dtype=float))
 
 
-def contact(R, Delta, w, materials, strength=None) -> Contact:
-    """The library's contact (validates R, Delta, w; strength: the cohesive sigma0 [Pa], None for JKR): every
-    contact of the fit is built here."""
-    return Contact(R=R, Delta=Delta, w=w, materials=materials, sigma0=strength)
+def contact(R, Delta, w, materials, strength=None, law=None) -> Contact:
+    """The library's contact (validates R, Delta, w; strength: the cohesive sigma0 [Pa], None for JKR; law: an edge
+    law, Contact(..., law=)): every contact of the fit is built here."""
+    return Contact(R=R, Delta=Delta, w=w, materials=materials, sigma0=strength, law=law)
 
 
 def contact_with_lambda(R, Delta, w, materials, lambda_) -> Contact:
@@ -201,8 +201,8 @@ class Superposed:
     cache) from the unit parts: the edge coefficient k of its law, the kernel scale L = P/p [N/m] and Delta [m].
 
     :meth:`of` reads them off a built contact; :meth:`of_inputs` (the fit's every evaluation) off the pair's
-    reference contact by the scalings of section 6 (M proportional to sqrt(w beta*)/Delta, P/p = 4 pi Delta/beta*),
-    with the law asked for k at the scaled M."""
+    reference contact by the scalings of section 6 (M proportional to sqrt(G_c beta*)/Delta, G_c the law's edge
+    work, P/p = 4 pi Delta/beta*), with the law asked for k at the scaled M."""
 
     def __init__(self, materials, k, L, D, work_shift, make_contact):
         self.materials, self.k, self.L, self.D, self.work_shift = materials, k, L, D, work_shift
@@ -221,7 +221,7 @@ class Superposed:
         if not (0 < Delta < R and w >= 0 and f > 0 and math.isfinite(w) and math.isfinite(f)):
             raise ValueError(f"Delta, w: outside 0 < Delta < R, w >= 0 (Delta = {Delta!r}, w = {w!r}, f = {f!r})")
         ref, pb = reference(R, materials)
-        M = pb.M * math.sqrt(w / (REF_W * f)) * ref.Delta / Delta
+        M = pb.M * math.sqrt(ref.law.edge_work(w) / (ref.law.edge_work(REF_W) * f)) * ref.Delta / Delta
         return cls(materials, law_coefficient(pb, M * pb.scale), ref.load_scale / pb.scale * f * Delta / ref.Delta,
                    Delta, pb.work_shift, lambda: contact(R, Delta, w, scaled(materials, f) if f != 1.0 else materials))
 

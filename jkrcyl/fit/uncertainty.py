@@ -132,7 +132,7 @@ class Profiler:
                     return val - self.q
                 tol = 1e-4 * (self.se_u[j] if np.isfinite(self.se_u[j]) and self.se_u[j] > 0 else 1e-3)
                 lo, hi = sorted((t_prev, t))
-                return _roots.brent_to(g, lo, hi, tol)
+                return _roots.root(g, lo, hi, tol)
             t_prev, warm_prev = t, warm
             step *= 2.0
         return sign * math.inf

@@ -134,15 +134,6 @@ def minimum(f, lo, mid, hi, xtol):
     return float(res.x), float(res.fun)
 
 
-def brent_to(f, lo, hi, xtol):
-    """Root of an expensive Python callable ``f(x)`` in [lo, hi] (a sign change), stopped once it is known to an
-    absolute ``xtol``: Brent's method as scipy.optimize.brentq has it, for functions where adjacent doubles would
-    cost tens of evaluations more than the answer needs (a profile-likelihood crossing: one least-squares fit per
-    evaluation, jkrcyl.fit.uncertainty)."""
-    from scipy.optimize import brentq
-    return brentq(f, lo, hi, xtol=xtol, rtol=1e-10)
-
-
 def is_pole(fx, flo, fhi):
     """A converged sign change is a pole, not a root, when |f| there exceeds |f| at both ends of the first
     bracket (|f| grew as the bracket shrank); a root leaves |f| at the rounding level."""
