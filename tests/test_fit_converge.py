@@ -49,6 +49,26 @@ def test_fit_pull_off_equals_contact_pull_off(m, M, f):
         assert fit.width == pytest.approx(ref.contact_width, rel=1e-4)
 
 
+class Doubled(jkrcyl.laws.Griffith):
+    """Griffith with the work of adhesion doubled (as tests/test_laws.py): a law of the test's own."""
+
+    name = "doubled JKR"
+
+    def edge_work(self, w):
+        return 2 * w
+
+
+@pytest.mark.parametrize("m", [POLYMER, STEEL], ids=["closed-form", "alpha-pair"])
+def test_the_fit_model_reaches_a_law_through_its_contact(m):
+    """A law given to the fit's one contact helper flows through: the superposed states (the law asked for k at
+    the adhesion its edge work sets) and the fit's pull-off are JKR's at 2w (an independent Contact)."""
+    c, ref = model.contact(R, DELTA, W, m, law=Doubled()), jkrcyl.Contact(R, DELTA, 2 * W, m)
+    a = np.array([0.02, 0.05, 0.2])
+    for sp in (model.Superposed.of(c, m), model.Superposed.of_inputs(R, DELTA, W, 1.0, m, law=Doubled())):
+        assert sp.states(a).P == pytest.approx(ref.state(a).P, rel=1e-10)
+    assert branch.pull_off(c, m).P == pytest.approx(ref.pull_off().P, rel=1e-8)
+
+
 RUBBER = jkrcyl.Materials.from_young(E=float("inf"), nu=0.3, E_I=2e6, nu_I=0.45)   # roller in a rigid cradle
 
 

@@ -8,10 +8,11 @@ load as the fit models it, jkrcyl.fit.residuals.Problem.load_sd, and of the fitt
 Rows beyond the true pull-off drag the fit: it stiffens or raises w until its own pull-off reaches them, and the
 rows then sit on the fitted force instead of beyond it.  So the rows at or below the fitted force (within the same
 tolerance and their own misfit, and widths below the pull-off's) are also tried against the model fitted to the
-other rows (a deletion diagnostic: one descent from the estimate, screened by its linearisation): where leaving
-them out lowers the sum of squares significantly (an outlier test at DRAG_LEVEL) and they lie beyond that model's
-pull-off by DRAG_SIGMAS standard errors, they are refused.  The standard error of a pull-off force comes from the envelope theorem: at a fold of
-P in a, dP_fold/du = dP/du at the fold's fixed a (superposed states).
+other rows (a deletion diagnostic in a forward search: the most outlying of them, by the linearised deletion, left
+out and refitted from the estimate, while that lowers the sum of squares significantly, an outlier test at
+DRAG_LEVEL); those beyond the last model's pull-off by DRAG_SIGMAS standard errors are refused.  The standard
+error of a pull-off force comes from the envelope theorem: at a fold of P in a, dP_fold/du = dP/du at the fold's
+fixed a (superposed states).
 """
 from __future__ import annotations
 

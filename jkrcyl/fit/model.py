@@ -189,10 +189,10 @@ REF_DELTA = 1e-3     # [R] its clearance (any in (0, R): M is proportional to 1/
 
 
 @functools.lru_cache(maxsize=64)
-def reference(R: float, materials: Materials):
-    """(contact, its normalised problem) of the pair's shape at REF_W and REF_DELTA R: what the scalings of
-    :meth:`Superposed.of_inputs` start from (the law is the contact's: built by :func:`contact`)."""
-    c = contact(R, REF_DELTA * R, REF_W, materials)
+def reference(R: float, materials: Materials, law=None):
+    """(contact, its normalised problem) of the pair's shape at REF_W and REF_DELTA R under the edge law (None:
+    JKR): what the scalings of :meth:`Superposed.of_inputs` start from (built by :func:`contact`)."""
+    c = contact(R, REF_DELTA * R, REF_W, materials, law=law)
     return c, c.problem
 
 
@@ -215,15 +215,16 @@ class Superposed:
                    lambda: c)
 
     @classmethod
-    def of_inputs(cls, R, Delta, w, f, materials) -> "Superposed":
-        """The contact of clearance Delta [m], work of adhesion w [J/m^2] and the pair ``materials`` times f
-        (ValueError outside 0 < Delta < R, w >= 0, f > 0, as Contact would)."""
+    def of_inputs(cls, R, Delta, w, f, materials, law=None) -> "Superposed":
+        """The contact of clearance Delta [m], work of adhesion w [J/m^2], the pair ``materials`` times f and the
+        edge law (None: JKR) (ValueError outside 0 < Delta < R, w >= 0, f > 0, as Contact would)."""
         if not (0 < Delta < R and w >= 0 and f > 0 and math.isfinite(w) and math.isfinite(f)):
             raise ValueError(f"Delta, w: outside 0 < Delta < R, w >= 0 (Delta = {Delta!r}, w = {w!r}, f = {f!r})")
-        ref, pb = reference(R, materials)
+        ref, pb = reference(R, materials, law)
         M = pb.M * math.sqrt(ref.law.edge_work(w) / (ref.law.edge_work(REF_W) * f)) * ref.Delta / Delta
         return cls(materials, law_coefficient(pb, M * pb.scale), ref.load_scale / pb.scale * f * Delta / ref.Delta,
-                   Delta, pb.work_shift, lambda: contact(R, Delta, w, scaled(materials, f) if f != 1.0 else materials))
+                   Delta, pb.work_shift,
+                   lambda: contact(R, Delta, w, scaled(materials, f) if f != 1.0 else materials, law=law))
 
     @functools.cached_property
     def contact(self) -> Contact:
