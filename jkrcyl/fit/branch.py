@@ -7,10 +7,10 @@ jkrcyl.model.stability's (the chain rule of section 8.3, the one rule of the lib
 inequality h(pi) >= 0.  The path is jkrcyl.analysis.path.walk (the library's load-path walker) on that track,
 from first contact (the smallest stable, feasible state where the held quantity is 0, as
 jkrcyl.analysis.path.first_contact lands) down to the pull-off and up to the end of the segment.  Folds are refined
-on cubic Hermite splines of the unit parts in log a (exact values and slopes at the nodes; for the segment of
+on cubic splines of the unit parts in log a (through the exact values at the nodes; for the segment of
 approach data) or on exact states (:func:`pull_off`, the force the fit refuses rows with and reports).  Where
 first contact lands elsewhere than on this branch the fit asks Contact.pull_off itself.
-tests/test_fit_model.py holds :func:`pull_off` to Contact.pull_off at 1e-8 over random pairs.
+tests/test_fit_converge.py holds :func:`pull_off` to Contact.pull_off at 1e-8 over random pairs.
 """
 from __future__ import annotations
 
@@ -18,7 +18,7 @@ import functools
 import math
 
 import numpy as np
-from scipy.interpolate import CubicHermiteSpline
+from scipy.interpolate import CubicSpline
 
 from ..analysis import path as _path
 from ..model import stability as _stab
@@ -27,14 +27,13 @@ from . import model
 
 RIGID_A_MAX = 3.0    # vartheta = inf, alpha* = 0: no pole; the branch is searched up to this a
 TOP_GAP = 1e-3       # the branch ends at a_crit (1 - TOP_GAP): loads there are ~1/TOP_GAP times the typical ones
-PER_DECADE = 64      # table nodes per decade of a (cubic Hermite in log a: ~1e-8 relative between nodes)
+PER_DECADE = 80      # table nodes per decade of a (a cubic spline in log a: ~1e-7 relative between nodes) ...
+PER_DECADE_NUMERIC = 64   # ... and for alpha* != 0 (one collocation solve per node and unit: cost)
 DECADES = 7          # the table spans a_top 1e-7 .. a_top (alpha* = 0) ...
 DECADES_NUMERIC = 4  # ... or a_top 1e-4 .. a_top: below, the solver's adhesionless part loses digits (1e-5 at 1e-5)
 SPLINE_FIELDS = ("p", "dw", "dn")   # the held quantities (and their slopes) interpolated for the search
 SEARCH_TOL = 1e-12   # relative tolerance of a root on the splines
 POLISH = 2           # Newton steps of a refined root on exact states (exact=True)
-LOG_STEP = 1e-4      # central differences in log a for the slopes of the weighted parts (error ~1e-8 relative) ...
-LOG_STEP_NUMERIC = 1e-3   # ... and for alpha* != 0, whose adhesionless part carries ~1e-9 noise at a ~ 1e-3
 
 
 def _exact(materials):
@@ -56,25 +55,18 @@ class Table:
     def __init__(self, materials):
         self.materials, self.pole = materials, model.pole(materials)
         top = branch_top(materials)
-        decades = DECADES if _exact(materials) else DECADES_NUMERIC
-        a = top * np.logspace(-decades, 0, decades * PER_DECADE + 1)
+        decades, per = (DECADES, PER_DECADE) if _exact(materials) else (DECADES_NUMERIC, PER_DECADE_NUMERIC)
+        a = top * np.logspace(-decades, 0, decades * per + 1)
         a[-1] = top
         self.a, self.a_min, self.a_max = a, a[0], a[-1]
         self.unit = model.unit_slices(materials, a)
-        # slopes of the weighted parts y = part (1 - a/a_crit) by central differences in log a: y is smooth through
-        # the pole, the parts alone are not (the product rule would cancel terms ~1/(1 - a/a_crit) apart)
-        h = LOG_STEP if _exact(materials) else LOG_STEP_NUMERIC
-        near = [model.unit_slices(materials, a * math.exp(s)) for s in (h, -h)]
+        # the weighted parts y = part (1 - a/a_crit): smooth through the pole, which the parts alone are not
         w = self._weight(a)[0]
-        y, dy = [], []
-        for f in SPLINE_FIELDS:
-            for i in (0, 1):
-                y.append(self.unit.parts[f][i] * w)
-                up, down = (u.parts[f][i] * self._weight(u.a)[0] for u in near)
-                dy.append((up - down) / (2 * h))
-        self.x, self.y, self.dy = np.log(a), np.array(y).T, np.array(dy).T
-        self.spline = CubicHermiteSpline(self.x, self.y, self.dy)
+        y = [self.unit.parts[f][i] * w for f in SPLINE_FIELDS for i in (0, 1)]
+        self.x, self.y = np.log(a), np.array(y).T
+        self.spline = CubicSpline(self.x, self.y)            # not-a-knot: O(h^4) like the states' own Hermite
         self.slope, self.curvature = self.spline.derivative(1), self.spline.derivative(2)
+        self.dy = self.slope(self.x)                          # the same cubics in Hermite form (:meth:`point`)
 
     def _weight(self, a):
         if math.isinf(self.pole):

@@ -13,7 +13,7 @@ jkrcyl.model.stability turns into stability flags).  One fact makes the fit chea
   alpha*/beta*: scaling both moduli by one factor keeps them).  They are solved once per shape and set of
   contact parameters (:func:`unit_slices`) from two library states, one without adhesion and one at M = 1.
 
-tests/test_fit_model.py holds the superposed states to Contact.state at 1e-10 relative over random pairs.
+tests/test_fit.py holds the superposed states to Contact.state at 1e-10 relative over random pairs.
 """
 from __future__ import annotations
 
