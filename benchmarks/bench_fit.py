@@ -49,8 +49,7 @@ def materials(pair):
 def widths_loads(pair, R, Delta, w, n, lo, hi):
     """n widths from lo to hi times the fixed-load pull-off width, and the model's loads there."""
     m = materials(pair)
-    a_fold = model.fold(R, m, 1.0, Delta, w)[0]
-    width = np.linspace(lo, hi, n) * model.width_of_a(a_fold, R)
+    width = np.linspace(lo, hi, n) * jkrcyl.Contact(R, Delta, w, m).pull_off().contact_width
     return width, jkrcyl.Contact(R, Delta, w, m).state(np.tan(width / (4 * R))).P
 
 
@@ -170,7 +169,7 @@ def recovery_one(args):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         if kind.startswith("approach"):
-            a_fold = model.fold(R, m, 1.0, Delta, w)[0]
+            a_fold = np.tan(jkrcyl.Contact(R, Delta, w, m).pull_off().contact_width / (4 * R))
             a = np.geomspace(1.02 * a_fold, 5 * a_fold, 40)
             s = jkrcyl.Contact(R, Delta, w, m).state(a)
             sP, sd = 0.005 * np.ptp(s.P), 0.005 * np.ptp(s.delta_work)

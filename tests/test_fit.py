@@ -22,7 +22,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 import jkrcyl
-from jkrcyl.fit import estimate, model, uncertainty
+from jkrcyl.fit import branch, estimate, model, uncertainty
 from reference.halfplane import linearised_plot
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
@@ -40,11 +40,17 @@ def _quiet():
         yield
 
 
+def pull_off_width(m, R, D, w=W, control="load"):
+    """The contact width at the library's pull-off (Contact.pull_off: the core's path, not the fit's)."""
+    return jkrcyl.Contact(R, D, w, m).pull_off(control=control).contact_width
+
+
 def design(case, n=30, lo=1.05, hi=4.0, w=W):
     """n widths from lo to hi times the pull-off width and the library's loads there (the truth)."""
     m, R, D = CASES[case]
-    width = np.linspace(lo, hi, n) * model.width_of_a(model.fold(R, m, 1.0, D, w)[0], R)
-    width = np.minimum(width, model.width_of_a(0.9 * model.pole(R, m), R) * np.linspace(0.9, 1, n))  # below the pole
+    width = np.linspace(lo, hi, n) * pull_off_width(m, R, D, w)
+    pole = jkrcyl.Contact(R, D, w, m).a_crit
+    width = np.minimum(width, model.width_of_a(0.9 * pole, R) * np.linspace(0.9, 1, n))  # below the pole
     return width, jkrcyl.Contact(R, D, w, m).state(np.tan(width / (4 * R))).P
 
 
@@ -57,19 +63,27 @@ modulus = st.one_of(st.just(math.inf), st.floats(1e6, 1e11))
        nu_I=st.floats(0.0, 0.5).map(lambda x: round(x, 4)), f=st.floats(0.2, 5.0),
        w=st.floats(1e-3, 1.0), delta=st.floats(1e-5, 1e-2))
 def test_superposition_and_scaling_equal_direct_states(E, E_I, nu, nu_I, f, w, delta):
-    """P = f Delta p1 - sqrt(f w) p2 and delta_work = Delta q1 + sqrt(w/f) q2 (parts of the unscaled pair) equal
-    Contact.state of the pair with both moduli times f, for random pairs (rigid bodies and alpha* != 0 included)."""
+    """The superposed states (unit parts of the unscaled pair, k of the scaled contact's law) equal Contact.state of
+    the pair with both moduli times f to 1e-10 of the parts' size, for random pairs (rigid bodies and alpha* != 0
+    included): load, work-conjugate approach, gap at the top and the load's slope (against differences of
+    Contact.state)."""
     if math.isinf(E) and math.isinf(E_I):
         E = 1e9
     m = jkrcyl.Materials.from_young(E=E, nu=nu, E_I=E_I, nu_I=nu_I)
     R = 0.01
     a = np.array([0.01, 0.1, 0.3, 0.5]) * (1.0 if math.isinf(m.theta) else jkrcyl.a_crit(m.theta))  # below poles
-    p = model.parts(R, m, a)
-    direct = jkrcyl.Contact(R, delta * R, w, model.scaled(m, f)).state(a)
-    size = f * delta * R * np.abs(p.p1) + math.sqrt(f * w) * np.abs(p.p2)
-    assert np.all(np.abs(p.load(f, delta * R, w) - direct.P) <= 1e-9 * size)
-    size = delta * R * np.abs(p.q1) + math.sqrt(w / f) * np.abs(p.q2)
-    assert np.all(np.abs(p.approach(f, delta * R, w) - direct.delta_work) <= 1e-9 * size)
+    c = jkrcyl.Contact(R, delta * R, w, model.scaled(m, f))
+    fit = model.Superposed.of_inputs(R, delta * R, w, f, m).states(a)        # what the fit evaluates
+    direct = c.state(a)
+    u = model.unit_slices(m, a)
+    k, L = model.edge_coefficient(c), model.load_per_p(c)
+    size = lambda field, unit: unit * (np.abs(u.parts[field][0]) + k * np.abs(u.parts[field][1]))
+    assert np.all(np.abs(fit.P - direct.P) <= 1e-10 * size("p", L))
+    assert np.all(np.abs(fit.delta_work - direct.delta_work) <= 1e-10 * size("dw", c.Delta))
+    assert np.all(np.abs(fit.h_pi - direct.h_pi) <= 1e-10 * size("h", c.Delta))
+    step = 1e-5 * a
+    slope = (c.state(a + step).P - c.state(a - step).P) / (2 * step)
+    assert np.all(np.abs(fit.dP_da - slope) <= 1e-5 * size("dp_da", L))
 
 
 def test_pole_against_three_references():
@@ -80,28 +94,33 @@ def test_pole_against_three_references():
     from jkrcyl.numerics.arcs import two_patch_linear
     th = POLYMER.theta
     ref = mpmath.findroot(lambda a: 2 * th - mpmath.log(1 + a * a) - 2 * a ** 4, 0.9)
-    assert model.pole(0.01, POLYMER) == pytest.approx(float(ref), rel=1e-13)
+    assert model.pole(POLYMER) == pytest.approx(float(ref), rel=1e-13)
     gb = STEEL.inv_G_I / STEEL.beta
 
     def inv_P(a):
         lin = two_patch_linear(2 * math.atan(a), 0.0, STEEL.theta, gb, 48, STEEL.alpha_ratio)
         q0, q1 = lin.q0, lin.q1
         return q1[2] / (q0[0] * q1[2] - q0[2] * q1[0])
-    ac = model.pole(0.01, STEEL)
+    ac = model.pole(STEEL)
     assert brentq(inv_P, 0.999 * ac, 1.001 * ac, xtol=1e-15) == pytest.approx(ac, rel=1e-9)
-    assert math.degrees(2 * math.atan(model.pole(0.02, RUBBER))) == pytest.approx(111.79, abs=0.1)   # FE
+    assert math.degrees(2 * math.atan(model.pole(RUBBER))) == pytest.approx(111.79, abs=0.1)   # FE
 
 
 @pytest.mark.parametrize("case", CASES)
 def test_branch_table_interpolates_the_exact_parts(case):
+    """The splines of the table (a search device: located states are then evaluated exactly) against exact
+    superposed states, without adhesion and at k = 1."""
     m, R, _ = CASES[case]
-    br = model.branch(R, m)
-    lo = br.a_min if m.closed_form else br.a_max * 1e-3     # the solver's adhesionless part is noisy below
-    a = np.exp(np.random.default_rng(1).uniform(math.log(lo), math.log(br.a_max * 0.999), 200))
-    exact, table = model.parts(R, m, a), br.parts(a)
-    tol = 2e-7 if m.closed_form else 2e-6
-    for k in model.KEYS:
-        assert np.max(np.abs(getattr(table, k) / getattr(exact, k) - 1)) < tol, k
+    tab = branch.table(m)
+    lo = tab.a_min if m.closed_form else tab.a_max * 1e-3     # the solver's adhesionless part is noisy below
+    a = np.exp(np.random.default_rng(1).uniform(math.log(lo), math.log(tab.a_max * 0.999), 200))
+    tol, tol_slope = (2e-7, 2e-5) if m.closed_form else (2e-6, 1e-3)     # slopes: for Newton steps only
+    for k in (0.0, 1.0):
+        exact, table = model.superpose(model.unit_slices(m, a), k), tab.interpolate(a, k)
+        for f in branch.SPLINE_FIELDS:
+            assert np.max(np.abs(table[f][0] / getattr(exact, f) - 1)) < tol, (f, k)
+            scale = np.abs(getattr(exact, model.SLOPE_OF[f])) + np.abs(getattr(exact, f)) / a   # d/da ~ value/a
+            assert np.max(np.abs(table[f][1] - getattr(exact, model.SLOPE_OF[f])) / scale) < tol_slope, (f, k)
 
 
 def test_folds_equal_the_library_pull_off():
@@ -109,20 +128,21 @@ def test_folds_equal_the_library_pull_off():
     R, D = 0.01, 1e-5
     c = jkrcyl.Contact(R, D, W, POLYMER)
     ref = [p for p in c.adherence(control="load", confined=False) if p.regime == "sub-critical"][0]
-    a, P, _ = model.fold(R, POLYMER, 1.0, D, W, "load")
-    assert P == pytest.approx(ref.P, rel=1e-9) and a == pytest.approx(ref.a, rel=1e-5)
+    po = branch.pull_off(c, POLYMER)
+    assert po.P == pytest.approx(ref.P, rel=1e-9) and po.a == pytest.approx(ref.a, rel=1e-5)
     grip = c.pull_off(control="grip-work")
-    assert model.fold(R, POLYMER, 1.0, D, W, "approach")[1] == pytest.approx(grip.P, rel=1e-6)
+    assert branch.pull_off(c, POLYMER, "grip-work").P == pytest.approx(grip.P, rel=1e-9)
 
 
 def test_fold_alpha_pair_against_a_dense_sweep_of_states():
     R, D = 0.01, 1e-5
-    a_fold, P_fold, _ = model.fold(R, STEEL, 1.0, D, W)
-    a = a_fold * np.linspace(0.9, 1.1, 41)
-    P = jkrcyl.Contact(R, D, W, STEEL).state(a).P
+    c = jkrcyl.Contact(R, D, W, STEEL)
+    po = branch.pull_off(c, STEEL)
+    a = po.a * np.linspace(0.9, 1.1, 41)
+    P = c.state(a).P
     i = int(np.argmin(P))
     c2, c1, c0 = np.polyfit(a[i - 2:i + 3] - a[i], P[i - 2:i + 3], 2)
-    assert P_fold == pytest.approx(c0 - c1 ** 2 / (4 * c2), rel=1e-7)
+    assert po.P == pytest.approx(c0 - c1 ** 2 / (4 * c2), rel=1e-7)
 
 
 def test_stable_segments_match_the_library_flags():
@@ -132,11 +152,11 @@ def test_stable_segments_match_the_library_flags():
     M, th, gb = equilibria.from_contact(c)
     a = np.geomspace(1e-3, 0.9, 300)
     cv = equilibria.curve(M, th, a=a, gb=gb)
-    for quantity, flags in (("load", cv.stable_load), ("approach", cv.stable_grip_work)):
-        lo, hi = model.segment(R, POLYMER, 1.0, D, W, quantity)
+    for control, flags in (("load", cv.stable_load), ("grip-work", cv.stable_grip_work)):
+        lo, hi = branch.segment(model.Superposed.of(c, POLYMER), control)
         inside = (a > lo) & (a < hi)
         away = (np.abs(a / lo - 1) > 1e-4) & (np.abs(a / hi - 1) > 1e-4)
-        assert np.array_equal(inside[away], flags[away]), quantity
+        assert np.array_equal(inside[away], (flags & cv.feasible)[away]), control
 
 
 # --- estimation ------------------------------------------------------------------------------------------------
@@ -160,7 +180,7 @@ def test_exact_data_give_the_truth(case, free):
                                             ("load", ("sigma_P", "sigma_delta_work"))])
 def test_exact_approach_data_give_the_truth(control, sigmas):
     m, R, D = CASES["polymer"]
-    a_fold = model.fold(R, m, 1.0, D, W, "load" if control == "load" else "approach")[0]
+    a_fold = np.tan(pull_off_width(m, R, D, W, control) / (4 * R))
     s = jkrcyl.Contact(R, D, W, m).state(np.geomspace(1.05 * a_fold, 5 * a_fold, 30))
     kw = {k: 1.0 if k == "sigma_P" else 1e-9 for k in sigmas}
     res = jkrcyl.fit(P=s.P, delta_work=s.delta_work + 2e-7, R=R, Delta=0.8 * D, materials=m, control=control,
@@ -265,7 +285,7 @@ def test_half_plane_limit_direct_fit_halves_the_linear_plot_error():
     """Delta/R = 3e-3, contacts below 15 deg, 25 widths from 1.05 to 4 times the pull-off width, 2 % noise on
     the width, 400 replicates: RMS error of w from the direct fit <= half that of the linearised plot."""
     m, R, D = POLYMER, 0.01, 3e-5
-    width = np.linspace(1.05, 4.0, 25) * model.width_of_a(model.fold(R, m, 1.0, D, W)[0], R)
+    width = np.linspace(1.05, 4.0, 25) * pull_off_width(m, R, D)
     P = jkrcyl.Contact(R, D, W, m).state(np.tan(width / (4 * R))).P
     direct, linear = [], []
     for seed in range(400):
@@ -388,7 +408,7 @@ def test_cli_text_table(capsys, monkeypatch):
 def test_cli_fix_rigid_pin(tmp_path, capsys, monkeypatch):
     m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=math.inf, nu_I=0.3)
     R, D = 0.01, 1e-5
-    width = np.linspace(1.1, 4, 15) * model.width_of_a(model.fold(R, m, 1.0, D, W)[0], R)
+    width = np.linspace(1.1, 4, 15) * pull_off_width(m, R, D)
     P = jkrcyl.Contact(R, D, W, m).state(np.tan(width / (4 * R))).P
     f = tmp_path / "rigid.csv"
     f.write_text("P,width,sigma_P\n" + "".join(f"{float(p)!r},{float(x)!r},1\n" for p, x in zip(P, width)))

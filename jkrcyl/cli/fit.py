@@ -1,4 +1,4 @@
-"""``jkrcyl fit data.csv``: fit w and the moduli (and Delta, an approach offset) to measurements (issue 20).
+"""``jkrcyl fit data.csv``: fit w and the moduli (and Delta, an approach offset) to measurements.
 
     jkrcyl fit data.csv --fix R=0.01 --fix Delta=1e-5 --fix E=2.6e9 --fix nu=0.3 --fix E_I=inf --fix nu_I=0.3
     jkrcyl fit docs/fit_example.csv --free w,E --plot fit.png        # setup from the file's '# key=value' lines
@@ -70,7 +70,7 @@ def cmd_fit(args):
         table = fitting.read_csv(args.data)
     except OSError as exc:
         raise ValueError(f"data: cannot read {args.data}: {exc.strerror or exc}") from None
-    free = tuple(n.strip() for n in args.free.split(",") if n.strip())
+    free = _free(args.free)
     R, Delta, mat, w, offset = _setup(args, table, free, args.number)
     cols = dict(table.columns)
     have = [k for k in ("width", "delta_work") if k in cols]
@@ -94,6 +94,17 @@ def cmd_fit(args):
     if args.plot:
         res.plot(args.plot)
     return 0
+
+
+def _free(text):
+    """--free: comma-separated parameter names, each known (ValueError naming the first unknown one)."""
+    from ..fit.params import names
+    free = tuple(n.strip() for n in text.split(",") if n.strip())
+    try:
+        return names(free)
+    except ValueError as exc:
+        why = str(exc).removeprefix("free: ").removeprefix("free ")
+        raise ValueError(f"--free: {why}") from None
 
 
 def _strength(value):

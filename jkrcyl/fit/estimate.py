@@ -5,21 +5,20 @@ import math
 import warnings
 
 import numpy as np
-from scipy.optimize import least_squares
 
 from .._validate import finite_scalar
 from ..materials import Materials
-from . import cohesive, model, uncertainty
-from .start import start as _start
-from .data import validate
-from .params import Spec
+from . import checks, cohesive, descent, model, uncertainty
+from .data import Data, validate
+from .params import Spec, names as _names
 from .residuals import Problem
 from .result import FitResult
+from .start import backups as _backups, start as _start
 
 LOSSES = ("linear", "soft_l1", "huber")
 INTERVALS = ("profile", "wald", None)
 SINGULAR = 1e-7          # smallest/largest singular value of the column-scaled Jacobian: not identifiable
-BEYOND_SIGMAS = 3.0      # a load this many standard errors beyond the fitted pull-off is rejected
+BEYOND_SIGMAS = checks.BEYOND_SIGMAS
 MAX_RESTARTS = 3
 
 
@@ -54,9 +53,11 @@ def fit(P=None, width=None, delta_work=None, *, R, Delta, materials, free=("w", 
     leg : array_like of str, optional
         'loading' or 'unloading' per point.
     control : {'load', 'grip-work'}
-        What the experiment held: delta_work points are sought on the part of the sub-critical branch stable
-        under it (section 8.3); width data fix each state by themselves (any control), and loads below the
-        fitted fixed-load pull-off force are rejected for both kinds.
+        What the experiment held: delta_work points are sought on the part of the sub-critical branch the path
+        from first contact reaches under it (stable, section 8.3, and feasible); width data fix each state by
+        themselves (any control), and loads below the fixed-load pull-off force (Contact.pull_off's path) of the
+        fitted model, or of the model fitted to the other rows where they drag the fit, are rejected for both
+        kinds (jkrcyl.fit.checks).
     loss : {'linear', 'soft_l1', 'huber'}
         least_squares loss; f_scale in units of the normalised residual (of the robust residual scale when
         no error is stated).
@@ -73,23 +74,49 @@ def fit(P=None, width=None, delta_work=None, *, R, Delta, materials, free=("w", 
     ------
     ValueError
         Naming the problem: bad data (NaN rows, widths outside (0, 2 pi R), ...), fewer points than parameters,
-        parameters the data cannot separate, loads beyond the fitted pull-off force.
+        parameters the data cannot separate, loads beyond the fitted pull-off force, a descent that did not
+        converge from any start (a parameter run off to absurd values, jkrcyl.fit.descent: never returned as an
+        estimate), a cohesive fit beyond its work budget or a given sigma0 outside the lambda range the fit
+        evaluates the law over (jkrcyl.fit.cohesive).
+
+    Examples
+    --------
+    >>> import jkrcyl, numpy as np
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> c = jkrcyl.Contact(R=0.01, Delta=3e-6, w=0.05, materials=m)
+    >>> width = np.linspace(7e-3, 20e-3, 12)
+    >>> res = jkrcyl.fit(P=c.state(np.tan(width / 0.04)).P, width=width, R=0.01, Delta=3e-6, materials=m,
+    ...                  free=("w",), sigma_P=1.0, interval=None)
+    >>> round(res.values["w"], 6)
+    0.05
     """
     setup = _setup(R, Delta, materials, w, offset, loss, f_scale, interval, confidence)
     R, Delta, w, offset, f_scale, confidence = setup
     strength = _strength(sigma0)
+    free = _names(free)
     data = validate(P, width, delta_work, sigma_P, sigma_width, sigma_delta_work, leg, R=R)
     spec = Spec(free, data, R, Delta, materials, w, offset, strength)
     problem = Problem(data, spec, R, control)
     _check_counts(problem, spec)
+    try:
+        return _fit(problem, spec, loss, f_scale, interval, confidence)
+    except cohesive.OverBudget as over:
+        raise ValueError(over.message()) from None
+
+
+def _fit(problem, spec, loss, f_scale, interval, confidence):
+    """Descents from the starts, restarted where the profile finds a better optimum; the result."""
     starts = _start(problem, spec)
+    more = lambda: _backups(problem, spec)
+    u = None
     for attempt in range(MAX_RESTARTS):
-        res, scale = _best(problem, starts if attempt == 0 else [u], loss, f_scale)
+        res, scale, _ = descent.best(problem, spec, starts if attempt == 0 else [u], loss, f_scale, more,
+                                     walls=lambda x: cohesive.bounds(problem, spec, x))
         try:
             return _finish(problem, spec, res, scale, loss, f_scale, interval, confidence)
         except uncertainty.BetterOptimum as better:
             u = better.u
-    raise ValueError("the fit keeps finding better optima while profiling: the least-squares surface is "
+    raise ValueError("w: the fit keeps finding better optima while profiling: the least-squares surface is "
                      "multimodal here; give better starting values (w, Delta, materials)")
 
 
@@ -102,6 +129,9 @@ def _setup(R, Delta, materials, w, offset, loss, f_scale, interval, confidence):
     if not isinstance(materials, Materials):
         raise ValueError(f"materials must be a jkrcyl.Materials, got {type(materials).__name__}")
     c = model.contact(R, Delta, 0.0 if w is None else w, materials)      # validates R, Delta, w
+    if c.Delta == 0:
+        raise ValueError("Delta must be > 0 in a fit (got 0: a neat fit, section 7.3, has no normalised adhesion M "
+                         "and no pull-off path in the model); give the clearance R - R_D, or a start when fitted")
     offset = finite_scalar("offset", offset)
     if loss not in LOSSES:
         raise ValueError(f"loss must be one of {', '.join(LOSSES)}, got {loss!r}")
@@ -129,30 +159,7 @@ def _check_counts(problem, spec):
                          "combination of w and the moduli, not both; measure over a range of contact sizes")
 
 
-# --- solve and finish -------------------------------------------------------------------------------------
-def _solve(problem, u0, loss, f_scale):
-    """least_squares from u0; with a robust loss and no stated errors the residuals are first scaled by a robust
-    estimate of their spread (1.4826 MAD of a linear fit), so f_scale is in units of it."""
-    opts = dict(method="trf", x_scale="jac", xtol=1e-12, ftol=1e-12, gtol=1e-12, max_nfev=2000,
-                diff_step=problem.diff_step)
-    res = least_squares(problem.residuals, u0, loss="linear", **opts)
-    scale = 1.0
-    if loss != "linear":
-        if not problem.sigma_known:
-            scale = 1.4826 * float(np.median(np.abs(res.fun - np.median(res.fun)))) or 1.0
-        res = least_squares(problem.residuals, res.x, loss=loss, f_scale=f_scale * scale, **opts)
-    if not res.success:
-        raise ValueError(f"the least-squares fit did not converge ({res.message}); check the data and the "
-                         "starting values")
-    return res, scale
-
-
-def _best(problem, starts, loss, f_scale):
-    """The lowest-cost descent of those from the starting points."""
-    fits = [_solve(problem, u0, loss, f_scale) for u0 in starts]
-    return min(fits, key=lambda rs: rs[0].cost)
-
-
+# --- finish ------------------------------------------------------------------------------------------------
 def _identifiable(jac, names):
     norms = np.linalg.norm(jac, axis=0)
     if norms.max() == 0:
@@ -183,9 +190,10 @@ def _finish(problem, spec, res, scale, loss, f_scale, interval, confidence):
     se_u = np.sqrt(np.maximum(np.diag(cov_u), 0.0))
     notes = []
     if spec.superposes:
-        _check_pull_off(problem, spec, u, cov_u, s2)
+        pull_offs = checks.check(problem, spec, u, cov_u, s2, lambda keep: _refit(problem, spec, u, keep, loss,
+                                                                                    f_scale), res.jac)
     else:
-        cohesive.check(problem, spec, u, cov_u, s2, BEYOND_SIGMAS)
+        pull_offs = cohesive.check(problem, spec, u, cov_u, s2, BEYOND_SIGMAS)
     intervals, method = {}, "none"
     q = uncertainty.threshold(confidence, dof, problem.sigma_known)
     if interval == "profile":
@@ -224,7 +232,7 @@ def _finish(problem, spec, res, scale, loss, f_scale, interval, confidence):
                      interval_method=method, loss=loss, control=problem.control, kind=problem.data.kind,
                      n=problem.data.n, materials=spec.fitted_materials(u), Delta=values["Delta"], R=problem.R,
                      nfev=res.nfev, notes=notes, fixed={k: v for k, v in values.items() if k not in names},
-                     _problem=problem, _u=u)
+                     pull_off=pull_offs, _problem=problem, _u=u)
 
 
 def _at_edge(problem, spec, res, scale, loss, f_scale, confidence):
@@ -258,37 +266,25 @@ def _to_values(spec, u, j, lo, hi):
     return tuple(out)
 
 
-def _check_pull_off(problem, spec, u, cov_u, s2):
-    """Loads more tensile than the fitted fixed-load pull-off (the minimum of P on the sub-critical branch) by more
-    than BEYOND_SIGMAS standard errors (of the point and of the fitted pull-off force) cannot be equilibria."""
+def _refit(problem, spec, u, keep, loss, f_scale):
+    """(problem, spec, u, cov_u, s2, jac) of the fit to the rows of the mask keep, descending from u; None where too
+    few rows remain or the descent fails (the deletion diagnostic of jkrcyl.fit.checks)."""
     d = problem.data
-    inp = spec.inputs(u)
-    if problem.mode == "load-exact":
-        sP = np.zeros(d.n)                                   # the loads were held: exact
-    elif d.sigma_P is not None:
-        sP = d.sigma_P
-    else:                                                    # no error stated on P: the residual scale, if any
-        sP = np.full(d.n, 0.0 if problem.sigma_known else math.sqrt(s2) * problem.nominal)
-    for wv in np.unique(inp.w):
-        sel = inp.w == wv
-        fo = model.fold(problem.R, inp.materials, inp.f, inp.Delta, wv, "load")
-        if fo is None:
-            continue
-        grad = np.zeros(u.size)
-        for k in range(u.size):
-            h = 1e-6
-            du = np.array(u, dtype=float)
-            du[k] += h
-            ik = spec.inputs(du)
-            wk = ik.w[np.nonzero(sel)[0][0]]
-            fk = model.fold(problem.R, ik.materials, ik.f, ik.Delta, wk, "load")
-            grad[k] = 0.0 if fk is None else (fk[1] - fo[1]) / h
-        se_fold = math.sqrt(max(float(grad @ cov_u @ grad), 0.0))
-        tol = BEYOND_SIGMAS * np.sqrt(se_fold ** 2 + sP[sel] ** 2)
-        beyond = d.P[sel] < fo[1] - tol
-        if beyond.any():
-            rows = np.nonzero(sel)[0][beyond]
-            raise ValueError(f"P: row{'s' if rows.size > 1 else ''} {', '.join(str(int(i)) for i in rows[:5])} "
-                             f"({d.P[rows[0]]:.6g} N/m) lie beyond the pull-off force {fo[1]:.6g} N/m of the "
-                             "fitted model (no stable equilibrium holds such a load; P < 0 pulls); remove "
-                             "them or check the units and the sign")
+    pick = lambda v: None if v is None else v[keep]
+    sub = Data(P=d.P[keep], x=d.x[keep], kind=d.kind, sigma_P=pick(d.sigma_P), sigma_x=pick(d.sigma_x),
+               unloading=pick(d.unloading))
+    v = spec.values(u)
+    try:
+        other = Spec(spec.names, sub, spec.R, v["Delta"], spec.materials0, v["w"], v["offset"], v["sigma0"])
+        p2 = Problem(sub, other, problem.R, problem.control)
+        _check_counts(p2, other)
+        res, _, _ = descent.best(p2, other, [other.to_internal(v)], loss, f_scale)
+    except ValueError:
+        return None
+    dof = p2.n_residuals - len(other.names) - p2.nuisance
+    s2 = 1.0 if p2.sigma_known else (2 * res.cost / dof if dof > 0 else math.nan)
+    try:
+        _, cov_u = uncertainty.covariance(res.jac, res.x, other, s2)
+    except np.linalg.LinAlgError:
+        return None
+    return p2, other, res.x, cov_u, s2, res.jac

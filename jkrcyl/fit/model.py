@@ -1,37 +1,36 @@
-"""The adapter between jkrcyl.fit and the library's JKR model (the cohesive law's is jkrcyl.fit.cohesive).
+"""The fit's view of the library's JKR model: contacts, single-patch states by superposition, the material helpers.
 
-The fit needs the load P [N/m] and the work-conjugate approach delta_work [m] of the single bottom arc at given
-contact parameters a = tan(eps/2) (width = 2 R eps), for any material pair: ``Contact.state(a)`` (closed forms
-where alpha* = 0, the collocation solver of (2.1) otherwise).  Two facts make the fit cheap:
+Every contact the fit evaluates is built by :func:`contact` (the one place: an edge law given to Contact flows
+through here), and every state comes from the library's single-patch solver (jkrcyl.model.single_patch: closed
+forms where alpha* = 0, the collocation solver of (2.1) otherwise), in its kernel scale (a Slice: p = P
+beta*/(4 pi Delta), lengths over Delta, slopes along the equilibrium and the fixed-arc derivatives p_k, dn_k that
+jkrcyl.model.stability turns into stability flags).  One fact makes the fit cheap:
 
-* superposition: at a fixed arc the problem is linear in the clearance Delta and in the edge stress-intensity
-  factor, which Griffith's condition (3.5)-(3.6) fixes at K = sqrt(8 w/beta*); so (4.4) and its collocation
-  twin read P = Delta p1(a) - sqrt(w) p2(a), delta_work = Delta q1(a) + sqrt(w) q2(a);
-* scaling both moduli by one factor f keeps vartheta, alpha*/beta* and (1/G_I)/beta* and divides beta* by f:
-  then P = f Delta p1 - sqrt(f w) p2 and delta_work = Delta q1 + sqrt(w/f) q2 with the parts of the
-  unscaled pair (stresses scale with f Delta and K, displacements with Delta and K/f).
+* superposition: at a fixed arc the problem is linear in the edge coefficient k of nu ~ -k/sqrt(eps - |phi|),
+  which the contact's edge law fixes at its adhesion (:func:`edge_coefficient`; Griffith's (3.5)-(3.6): k =
+  m/pi, m = M vartheta, i.e. K = sqrt(8 w/beta*)).  So every field of a Slice is ``base + k unit`` with the
+  base at k = 0 and the unit part per unit k, both depending on the pair's shape only (vartheta, (1/G_I)/beta*,
+  alpha*/beta*: scaling both moduli by one factor keeps them).  They are solved once per shape and set of
+  contact parameters (:func:`unit_slices`) from two library states, one without adhesion and one at M = 1.
 
-Both are checked against direct ``Contact.state`` calls in tests/test_fit.py.  The parts come from two states,
-one without adhesion (w = 0) and one without clearance (Delta = 0), so neither is a difference of two numbers.
+tests/test_fit.py holds the superposed states to Contact.state at 1e-10 relative over random pairs.
 """
 from __future__ import annotations
 
 import functools
 import math
-from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
 from ..contact import Contact
 from ..materials import Materials
-from ..model.single_patch import resolution as _resolution
-from ..numerics import roots as _roots
+from ..model.patch import SLOPE_OF, Slice  # noqa: F401  (SLOPE_OF: for jkrcyl.fit.branch)
+from ..model.single_patch import solver
 
-W_REF = 1.0          # [J/m^2] the adhesive part is computed at this w and scaled by sqrt(w/W_REF)
-LOG_STEP = 1e-4      # central differences in log a for the slopes of the parts (error ~1e-8 relative) ...
-LOG_STEP_NUMERIC = 1e-3   # ... and for alpha* != 0, whose adhesionless part carries ~1e-9 noise at a ~ 1e-3
-RIGID_A_MAX = 3.0    # vartheta = inf, alpha* = 0: no pole; the branch is searched up to this a
-TOP_GAP = 1e-3       # the branch ends at a_crit (1 - TOP_GAP): loads there are ~1/TOP_GAP times the typical ones
+LINEAR_FIELDS = ("p", "dp_da", "dn", "ddn_da", "dw", "ddw_da", "h", "B")   # base + k unit
+FIXED_ARC = ("p_k", "dn_k")      # the fixed-arc derivatives: the same at every k (the problem is linear in k)
+CURVATURE_STEP = 1e-4            # d2P/da2 by central differences of the exact slope, in log a (error ~1e-8)
 
 
 def a_of_width(width, R):
@@ -44,9 +43,28 @@ def width_of_a(a, R):
     return 4 * R * np.arctan(np.asarray(a, dtype=float))
 
 
-def contact(R, Delta, w, materials, strength=None) -> Contact:
-    """The library's contact (validates R, Delta, w; strength: the cohesive sigma0 [Pa], None for JKR)."""
-    return Contact(R=R, Delta=Delta, w=w, materials=materials, sigma0=strength)
+def contact(R, Delta, w, materials, strength=None, law=None) -> Contact:
+    """The library's contact (validates R, Delta, w; strength: the cohesive sigma0 [Pa], None for JKR; law: an edge
+    law, Contact(..., law=)): every contact of the fit is built here."""
+    return Contact(R=R, Delta=Delta, w=w, materials=materials, sigma0=strength, law=law)
+
+
+def contact_with_lambda(R, Delta, w, materials, lambda_) -> Contact:
+    """The library's cohesive contact of transition parameter lambda_ (Contact.with_lambda)."""
+    return Contact.with_lambda(R, Delta, w, materials, lambda_)
+
+
+def law_coefficient(pb, m: float) -> float:
+    """k of the edge law of the normalised problem pb at the adhesion m = M vartheta (kernel scale; Griffith's
+    (3.5)-(3.6): k = m/pi, K = sqrt(8 w/beta*)): the one place the fit asks a law for the adhesive part.  The
+    superposition holds for laws that fix k at an edge in equilibrium (the fit's JKR path)."""
+    return pb.edge.edge_coefficient(m)
+
+
+def edge_coefficient(c: Contact) -> float:
+    """k of the contact's edge law at its adhesion, in the kernel scale of its normalised problem."""
+    pb = c.problem
+    return law_coefficient(pb, pb.m)
 
 
 def scaled(materials: Materials, f: float) -> Materials:
@@ -74,176 +92,206 @@ def contact_modulus(materials: Materials) -> float:
     return 4.0 / materials.beta
 
 
-@dataclass(frozen=True)
-class Parts:
-    """P = f Delta p1 - sqrt(f w) p2 [N/m], delta_work = Delta q1 + sqrt(w/f) q2 [m] at contact parameters a.
-
-    p1 [N/m per m], p2 [N/m per sqrt(J/m^2)], q1 [1], q2 [m per sqrt(J/m^2)]; with slopes the first and
-    second derivatives in a (``d1``, ``d2``: dicts of the same keys)."""
+# --- the shape's unit states --------------------------------------------------------------------------------
+class Unit(NamedTuple):
+    """Single-patch fields at contact parameters a, kernel scale: {field: (base at k = 0, part per unit k)} for
+    :data:`LINEAR_FIELDS`, and the fixed-arc derivatives p_k, dn_k."""
 
     a: np.ndarray
-    p1: np.ndarray
-    p2: np.ndarray
-    q1: np.ndarray
-    q2: np.ndarray
-    d1: dict = None
-    d2: dict = None
-
-    def load(self, f, Delta, w, order=0):
-        """P or its a-derivative of order 1, 2 [N/m]; w scalar or per point."""
-        get = (lambda k: getattr(self, k)) if order == 0 else (self.d1 if order == 1 else self.d2).get
-        return f * Delta * get("p1") - np.sqrt(f * w) * get("p2")
-
-    def approach(self, f, Delta, w, order=0):
-        """delta_work or its a-derivative of order 1, 2 [m]."""
-        get = (lambda k: getattr(self, k)) if order == 0 else (self.d1 if order == 1 else self.d2).get
-        return Delta * get("q1") + np.sqrt(w / f) * get("q2")
+    parts: dict
+    p_k: np.ndarray
+    dn_k: np.ndarray
 
 
-KEYS = ("p1", "p2", "q1", "q2")
-
-
-def _exact(materials):
-    """The library's solver for this pair rounds at the double-precision level (its closed forms)."""
-    return _resolution(materials)[0] <= 1e-14
-
-
-def _step(materials):
-    return LOG_STEP if _exact(materials) else LOG_STEP_NUMERIC
-
-
-def _raw_parts(R, materials, a):
-    """(p1, p2, q1, q2) at the contact parameters a (1-D array) from two library states."""
-    d_ref = R * 1e-3                                  # any Delta in (0, R): the part is linear in it
-    dry = contact(R, d_ref, 0.0, materials).state(a)
-    sticky = contact(R, 0.0, W_REF, materials).state(a)
-    s = math.sqrt(W_REF)
-    return (np.atleast_1d(dry.P) / d_ref, -np.atleast_1d(sticky.P) / s,
-            np.atleast_1d(dry.delta_work) / d_ref, np.atleast_1d(sticky.delta_work) / s)
-
-
-def parts(R, materials, a, slopes=False) -> Parts:
-    """The parts at a (and, with slopes, their first and second a-derivatives by central differences in log a:
-    the parts behave like powers of a near 0)."""
-    a = np.atleast_1d(np.asarray(a, dtype=float))
-    if not slopes:
-        return Parts(a, *_cached_parts(R, materials, a.tobytes()))
-    h = _step(materials)
-    mid, up, down = (_cached_parts(R, materials, (a * math.exp(s)).tobytes()) for s in (0.0, h, -h))
-    d1, d2 = {}, {}
-    for k, m, u, dn in zip(KEYS, mid, up, down):
-        g1, g2 = (u - dn) / (2 * h), (u - 2 * m + dn) / (h * h)    # d/dlog a, d2/dlog a^2
-        d1[k], d2[k] = g1 / a, (g2 - g1) / (a * a)
-    return Parts(a, *mid, d1=d1, d2=d2)
-
-
-@functools.lru_cache(maxsize=64)
-def _cached_parts(R, materials, a_bytes):
-    return _raw_parts(R, materials, np.frombuffer(a_bytes, dtype=float).copy())
+def _problems(materials):
+    """(problem without adhesion, problem at M = 1, k of the latter) of the pair (R, Delta: any; M ~ sqrt(w))."""
+    probe = contact(1.0, 1e-3, 1.0, materials)
+    dry, sticky = contact(1.0, 1e-3, 0.0, materials), contact(1.0, 1e-3, 1.0 / probe.M ** 2, materials)
+    return dry.problem, sticky.problem, edge_coefficient(sticky)
 
 
 @functools.lru_cache(maxsize=32)
-def pole(R, materials) -> float:
-    """a at the receding-contact pole of the single arc: Contact.a_crit, the single-patch solver's pole (a_crit of
-    (4.4) at alpha* = 0, inf for a rigid cradle then; the zero of 1/P without adhesion for any other pair)."""
-    return contact(R, R * 1e-3, 0.0, materials).a_crit
+def shape(materials: Materials):
+    """The pair's single-patch solvers (without adhesion, at M = 1) and the unit k: what the unit parts need."""
+    dry, sticky, k = _problems(materials)
+    return solver(dry), solver(sticky), k
 
 
-def branch_top(R, materials) -> float:
-    """Largest a searched on the sub-critical branch: just below the pole, or RIGID_A_MAX without one."""
-    ac = pole(R, materials)
-    return RIGID_A_MAX if math.isinf(ac) else ac * (1 - TOP_GAP)
+POINTS_KEPT = 50_000  # unit states kept per pair (a subset of measured widths, a refined root: no new solve)
+_points = {}
 
 
-PER_DECADE = 64      # table nodes per decade of a (cubic Hermite in log a: ~1e-8 relative between nodes)
-DECADES = 7          # the table spans a_top 1e-7 .. a_top (alpha* = 0) ...
-DECADES_NUMERIC = 4  # ... or a_top 1e-4 .. a_top: below, the solver's adhesionless part loses digits (1e-5 at 1e-5)
+def _solve(materials, a):
+    """The unit parts at a as rows (base of each LINEAR_FIELDS, unit of each, p_k, dn_k): two library states."""
+    s0, s1, k1 = shape(materials)
+    lo, hi = s0.states(a), s1.states(a)
+    return np.array([getattr(lo, f) for f in LINEAR_FIELDS] + [(getattr(hi, f) - getattr(lo, f)) / k1
+                                                               for f in LINEAR_FIELDS] + [hi.p_k, hi.dn_k])
 
 
-class Branch:
-    """The parts along the sub-critical branch as cubic Hermite splines in x = log a (values and slopes at
-    PER_DECADE nodes per decade, from a_top 1e-7 (1e-4 for alpha* != 0) to a_top), each times (1 - a/a_crit) so that the pole of
-    (4.4) does not spoil the interpolation.  Evaluating it costs microseconds for any material pair."""
+def _unit(materials, a, keep=True):
+    """The unit parts at a: solved where not kept, kept per point (keep=False: solved afresh, not kept)."""
+    if keep:
+        kept = _points.setdefault(materials, {})
+        if len(kept) > POINTS_KEPT:
+            kept.clear()
+        new = np.array(sorted({float(x) for x in a if float(x) not in kept}))
+        if new.size:
+            kept.update(zip(new.tolist(), _solve(materials, new).T))
+        table = np.array([kept[float(x)] for x in a]).T
+    else:
+        table = _solve(materials, a)
+    n = len(LINEAR_FIELDS)
+    parts = {f: (table[i], table[n + i]) for i, f in enumerate(LINEAR_FIELDS)}
+    return Unit(np.asarray(a, dtype=float), parts, table[2 * n], table[2 * n + 1])
 
-    def __init__(self, R, materials):
-        from scipy.interpolate import CubicHermiteSpline
-        self.top = branch_top(R, materials)
-        self.pole = pole(R, materials)
-        decades = DECADES if _exact(materials) else DECADES_NUMERIC
-        a = self.top * np.logspace(-decades, 0, decades * PER_DECADE + 1)
-        a[-1] = self.top
-        self.a_min, self.a_max = a[0], a[-1]
-        h = _step(materials)
-        # slopes of the weighted parts y = part (1 - a/a_crit) by central differences in log a: y is smooth
-        # through the pole, the parts alone are not (differences of them would carry (h/(1 - a/a_crit))^2)
-        y = [[v * self._weight(a * math.exp(s))[0] for v in _cached_parts(R, materials, (a * math.exp(s)).tobytes())]
-             for s in (0.0, h, -h)]
-        y0, yp, ym = (np.array(v).T for v in y)
-        self.spline = CubicHermiteSpline(np.log(a), y0, (yp - ym) / (2 * h))   # all four parts at once
-        self.slope, self.curvature = self.spline.derivative(1), self.spline.derivative(2)
 
-    def _weight(self, a):
-        if math.isinf(self.pole):
-            return np.ones_like(a), np.zeros_like(a)
-        return 1 - a / self.pole, np.full_like(a, -1 / self.pole)
+@functools.lru_cache(maxsize=64)
+def _cached_unit(materials, a_bytes):
+    return _unit(materials, np.frombuffer(a_bytes, dtype=float).copy())
 
-    def parts(self, a) -> Parts:
-        """Parts with first and second a-derivatives at a in [a_min, a_max]."""
+
+def unit_slices(materials: Materials, a, keep=True) -> Unit:
+    """The unit parts at the contact parameters a (1-D), cached per pair and set of a (the measured widths);
+    keep=False: solved afresh (contact parameters that change with every evaluation, the located states of
+    delta_work data)."""
+    a = np.ascontiguousarray(np.atleast_1d(np.asarray(a, dtype=float)))
+    return _cached_unit(materials, a.tobytes()) if keep else _unit(materials, a, keep=False)
+
+
+def superpose(u: Unit, k: float) -> Slice:
+    """The Slice at edge coefficient k (kernel scale)."""
+    v = {f: base + k * unit for f, (base, unit) in u.parts.items()}
+    return Slice(a=u.a, p_k=u.p_k, dn_k=u.dn_k, **v)
+
+
+# --- physical states -------------------------------------------------------------------------------------------
+class States(NamedTuple):
+    """States of one contact at contact parameters a [SI]: load P [N/m], work-conjugate approach delta_work [m],
+    gap at the top h_pi [m], the slopes dP/da, d delta_work/da and the Slice they come from."""
+
+    a: np.ndarray
+    P: np.ndarray
+    delta_work: np.ndarray
+    h_pi: np.ndarray
+    dP_da: np.ndarray
+    ddelta_work_da: np.ndarray
+    slice: Slice
+
+
+def load_per_p(c: Contact) -> float:
+    """P / p: 4 pi Delta/beta* [N/m] (the kernel scale, section 6: p = vartheta P*, P* = P/load_scale)."""
+    return c.load_scale / c.problem.scale
+
+
+REF_W = 1.0          # [J/m^2] the reference contact of a pair's shape (any w > 0: M is proportional to sqrt(w))
+REF_DELTA = 1e-3     # [R] its clearance (any in (0, R): M is proportional to 1/Delta)
+
+
+@functools.lru_cache(maxsize=64)
+def reference(R: float, materials: Materials, law=None):
+    """(contact, its normalised problem) of the pair's shape at REF_W and REF_DELTA R under the edge law (None:
+    JKR): what the scalings of :meth:`Superposed.of_inputs` start from (built by :func:`contact`)."""
+    c = contact(R, REF_DELTA * R, REF_W, materials, law=law)
+    return c, c.problem
+
+
+class Superposed:
+    """The states of one contact (its materials: ``materials`` times a factor f; ``materials`` is the shape of the
+    cache) from the unit parts: the edge coefficient k of its law, the kernel scale L = P/p [N/m] and Delta [m].
+
+    :meth:`of` reads them off a built contact; :meth:`of_inputs` (the fit's every evaluation) off the pair's
+    reference contact by the scalings of section 6 (M proportional to sqrt(G_c beta*)/Delta, G_c the law's edge
+    work, P/p = 4 pi Delta/beta*), with the law asked for k at the scaled M."""
+
+    def __init__(self, materials, k, L, D, work_shift, make_contact):
+        self.materials, self.k, self.L, self.D, self.work_shift = materials, k, L, D, work_shift
+        self._make = make_contact
+
+    @classmethod
+    def of(cls, c: Contact, materials: Materials) -> "Superposed":
+        pb = c.problem
+        return cls(materials, law_coefficient(pb, pb.m), c.load_scale / pb.scale, c.Delta, pb.work_shift,
+                   lambda: c)
+
+    @classmethod
+    def of_inputs(cls, R, Delta, w, f, materials, law=None) -> "Superposed":
+        """The contact of clearance Delta [m], work of adhesion w [J/m^2], the pair ``materials`` times f and the
+        edge law (None: JKR) (ValueError outside 0 < Delta < R, w >= 0, f > 0, as Contact would)."""
+        if not (0 < Delta < R and w >= 0 and f > 0 and math.isfinite(w) and math.isfinite(f)):
+            raise ValueError(f"Delta, w: outside 0 < Delta < R, w >= 0 (Delta = {Delta!r}, w = {w!r}, f = {f!r})")
+        ref, pb = reference(R, materials, law)
+        M = pb.M * math.sqrt(ref.law.edge_work(w) / (ref.law.edge_work(REF_W) * f)) * ref.Delta / Delta
+        return cls(materials, law_coefficient(pb, M * pb.scale), ref.load_scale / pb.scale * f * Delta / ref.Delta,
+                   Delta, pb.work_shift,
+                   lambda: contact(R, Delta, w, scaled(materials, f) if f != 1.0 else materials, law=law))
+
+    @functools.cached_property
+    def contact(self) -> Contact:
+        """The library's contact (built on demand: the pull-off and the checks ask it)."""
+        return self._make()
+
+    def slice(self, a, keep=True) -> Slice:
+        return superpose(unit_slices(self.materials, a, keep), self.k)
+
+    def physical(self, s: Slice) -> States:
+        L, D = self.L, self.D
+        return States(s.a, L * s.p, D * s.dw, D * s.h, L * s.dp_da, D * s.ddw_da, s)
+
+    def states(self, a, keep=True) -> States:
+        """States at the contact parameters a (1-D; keep: see :func:`unit_slices`)."""
+        return self.physical(self.slice(a, keep))
+
+    def loads(self, a, slopes=False):
+        """(P, dP/da) [N/m] at a (dP/da None unless slopes): the load alone, for the width residuals."""
+        parts = unit_slices(self.materials, a).parts
+        P = self.L * (parts["p"][0] + self.k * parts["p"][1])
+        return P, (self.L * (parts["dp_da"][0] + self.k * parts["dp_da"][1]) if slopes else None)
+
+    def load_curvature(self, a) -> np.ndarray:
+        """d2P/da2 [N/m] at a: central differences of the exact slope dP/da in log a (step CURVATURE_STEP)."""
         a = np.asarray(a, dtype=float)
-        x = np.log(a)
-        w, dw = self._weight(a)
-        y, yx, yxx = self.spline(x), self.slope(x), self.curvature(x)       # shape (..., 4)
-        a, w, dw = a[..., None], w[..., None], dw[..., None]
-        ya, yaa = yx / a, (yxx - yx) / (a * a)             # d/da, d2/da2 of y = part * w
-        vals = y / w                                       # w'' = 0
-        d1 = (ya - vals * dw) / w
-        d2 = (yaa - 2 * d1 * dw) / w
-        split = lambda z: {k: z[..., i] for i, k in enumerate(KEYS)}
-        v = split(vals)
-        return Parts(a[..., 0], v["p1"], v["p2"], v["q1"], v["q2"], d1=split(d1), d2=split(d2))
-
-    def nodes(self):
-        return np.exp(self.spline.x)
+        h = CURVATURE_STEP
+        up, down = (unit_slices(self.materials, a * math.exp(s)).parts["dp_da"] for s in (h, -h))
+        return self.L * ((up[0] - down[0]) + self.k * (up[1] - down[1])) / (2 * h * a)
 
 
-@functools.lru_cache(maxsize=16)
-def branch(R, materials) -> Branch:
-    """The cached :class:`Branch` of a pair (the moduli's common factor does not enter the parts)."""
-    return Branch(R, materials)
+def states(c: Contact, materials: Materials, a) -> States:
+    """States of contact c (its materials: ``materials`` times a common factor, the shape of the cache) at a."""
+    return Superposed.of(c, materials).states(a)
 
 
-def segment(R, materials, f, Delta, w, quantity="load"):
-    """(a_lo, a_hi): the part of the sub-critical branch stable under fixed load (quantity='load': from the
-    fold, the minimum of P, up to where dP/da turns negative again or the pole) or fixed delta_work
-    ('approach'), section 8.3: dG/da|_P > 0 is dP/da > 0 below a_crit, dG/da|_delta_work > 0 is
-    d delta_work/da > 0.  a_lo = a_min of the table when the slope is positive there (no fold on it)."""
-    br = branch(R, materials)
-    grid = br.nodes()
-    p = br.parts(grid)
-    g = p.load(f, Delta, w, 1) if quantity == "load" else p.approach(f, Delta, w, 1)
-    pos = g > 0
-    if not pos.any():
-        return None
-    i = int(np.argmax(pos))
-    lo = br.a_min if i == 0 else _slope_root(br, f, Delta, w, quantity, grid[i - 1], grid[i])
-    after = np.nonzero(~pos[i:])[0]
-    hi = br.a_max if after.size == 0 else _slope_root(br, f, Delta, w, quantity, grid[i + after[0] - 1],
-                                                        grid[i + after[0]])
-    return lo, hi
+def linear_columns(R, Delta, materials, a):
+    """Columns (values, a-slopes, a-curvatures; each of shape (2, n)) of P = x1 c1 + x2 c2 at fixed contact
+    parameters a for the pair's shape ``materials`` times any factor f, clearance Delta and work of adhesion w:
+    x1 = f Delta/Delta_0, x2 = sqrt(f w/w_0) with the reference Delta_0 = Delta and w_0 = 1 J/m^2 (the adhesive
+    amplitude of the law: k Delta is proportional to sqrt(f w), Griffith's K = sqrt(8 w/beta*); :func:`amplitude_w`
+    inverts it).  For the linear least-squares start."""
+    c = contact(R, Delta, 1.0, materials)
+    L, k = load_per_p(c), edge_coefficient(c)
+    a = np.asarray(a, dtype=float)
+    out = []
+    for field in ("p", "dp_da"):
+        parts = unit_slices(materials, a).parts[field]
+        out.append(np.array([L * parts[0], L * k * parts[1]]))
+    h = CURVATURE_STEP
+    up, down = (unit_slices(materials, a * math.exp(s)).parts["dp_da"] for s in (h, -h))
+    curvature = [(up[i] - down[i]) / (2 * h * a) for i in (0, 1)]
+    out.append(np.array([L * curvature[0], L * k * curvature[1]]))
+    return out
 
 
-def _slope_root(br, f, Delta, w, quantity, lo, hi):
-    def slope(x):
-        p = br.parts(np.array([x]))
-        return float((p.load(f, Delta, w, 1) if quantity == "load" else p.approach(f, Delta, w, 1))[0])
-    return _roots.brent(lambda x, _: slope(x), lo, hi)
+def amplitude_w(x2, f):
+    """w [J/m^2] of the adhesive amplitude x2 of :func:`linear_columns` at modulus factor f: x2 = sqrt(f w/1)."""
+    return x2 * x2 / f
 
 
-def fold(R, materials, f, Delta, w, quantity="load"):
-    """(a, P, delta_work) at the fixed-load pull-off (the minimum of P on the sub-critical branch, quantity='load')
-    or at the fixed-delta_work pull-off ('approach'); None if the stable segment has no lower fold (w = 0)."""
-    seg = segment(R, materials, f, Delta, w, quantity)
-    if seg is None or seg[0] == branch(R, materials).a_min:
-        return None
-    p = branch(R, materials).parts(np.array([seg[0]]))
-    return seg[0], float(p.load(f, Delta, w)[0]), float(p.approach(f, Delta, w)[0])
+def pole(materials: Materials) -> float:
+    """a at the receding-contact pole of the single arc: the single-patch solver's a_crit (inf for a rigid cradle
+    at alpha* = 0; section 4)."""
+    return shape(materials)[0].a_crit
+
+
+def resolved(materials: Materials) -> float:
+    """The largest contact parameter the pair's single-patch solver resolves."""
+    return shape(materials)[0].a_max

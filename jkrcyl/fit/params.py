@@ -35,6 +35,35 @@ class Inputs:
     offset: float              # [m]
     strength: float = None     # [Pa] the cohesive sigma0 (None: JKR)
 
+    @property
+    def pair(self):
+        """The fitted jkrcyl.Materials (the factor f applied)."""
+        return model.scaled(self.materials, self.f) if self.f != 1.0 else self.materials
+
+    def contact(self, R, w):
+        """The library's contact at these inputs and the work of adhesion w [J/m^2] (jkrcyl.fit.model.contact)."""
+        return model.contact(R, self.Delta, float(w), self.pair, self.strength)
+
+    def superposed(self, R, w):
+        """The superposed states of that contact (JKR: jkrcyl.fit.model.Superposed)."""
+        return model.Superposed.of_inputs(R, self.Delta, float(w), self.f, self.materials)
+
+
+def names(free):
+    """The fitted parameters as a tuple of known names (ValueError naming the offending item otherwise)."""
+    if isinstance(free, str):
+        free = (free,)
+    try:
+        free = tuple(free)
+    except TypeError:
+        raise ValueError(f"free must be a sequence of parameter names ({', '.join(ORDER)}), got {free!r}") from None
+    unknown = [n for n in free if not isinstance(n, str) or n not in DESCRIPTION]
+    if unknown:
+        raise ValueError(f"free: unknown parameter {unknown[0]!r} (allowed: {', '.join(ORDER)})")
+    if len(set(free)) != len(free) or not free:
+        raise ValueError(f"free must name each parameter once and at least one, got {free!r}")
+    return free
+
 
 class Spec:
     """Which parameters are free, the fixed values, and the map between values and internal coordinates.
@@ -55,14 +84,7 @@ class Spec:
     """
 
     def __init__(self, free, data, R, Delta, materials, w, offset, strength=None):
-        if isinstance(free, str):
-            free = (free,)
-        free = tuple(free)
-        unknown = [n for n in free if n not in DESCRIPTION]
-        if unknown:
-            raise ValueError(f"free: unknown parameter {unknown[0]!r} (allowed: {', '.join(ORDER)})")
-        if len(set(free)) != len(free) or not free:
-            raise ValueError(f"free must name each parameter once and at least one, got {free!r}")
+        free = names(free)
         self.names = tuple(n for n in ORDER if n in free)
         self.data, self.materials0, self.n, self.R = data, materials, data.n, R
         self._check_combination(data)
@@ -151,5 +173,4 @@ class Spec:
 
     def fitted_materials(self, u):
         """The fitted pair (the factor f applied)."""
-        inp = self.inputs(u)
-        return model.scaled(inp.materials, inp.f) if inp.f != 1.0 else inp.materials
+        return self.inputs(u).pair

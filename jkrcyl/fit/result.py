@@ -7,7 +7,7 @@ from typing import Optional
 
 import numpy as np
 
-from . import model
+from . import branch, model
 from .params import DESCRIPTION
 
 
@@ -21,7 +21,9 @@ class FitResult:
     ``interval_method`` (+-inf or 0 where the data do not bound a parameter; see ``notes``).  covariance, correlation: arrays in the order of ``names``.
     residuals: measured minus fitted (P [N/m] for width data; for delta_work data the residual of the
     variable with the error: delta_work [m], P [N/m], or both stacked); normalised_residuals: divided by the
-    stated standard deviations (equal to residuals when none was stated).
+    stated standard deviations (equal to residuals when none was stated).  pull_off: {w [J/m^2]: the fixed-load
+    pull-off force [N/m] of the fitted contact (None: no detachment on the path from first contact)}, the force the
+    rows were checked against (Contact.pull_off's path; jkrcyl.fit.checks).
     """
 
     names: tuple
@@ -48,6 +50,7 @@ class FitResult:
     nfev: int
     notes: list = field(default_factory=list)
     fixed: dict = field(default_factory=dict)
+    pull_off: dict = field(default_factory=dict)    # {w [J/m^2]: fixed-load pull-off force [N/m] or None}
     _problem: object = field(default=None, repr=False)
     _u: Optional[np.ndarray] = field(default=None, repr=False)
 
@@ -76,6 +79,10 @@ class FitResult:
         law = self.contact().lambda_
         rows += [] if law is None else [f"Maugis-Dugdale law: lambda = {law:.6g}, h0 = w/sigma0 = "
                                         f"{self.contact().h0:.6g} m"]
+        for w, P in self.pull_off.items():
+            leg = "" if len(self.pull_off) == 1 else f" (w = {w:.6g} J/m^2)"
+            rows.append(f"fixed-load pull-off force of the fitted model{leg}: " +
+                        ("none (no detachment on the path from first contact)" if P is None else f"{P:.6g} N/m"))
         unit = "N/m" if self.kind == "width" or self._problem.mode != "load-exact" else "m"
         scale = "errors as stated" if self._problem.sigma_known else f"residual scale {self.sigma:.4g} {unit}"
         rows.append(f"{self.n} points ({self.kind}), control {self.control}, loss {self.loss}, "
@@ -139,10 +146,10 @@ def _curve(problem, u, sel, n):
         pad = 0.05 * (hi - lo)
         xs = np.linspace(max(lo - pad, lo / 2), min(hi + pad, 2 * math.pi * R * 0.999), n)
         return xs, problem.curve_width(u, xs, w)
-    br = model.branch(R, inp.materials)
-    seg = model.segment(R, inp.materials, inp.f, inp.Delta, w, "load" if problem.control == "load" else "approach")
+    sp = inp.superposed(R, w)
+    lo_seg, hi_seg = branch.segment(sp, problem.control)
     a_pts = problem.states(u)[sel]
-    lo = seg[0] if seg else a_pts.min()
-    a = np.geomspace(min(lo, a_pts.min()), a_pts.max() * 1.02 if a_pts.max() * 1.02 < br.a_max else br.a_max, n)
-    p = br.parts(a)
-    return p.approach(inp.f, inp.Delta, w) + inp.offset, p.load(inp.f, inp.Delta, w)
+    top = min(a_pts.max() * 1.02, hi_seg)
+    a = np.geomspace(min(lo_seg, a_pts.min()), max(top, a_pts.max()), n)
+    st = sp.states(a)
+    return st.delta_work + inp.offset, st.P

@@ -9,8 +9,8 @@ from . import cohesive, model
 
 
 def start(problem, spec):
-    """Internal coordinates to begin the least-squares descent from: a list of one (several for the cohesive law:
-    jkrcyl.fit.cohesive.start)."""
+    """Internal coordinates to begin the least-squares descent from: a list (best first) of one (several for the
+    cohesive law: jkrcyl.fit.cohesive.start; the best points of the scan for delta_work data)."""
     values = dict(spec.fixed)
     if problem.data.kind == "width":
         values.update(_linear_start(problem, spec))
@@ -18,8 +18,15 @@ def start(problem, spec):
             values["sigma0"] = values["sigma0"] or 1.0     # placeholder, set by jkrcyl.fit.cohesive.start
             return cohesive.start(problem, spec, spec.to_internal(values))
         return [_grid_refine(problem, spec, spec.to_internal(values))]
-    values.update(_scan_start(problem, spec))
-    return [spec.to_internal(values)]
+    return scan(problem, spec)
+
+
+def backups(problem, spec):
+    """Further starts where the descents from :func:`start` diverged or stopped far above them: the best points
+    of :func:`scan` (JKR width data; the cohesive law and delta_work data start from several points already)."""
+    if problem.data.kind != "width" or not spec.superposes:
+        return []
+    return scan(problem, spec)
 
 
 REFINE = np.linspace(-0.6, 0.6, 13)     # log-offsets of the starting grid around the linear start (x 0.55 .. 1.8)
@@ -44,33 +51,45 @@ def _grid_refine(problem, spec, u0):
 
 
 def _w_of_M(spec, M, f=1.0):
-    """w [J/m^2] giving the normalised adhesion M (section 6) at the starting pair and clearance."""
-    m = spec.materials0
-    A = m.beta / f / (2 * math.pi)
-    th = 1.0 if math.isinf(m.theta) else m.theta
-    return 2 * (M * spec.fixed["Delta"] * th) ** 2 / (A * spec.R) if spec.fixed["Delta"] > 0 else 1e-3
+    """w [J/m^2] giving the normalised adhesion M (section 6) at the starting pair (moduli times f) and clearance:
+    M is proportional to sqrt(w)."""
+    ref = model.contact(spec.R, spec.fixed["Delta"], 1.0, model.scaled(spec.materials0, f))
+    return (M / ref.M) ** 2
 
 
 def _linear_start(problem, spec):
-    """Width data: P = c1 p1 - g p2 is linear in c1 = f Delta and g = sqrt(f w) (per leg): weighted linear least
-    squares, then mapped to the free parameters."""
+    """Width data: P = x1 c1 + x2 c2 is linear in x1 = f Delta/Delta_0 and x2 = sqrt(f w) (per leg;
+    jkrcyl.fit.model.linear_columns): least squares weighted by the effective variance of each point (the fit's own,
+    jkrcyl.fit.residuals, re-evaluated at the previous solution: an error on the width weighs points by their slope,
+    which unweighted would let the steep points near the pole decide), then mapped to the free parameters."""
     d, names = problem.data, set(spec.names)
-    p = model.parts(problem.R, spec.materials0, problem.a)
+    Delta = spec.fixed["Delta"]
+    (c1, c2), slopes, curvatures = model.linear_columns(problem.R, Delta, spec.materials0, problem.a)
     split = {"w_loading", "w_unloading"} <= names
     legs = [~d.unloading, d.unloading] if split else [np.ones(d.n, bool)]
-    cols = [p.p1] + [-p.p2 * sel for sel in legs]
-    wgt = np.ones(d.n) if d.sigma_P is None else 1 / d.sigma_P
-    coef = np.linalg.lstsq(np.array(cols).T * wgt[:, None], d.P * wgt, rcond=None)[0]
-    c1, gs = coef[0], coef[1:]
+    columns = lambda cols: np.array([cols[0]] + [cols[1] * sel for sel in legs]).T
+    X, X1, X2 = columns((c1, c2)), columns(slopes), columns(curvatures)
+    coef = _weighted_lstsq(X, d.P, np.ones(d.n) if d.sigma_P is None else d.sigma_P)
+    if d.sigma_x is not None:                 # iteratively reweighted: the effective variance at the last solution
+        dadx = (1 + problem.a ** 2) / (4 * problem.R)
+        for _ in range(REWEIGHTS):
+            var = (X1 @ coef * dadx * d.sigma_x) ** 2 + 0.5 * (X2 @ coef * dadx ** 2 * d.sigma_x ** 2) ** 2
+            var = var + (0.0 if d.sigma_P is None else d.sigma_P ** 2)
+            new = _weighted_lstsq(X, d.P, np.sqrt(np.maximum(var, 1e-30 * var.max())))
+            done = np.allclose(new, coef, rtol=1e-8, atol=0)
+            coef = new
+            if done:
+                break
+    x1, gs = coef[0], coef[1:]
     out = {}
-    f, Delta = 1.0, spec.fixed["Delta"]
+    f = 1.0
     w_fixed = spec.fixed.get("w")
-    if c1 > 0 and np.all(gs > 0):
+    if x1 > 0 and np.all(gs > 0):
         if names & {"E", "E_hole", "E_pin"}:
-            f = c1 / Delta if "Delta" not in names else (gs[0] ** 2 / w_fixed if w_fixed else 1.0)
+            f = x1 if "Delta" not in names else (gs[0] ** 2 / w_fixed if w_fixed else 1.0)
         if "Delta" in names:
-            Delta = c1 / f
-        ws = gs ** 2 / f
+            Delta = Delta * x1 / f
+        ws = model.amplitude_w(gs, f)
     else:
         ws = np.full(len(legs), _w_of_M(spec, 0.3))
     out.update(_moduli(spec, names, f))
@@ -83,6 +102,13 @@ def _linear_start(problem, spec):
     return out
 
 
+REWEIGHTS = 20      # passes of the effective-variance reweighting (they converge in a few)
+
+
+def _weighted_lstsq(X, y, sd):
+    return np.linalg.lstsq(X / sd[:, None], y / sd, rcond=None)[0]
+
+
 def _moduli(spec, names, f):
     """The free moduli at the factor f on the starting ones: 'E' (contact modulus E*), 'E_hole', 'E_pin'."""
     out = {"E": f * spec.E_star0} if "E" in names else {}
@@ -90,14 +116,19 @@ def _moduli(spec, names, f):
     return out
 
 
-def _scan_start(problem, spec):
-    """delta_work data: the best of a grid in w (normalised adhesion M from 1e-3 to 3) and the modulus factor,
-    the offset at each taken as the median misfit of the approach."""
+SCAN_M = np.geomspace(1e-3, 3.0, 16)     # normalised adhesions of the scan
+SCAN_FACTORS = (0.25, 0.5, 1.0, 2.0, 4.0)  # modulus factors of the scan (free moduli)
+SCAN_KEEP = 3                             # starts kept from the scan: the best, each from another w or factor
+
+
+def scan(problem, spec):
+    """The best SCAN_KEEP points of a grid in w (normalised adhesion M from 1e-3 to 3) and the modulus factor,
+    the offset at each taken as the median misfit of the approach (ValueError where none can be evaluated)."""
     names = set(spec.names)
-    factors = (0.25, 0.5, 1.0, 2.0, 4.0) if names & {"E", "E_hole", "E_pin"} else (1.0,)
-    best, best_cost = None, math.inf
+    factors = SCAN_FACTORS if names & {"E", "E_hole", "E_pin"} else (1.0,)
+    found = []
     for f in factors:
-        for M in np.geomspace(1e-3, 3.0, 16):
+        for M in SCAN_M:
             wv = _w_of_M(spec, M, f)
             vals = dict(spec.fixed)
             vals.update({"w": wv, "w_loading": wv, "w_unloading": wv})
@@ -108,12 +139,11 @@ def _scan_start(problem, spec):
             u = spec.to_internal(vals)
             with np.errstate(all="ignore"):
                 r = problem.residuals(u)
-            cost = float(r @ r) if np.all(np.isfinite(r)) else math.inf
-            if cost < best_cost:
-                best, best_cost = {k: vals[k] for k in spec.names}, cost
-    if best is None:
+            if np.all(np.isfinite(r)):
+                found.append((float(r @ r), u))
+    if not found:
         raise ValueError("the model cannot be evaluated at any starting value: check R, Delta and the materials")
-    return best
+    return [u for _, u in sorted(found, key=lambda cu: cu[0])[:SCAN_KEEP]]
 
 
 def _offset_guess(problem, spec, vals):

@@ -18,11 +18,15 @@ import math
 
 import numpy as np
 from scipy import stats
-from scipy.optimize import brentq, least_squares
+from scipy.optimize import least_squares
+
+from ..numerics import roots as _roots
 
 LOG_RANGE = 30.0       # a log-parameter profile that stays below the threshold over e^30: open on that side
 LINEAR_RANGE = 1e3     # likewise for the offset, in units of its length scale
 MAX_DOUBLINGS = 40
+PROFILE_TOL = 1e-9     # least_squares tolerances of a profile's re-optimisation: S to ~1e-9 relative, far below
+#                        the threshold's resolution (the crossing is sought to 1e-4 standard errors)
 
 
 class BetterOptimum(Exception):
@@ -87,7 +91,7 @@ class Profiler:
             u = full([])
             return (self.S(self.problem.residuals(u)) - self.S_hat) / self.s2, warm
         res = least_squares(lambda v: self.problem.residuals(full(v)), warm, loss=self.loss, f_scale=self.f_scale,
-                            x_scale="jac", method="trf", xtol=1e-12, ftol=1e-12, gtol=1e-12,
+                            x_scale="jac", method="trf", xtol=PROFILE_TOL, ftol=PROFILE_TOL, gtol=PROFILE_TOL,
                             diff_step=getattr(self.problem, "diff_step", None))
         S = self.S(res.fun)
         if S < self.S_hat - 1e-7 * max(self.S_hat, self.s2):
@@ -106,6 +110,10 @@ class Profiler:
         wall = self.edges.get(j, (-math.inf, math.inf))[sign > 0]
         if (t0 - wall) * sign >= 0:
             return sign * math.inf
+        if math.isfinite(wall) and (t0 + sign * math.sqrt(self.q) * step - wall) * sign >= 0:
+            e, warm = self.excess(j, wall, others0)      # the Wald crossing lies beyond the wall: try the wall first
+            if e < self.q:
+                return sign * math.inf
         for _ in range(MAX_DOUBLINGS):
             t = t0 + sign * step
             if (t - wall) * sign >= 0:
@@ -124,7 +132,7 @@ class Profiler:
                     return val - self.q
                 tol = 1e-4 * (self.se_u[j] if np.isfinite(self.se_u[j]) and self.se_u[j] > 0 else 1e-3)
                 lo, hi = sorted((t_prev, t))
-                return brentq(g, lo, hi, xtol=tol, rtol=1e-10)
+                return _roots.root(g, lo, hi, tol)
             t_prev, warm_prev = t, warm
             step *= 2.0
         return sign * math.inf
