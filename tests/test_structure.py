@@ -169,3 +169,39 @@ def test_the_derivation_never_imports_the_test_reference():
         if any(n == "reference" or n.startswith("reference.") for n in names):
             offenders.append(p.name)
     assert not offenders, offenders
+
+
+ROOT_FINDERS = {"brentq", "brenth", "ridder", "bisect", "newton", "toms748", "root_scalar", "fsolve", "root",
+                "minimize_scalar"}
+
+
+def _forbidden_calls(path):
+    """Lines that import a scipy root finder (or minimiser) or call np.gradient: the one root toolkit is
+    jkrcyl/numerics/roots.py, and a slope across grid points is not a stability rule."""
+    hits = []
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.ImportFrom) and (node.module or "").startswith("scipy"):
+            if {a.name for a in node.names} & ROOT_FINDERS:
+                hits.append(node.lineno)
+        elif isinstance(node, ast.Attribute) and (node.attr in ROOT_FINDERS and isinstance(node.value, ast.Name)
+                                                  and node.value.id in {"optimize", "opt"} or node.attr == "gradient"):
+            hits.append(node.lineno)
+    return hits
+
+
+def test_one_root_toolkit_and_no_grid_slopes():
+    offenders = {}
+    for p in _files():
+        rel = p.relative_to(ROOT).as_posix()
+        if rel != "jkrcyl/numerics/roots.py" and (hits := _forbidden_calls(p)):
+            offenders[rel] = hits
+    assert not offenders, f"scipy root finder or np.gradient outside jkrcyl/numerics/roots.py: {offenders}"
+
+
+def test_the_root_check_sees_planted_violations(tmp_path):
+    probe = tmp_path / "probe.py"
+    for text, expected in (("from scipy.optimize import brentq\n", [1]), ("import numpy as np\ny = np.gradient(x)\n", [2]),
+                           ("from scipy import optimize\nx = optimize.minimize_scalar(f)\n", [2]),
+                           ("from scipy.optimize import least_squares\n", [])):
+        probe.write_text(text)
+        assert _forbidden_calls(probe) == expected, text

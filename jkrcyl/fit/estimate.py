@@ -23,7 +23,7 @@ MAX_RESTARTS = 3
 
 
 def fit(P=None, width=None, delta_work=None, *, R, Delta, materials, free=("w", "E"), w=None, offset=0.0,
-        sigma0=None, sigma_P=None, sigma_width=None, sigma_delta_work=None, leg=None, control="load", loss="linear",
+        sigma0=None, law=None, sigma_P=None, sigma_width=None, sigma_delta_work=None, leg=None, control="load", loss="linear",
         f_scale=1.0, interval="profile", confidence=0.95) -> FitResult:
     """Fit the work of adhesion, the moduli, the clearance (and an approach offset) to measured loads.
 
@@ -47,6 +47,9 @@ def fit(P=None, width=None, delta_work=None, *, R, Delta, materials, free=("w", 
         Cohesive strength [Pa] > 0 of the Maugis-Dugdale law (jkrcyl.Contact(..., sigma0=)); None: JKR.  With
         'sigma0' in free it is fitted (in log, confined to lambda in [0.01, 30]: jkrcyl.fit.cohesive), started
         here or, when None, at the best of lambda = 0.3, 1, 3, 10.  Width data only.
+    law : jkrcyl.laws.EdgeLaw, optional
+        The edge law (jkrcyl.laws; None: JKR's Griffith); ``laws.Dugdale(s)`` is ``sigma0=s``.  A law of the
+        Griffith family (its edge a crack: e.g. a subclass of laws.Griffith) is fitted on the superposed states.
     sigma_P, sigma_width, sigma_delta_work : float or array_like, optional
         Standard deviations of the measurements (absolute; they weight the fit and fix the scale of the
         intervals).  None of them: unit weights, the scale estimated from the residuals.
@@ -92,10 +95,10 @@ def fit(P=None, width=None, delta_work=None, *, R, Delta, materials, free=("w", 
     """
     setup = _setup(R, Delta, materials, w, offset, loss, f_scale, interval, confidence)
     R, Delta, w, offset, f_scale, confidence = setup
-    strength = _strength(sigma0)
+    strength, law = _law(R, Delta, materials, sigma0, law)
     free = _names(free)
     data = validate(P, width, delta_work, sigma_P, sigma_width, sigma_delta_work, leg, R=R)
-    spec = Spec(free, data, R, Delta, materials, w, offset, strength)
+    spec = Spec(free, data, R, Delta, materials, w, offset, strength, law)
     problem = Problem(data, spec, R, control)
     _check_counts(problem, spec)
     try:
@@ -118,6 +121,14 @@ def _fit(problem, spec, loss, f_scale, interval, confidence):
             u = better.u
     raise ValueError("w: the fit keeps finding better optima while profiling: the least-squares surface is "
                      "multimodal here; give better starting values (w, Delta, materials)")
+
+
+def _law(R, Delta, materials, sigma0, law):
+    """(sigma0, law): the cohesive strength of the Maugis-Dugdale path (None: the superposed path) and the law of the
+    superposed path (None: JKR), resolved once as jkrcyl.Contact resolves them (sigma0 is laws.Dugdale's shorthand)."""
+    resolved = model.contact(R, Delta, 1.0, materials, _strength(sigma0), law)     # law: an EdgeLaw, given once
+    arguments = resolved.law.arguments()
+    return _strength(arguments.get("sigma0")), arguments.get("law")
 
 
 def _strength(value):
@@ -231,7 +242,7 @@ def _finish(problem, spec, res, scale, loss, f_scale, interval, confidence):
                      sigma=1.0 if problem.sigma_known else math.sqrt(s2) * problem.nominal, confidence=confidence,
                      interval_method=method, loss=loss, control=problem.control, kind=problem.data.kind,
                      n=problem.data.n, materials=spec.fitted_materials(u), Delta=values["Delta"], R=problem.R,
-                     nfev=res.nfev, notes=notes, fixed={k: v for k, v in values.items() if k not in names},
+                     nfev=res.nfev, notes=notes, law=spec.law, fixed={k: v for k, v in values.items() if k not in names},
                      pull_off=pull_offs, _problem=problem, _u=u)
 
 

@@ -34,6 +34,7 @@ class Inputs:
     w: np.ndarray              # [J/m^2] per point
     offset: float              # [m]
     strength: float = None     # [Pa] the cohesive sigma0 (None: JKR)
+    law: object = None         # a jkrcyl.laws.EdgeLaw of the superposed path (None: JKR's Griffith)
 
     @property
     def pair(self):
@@ -42,11 +43,11 @@ class Inputs:
 
     def contact(self, R, w):
         """The library's contact at these inputs and the work of adhesion w [J/m^2] (jkrcyl.fit.model.contact)."""
-        return model.contact(R, self.Delta, float(w), self.pair, self.strength)
+        return model.contact(R, self.Delta, float(w), self.pair, self.strength, self.law)
 
     def superposed(self, R, w):
         """The superposed states of that contact (JKR: jkrcyl.fit.model.Superposed)."""
-        return model.Superposed.of_inputs(R, self.Delta, float(w), self.f, self.materials)
+        return model.Superposed.of_inputs(R, self.Delta, float(w), self.f, self.materials, self.law)
 
 
 def names(free):
@@ -83,7 +84,7 @@ class Spec:
     given); otherwise every state is evaluated directly (jkrcyl.fit.cohesive).
     """
 
-    def __init__(self, free, data, R, Delta, materials, w, offset, strength=None):
+    def __init__(self, free, data, R, Delta, materials, w, offset, strength=None, law=None):
         free = names(free)
         self.names = tuple(n for n in ORDER if n in free)
         self.data, self.materials0, self.n, self.R = data, materials, data.n, R
@@ -99,6 +100,7 @@ class Spec:
                 self.fixed[f"E_{body}"] = E
         self.fixed["w"] = w
         self.fixed["sigma0"] = strength
+        self.law = law                        # the edge law of the superposed path (None: JKR)
         self.superposes = strength is None and "sigma0" not in self.names
         if not self.superposes and data.kind != "width":
             raise ValueError("sigma0: the cohesive law is fitted to load against contact width only (delta_work "
@@ -169,7 +171,8 @@ class Spec:
             w = np.full(self.n, v["w"] if v["w"] is not None else v["w_loading"])
         else:
             w = np.where(self.data.unloading, v["w_unloading"], v["w_loading"])
-        return Inputs(materials=mat, f=f, Delta=v["Delta"], w=w, offset=v["offset"], strength=v["sigma0"])
+        return Inputs(materials=mat, f=f, Delta=v["Delta"], w=w, offset=v["offset"], strength=v["sigma0"],
+                      law=self.law)
 
     def fitted_materials(self, u):
         """The fitted pair (the factor f applied)."""

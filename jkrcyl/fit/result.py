@@ -51,6 +51,7 @@ class FitResult:
     notes: list = field(default_factory=list)
     fixed: dict = field(default_factory=dict)
     pull_off: dict = field(default_factory=dict)    # {w [J/m^2]: fixed-load pull-off force [N/m] or None}
+    law: object = None                              # the edge law of the superposed path (None: JKR)
     _problem: object = field(default=None, repr=False)
     _u: Optional[np.ndarray] = field(default=None, repr=False)
 
@@ -63,7 +64,8 @@ class FitResult:
     def contact(self, leg="loading"):
         """The fitted jkrcyl.Contact (w of the leg when the legs have their own)."""
         w = self.values.get(f"w_{leg}", self.values.get("w", self.fixed.get("w")))
-        return model.contact(self.R, self.Delta, w, self.materials, self.values.get("sigma0", self.fixed.get("sigma0")))
+        return model.contact(self.R, self.Delta, w, self.materials, self.values.get("sigma0", self.fixed.get("sigma0")),
+                             self.law)
 
     def table(self):
         """The result as text: one row per parameter (value, standard error, interval, unit), then the fit."""

@@ -53,7 +53,7 @@ def _grid_refine(problem, spec, u0):
 def _w_of_M(spec, M, f=1.0):
     """w [J/m^2] giving the normalised adhesion M (section 6) at the starting pair (moduli times f) and clearance:
     M is proportional to sqrt(w)."""
-    ref = model.contact(spec.R, spec.fixed["Delta"], 1.0, model.scaled(spec.materials0, f))
+    ref = model.contact(spec.R, spec.fixed["Delta"], 1.0, model.scaled(spec.materials0, f), law=spec.law)
     return (M / ref.M) ** 2
 
 

@@ -191,6 +191,10 @@ class Dugdale(EdgeLaw):
     def __post_init__(self):
         object.__setattr__(self, "sigma0", finite_scalar("sigma0", self.sigma0, low=0.0, low_open=True))
 
+    def arguments(self) -> dict:
+        """``{"sigma0": sigma0}``: the shorthand of this law in jkrcyl.Contact (EdgeLaw.arguments)."""
+        return {"sigma0": self.sigma0}
+
     def check(self, contact: "jkrcyl.Contact") -> None:
         """Reject a contact without adhesion or clearance, or with a strength outside the domain (EdgeLaw.check).
 

@@ -235,6 +235,24 @@ class EdgeLaw:
         ValueError: sigma0: a cohesive law needs w > 0 and Delta > 0 (h0 = w/sigma0, lengths over Delta), ...
         """
 
+    def arguments(self) -> dict:
+        """The keyword arguments of jkrcyl.Contact that make this law: ``{"law": self}``, or a law's shorthand.
+
+        Returns
+        -------
+        dict
+            ``{"law": self}`` (JKR: ``{}``, the default; Dugdale: ``{"sigma0": sigma0}``, its shorthand).
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> jkrcyl.laws.Griffith().arguments()
+        {}
+        >>> jkrcyl.laws.Dugdale(sigma0=5e6).arguments()
+        {'sigma0': 5000000.0}
+        """
+        return {"law": self}
+
     def edge(self, contact: "jkrcyl.Contact") -> Edge:             # pragma: no cover - interface
         """The normalised edge of this law for a contact (Delta > 0): what the model core asks.
 
