@@ -11,6 +11,7 @@ from . import laws
 from .contact import Contact, State
 from .notices import BranchLimitWarning, ValidityWarning
 from .critical import a_crit
+from .laws import CrackKinetics
 from .equilibria import zero_load_contact, zero_load_max_M
 from .materials import Materials
 
@@ -20,7 +21,7 @@ try:
 except PackageNotFoundError:         # running from a source tree that was never installed
     __version__ = "0.1.0"
 
-__all__ = ["__version__", "Contact", "Materials", "State", "ValidityWarning", "BranchLimitWarning", "a_crit", "laws", "fit", "zero_load_contact", "zero_load_max_M"]
+__all__ = ["__version__", "Contact", "Materials", "State", "ValidityWarning", "BranchLimitWarning", "a_crit", "laws", "fit", "zero_load_contact", "zero_load_max_M", "CrackKinetics"]
 
 
 def __getattr__(name):

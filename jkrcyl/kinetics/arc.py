@@ -13,9 +13,8 @@ delta_work then fixes g at every a, so G/w at both edges: the edge equation of j
 Two routes give (X0, X1) and their derivatives in u = log a, for any material pair:
 
 * :class:`DirectArc`: the single-patch solver at each a (closed forms where alpha* = 0, collocation otherwise);
-* :class:`TabulatedArc` (the default): the same states at the nodes of a uniform grid in u (shared between
-  windows and cached per problem), interpolated by cubic Hermite polynomials with the solver's slopes (h and B:
-  fourth-order differences over the nodes): error O(du^4), ~1e-10 at the grid step :data:`DU`.
+* :class:`TabulatedArc` (the default): Chebyshev series of the same states on panels of unit width in
+  s ~ log a (:class:`PanelCache`: shared between windows, cached per problem), ORDER terms each.
 """
 from __future__ import annotations
 
@@ -32,8 +31,8 @@ from ..model.single_patch import solver
 FIELDS = ("p0", "p1", "dn0", "dn1", "dw0", "dw1", "h0", "h1", "B0", "B1")
 P0, P1, DN0, DN1, DW0, DW1, H0, H1, B0, B1 = range(len(FIELDS))
 HELD = {"load": (P0, P1), "grip": (DN0, DN1), "grip-work": (DW0, DW1)}
-DU = 1.0 / 32        # grid step in log a of the tabulated route
-_SLOPED = 6          # the first fields have the solver's own slopes; h and B take differences over the nodes
+PANEL = 1.0          # width of a Chebyshev panel of the tabulated route in s ~ log a
+ORDER = 16           # terms per panel: the series' error ~1e-14 relative
 
 
 def adhesionless(problem: Problem) -> Problem:
@@ -72,16 +71,18 @@ class DirectArc:
         return True
 
 
-class NodeCache:
-    """The arc fields at the nodes s = i DU (i an integer) of one problem, computed once each.
+class PanelCache:
+    """Chebyshev series of the arc fields on the panels [i, i + 1] PANEL of one problem, each computed once.
 
     The grid variable s = log a - log(1 - a/a_crit) is log a for small contacts and stretches the approach to
-    the pole of the load at a_crit (section 4), where the fields vary on the scale a_crit - a."""
+    the pole of the load at a_crit (section 4), where the fields vary on the scale a_crit - a.  Within a panel
+    the series is smooth (an integrator with a high-order error control then takes long steps); between
+    panels the fields jump by the series' error."""
 
     def __init__(self, problem: Problem):
         self.direct = DirectArc(problem)
         self.a_crit = float(self.direct.solver.a_crit)
-        self.values = {}
+        self.panels = {}
 
     def a_of(self, s):
         """The contact parameter at the grid variable s."""
@@ -94,62 +95,75 @@ class NodeCache:
         return u - math.log1p(-x) if x < 1 else math.inf
 
     def window(self, i_lo: int, i_hi: int):
-        """(s, Y, D) over the nodes i_lo..i_hi, D = dY/ds: the solver's slopes, for h and B fourth-order
-        differences over the nodes."""
-        need = [i for i in range(i_lo - 2, i_hi + 3) if i not in self.values]
+        """(C, CD): the series of the fields and of their d/ds on the panels i_lo..i_hi (arrays panel x field x
+        term, in x = 2 (s - s_i)/PANEL - 1)."""
+        need = [i for i in range(i_lo, i_hi + 1) if i not in self.panels]
         if need:
-            a = self.a_of(np.array(need, dtype=float) * DU)
-            Y, D = self.direct.table(a)
-            D *= (1.0 - a / self.a_crit)[:, None]                      # d/du -> d/ds
+            k = np.arange(ORDER)
+            x = np.cos(math.pi * (k + 0.5) / ORDER)                      # Chebyshev points of the first kind
+            s = ((np.array(need)[:, None] + 0.5 * (x[None, :] + 1.0)) * PANEL).ravel()
+            Y, _ = self.direct.table(self.a_of(s))
+            T = np.cos(math.pi * np.outer(k, k + 0.5) / ORDER) * (2.0 / ORDER)
+            T[0] *= 0.5
             for j, i in enumerate(need):
-                self.values[i] = (Y[j], D[j])
-        Y = np.array([self.values[i][0] for i in range(i_lo - 2, i_hi + 3)])
-        D = np.array([self.values[i][1] for i in range(i_lo + 0, i_hi + 1)])
-        D[:, _SLOPED:] = (Y[:-4, _SLOPED:] - 8 * Y[1:-3, _SLOPED:] + 8 * Y[3:-1, _SLOPED:]
-                          - Y[4:, _SLOPED:]) / (12 * DU)
-        s = np.arange(i_lo, i_hi + 1) * DU
-        return s, np.ascontiguousarray(Y[2:-2]), np.ascontiguousarray(D)
+                c = Y[j * ORDER:(j + 1) * ORDER].T @ T.T                   # fields x terms
+                self.panels[i] = (c, _derivative(c) * (2.0 / PANEL))
+        C = np.array([self.panels[i][0] for i in range(i_lo, i_hi + 1)])
+        CD = np.array([self.panels[i][1] for i in range(i_lo, i_hi + 1)])
+        return np.ascontiguousarray(C), np.ascontiguousarray(CD)
+
+
+def _derivative(c):
+    """The Chebyshev coefficients of d/dx of the series c (rows: fields)."""
+    n = c.shape[1]
+    d = np.zeros_like(c)
+    for j in range(n - 2, -1, -1):
+        d[:, j] = (d[:, j + 2] if j + 2 < n else 0.0) + 2 * (j + 1) * c[:, j + 1]
+    d[:, 0] *= 0.5
+    return d
 
 
 @functools.lru_cache(maxsize=16)
-def nodes(problem: Problem) -> NodeCache:
-    return NodeCache(problem)
+def panels(problem: Problem) -> PanelCache:
+    return PanelCache(problem)
 
 
 @njit(cache=True)
-def hermite(u, u_first, du, Y, D):
-    """Cubic Hermite interpolation on the uniform grid u_first + i du of values Y and slopes D (rows: nodes),
-    clamped to the grid: (y, dy/du)."""
-    n = Y.shape[0]
-    x = (u - u_first) / du
-    if x < 0.0:
-        x = 0.0
-    if x > n - 1.0:
-        x = n - 1.0
-    i = min(int(x), n - 2)
-    t = x - i
-    t2, t3 = t * t, t * t * t
-    h00, h10, h01, h11 = 2 * t3 - 3 * t2 + 1, t3 - 2 * t2 + t, -2 * t3 + 3 * t2, t3 - t2
-    d00, d10, d01, d11 = (6 * t2 - 6 * t) / du, 3 * t2 - 4 * t + 1, (-6 * t2 + 6 * t) / du, 3 * t2 - 2 * t
-    y = h00 * Y[i] + h10 * du * D[i] + h01 * Y[i + 1] + h11 * du * D[i + 1]
-    dy = d00 * Y[i] + d10 * D[i] + d01 * Y[i + 1] + d11 * D[i + 1]
+def chebyshev(s, s_first, width, C, CD):
+    """The series C (and CD, their derivatives) on the panels of ``width`` from s_first, at s clamped to them:
+    (y, dy/ds) by Clenshaw's recurrence."""
+    n_panels, n_fields, n = C.shape
+    i = int(math.floor((s - s_first) / width))
+    i = min(max(i, 0), n_panels - 1)
+    x = 2.0 * (s - s_first - i * width) / width - 1.0
+    x = min(max(x, -1.0), 1.0)
+    y, dy = np.empty(n_fields), np.empty(n_fields)
+    for f in range(n_fields):
+        b1, b2, d1, d2 = 0.0, 0.0, 0.0, 0.0
+        for j in range(n - 1, 0, -1):
+            b1, b2 = 2.0 * x * b1 - b2 + C[i, f, j], b1
+            d1, d2 = 2.0 * x * d1 - d2 + CD[i, f, j], d1
+        y[f] = x * b1 - b2 + C[i, f, 0]
+        dy[f] = x * d1 - d2 + CD[i, f, 0]
     return y, dy
 
 
 class TabulatedArc:
-    """(X0, X1) and d/du interpolated over u = log a in [u_lo, u_hi] (extended to whole nodes; below a_crit)."""
+    """(X0, X1) and d/du from Chebyshev panels over u = log a in [u_lo, u_hi] (widened to whole panels; below
+    a_crit)."""
 
     def __init__(self, problem: Problem, u_lo: float, u_hi: float):
         self.problem = problem
-        self.cache = nodes(problem)
+        self.cache = panels(problem)
         s_lo, s_hi = self.cache.s_of(u_lo), self.cache.s_of(u_hi)
         if not math.isfinite(s_hi):
             raise ValueError(f"a must be < a_crit = {self.cache.a_crit!r} for the tabulated arc states, got "
                              f"{math.exp(u_hi)!r}")
-        i_lo, i_hi = math.floor(s_lo / DU), math.ceil(s_hi / DU)
-        self.s, self.Y, self.D = self.cache.window(i_lo, max(i_hi, i_lo + 1))
-        self.s_first = float(self.s[0])
-        self.u_first, self.u_last = (math.log(float(self.cache.a_of(x))) for x in (self.s[0], self.s[-1]))
+        i_lo, i_hi = math.floor(s_lo / PANEL), math.floor(s_hi / PANEL)
+        self.C, self.CD = self.cache.window(i_lo, i_hi)
+        self.s_first = i_lo * PANEL
+        self.u_first = math.log(float(self.cache.a_of(i_lo * PANEL)))
+        self.u_last = math.log(float(self.cache.a_of((i_hi + 1) * PANEL)))
         self.inv_a_crit = 1.0 / self.cache.a_crit
 
     def at(self, u):
@@ -157,7 +171,7 @@ class TabulatedArc:
         x = math.exp(u) * self.inv_a_crit
         if x >= 1.0:
             x = 1.0 - 1e-16
-        y, dy = hermite(u - math.log1p(-x), self.s_first, DU, self.Y, self.D)
+        y, dy = chebyshev(u - math.log1p(-x), self.s_first, PANEL, self.C, self.CD)
         return y, dy / (1.0 - x)
 
     def covers(self, u) -> bool:

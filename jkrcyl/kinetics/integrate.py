@@ -15,8 +15,8 @@ Two changes of variable keep the equation regular:
 
 The work on the pin W = int p d(dw) and the dissipation D = int 2 m^2 (G/w - 1)(-d eps) (kernel energy units,
 4 pi Delta^2/beta*) are integrated alongside.  scipy's LSODA (Adams where the contact runs, BDF where it relaxes
-stiffly onto its equilibrium) with the analytic Jacobian; events (separation, h(pi) = 0, the peak tension, the
-end of the tabulated range, the end of the segment) located on its dense output.
+stiffly onto its equilibrium) with the analytic Jacobian, stepped here; events (separation, h(pi) = 0, the peak
+tension, the end of the tabulated range, the end of the segment) are roots on its dense output.
 """
 from __future__ import annotations
 
@@ -24,8 +24,9 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import solve_ivp
+from scipy.integrate import LSODA
 
+from ..numerics import roots as _roots
 from .arc import B0, B1, DN0, DN1, DW0, DW1, H0, H1, HELD, P0, P1
 
 A_FLOOR = 1e-12        # a/a_ref below which the states are those at the floor (the time left there is negligible)
@@ -113,31 +114,14 @@ class EdgeODE:
         return J
 
     # --- events -------------------------------------------------------------------------------------------
-    def events(self, t_end: float, peak: bool):
-        """The event functions for solve_ivp, in the order of :data:`EVENT_KINDS`."""
-        def separation(s, Y):
-            return Y[1]
-
-        def top_contact(s, Y):
-            _, y, _, g, *_ = self.local(Y[0], Y[1])
-            return y[H0] + g * y[H1]
-
-        def range_end(s, Y):
-            return self.arc.u_last - (self.u_ref + math.log(max(Y[1], self.z_floor)) / self.q)
-
-        def peak_tension(s, Y):
-            if not peak:
-                return 1.0
-            a, y, dy, g, x, V, du_dt, dg_dt = self.local(Y[0], Y[1])
-            return (dy[P0] + g * dy[P1]) * du_dt + y[P1] * dg_dt
-
-        def segment_end(s, Y):
-            return Y[0] - t_end
-
-        out = [separation, top_contact, range_end, peak_tension, segment_end]
-        for f, terminal, direction in zip(out, (True, True, True, False, True), (-1, -1, -1, 1, 1)):
-            f.terminal, f.direction = terminal, direction
-        return out
+    def watch(self, Y, t_end: float, peak: bool):
+        """The event functions at a state, in the order of :data:`EVENT_KINDS`: z (separation), h(pi)/Delta,
+        the distance to the end of the tabulated range, dp/dt (the peak tension; 1 unless watched), t - t_end."""
+        t, z = Y[0], Y[1]
+        a, y, dy, g, x, V, du_dt, dg_dt = self.local(t, z)
+        dp = (dy[P0] + g * dy[P1]) * du_dt + y[P1] * dg_dt if peak else 1.0
+        u = self.u_ref + math.log(max(z, self.z_floor)) / self.q
+        return np.array([z, y[H0] + g * y[H1], self.arc.u_last - u, dp, t - t_end])
 
     # --- the record of states ---------------------------------------------------------------------------------
     def record(self, Y, held):
@@ -159,23 +143,49 @@ class EdgeODE:
         return t, p, dn, dw, eps, x, V, h, Y[2], Y[3], total
 
 
-def segment(ode: EdgeODE, drive: Linear, t1: float, Y0, rtol=RTOL, peak=False):
-    """Integrate from Y0 = (t0, z, W, D) to t1 under a linear drive: (solve_ivp's result in the arclength s,
-    the events [(kind, s, Y)] in order, the terminal kind or '')."""
+#: the direction in which each event function crosses zero, and whether the event ends the segment
+DIRECTION = np.array([-1, -1, -1, 1, 1])
+TERMINAL = np.array([True, True, True, False, True])
+
+
+def segment(ode: EdgeODE, drive: Linear, t1: float, Y0, rtol=RTOL, peak=False, dense=False):
+    """Integrate from Y0 = (t0, z, W, D) to t1 under a linear drive.  Returns (steps, events, terminal):
+    steps [(s, Y, dense output or None)] after the start, events [(kind, s, Y)] in order, the terminal kind
+    ('' at t1).  Events are roots of :meth:`EdgeODE.watch` on the step's dense output (Brent, to adjacent
+    doubles in s)."""
     t0 = float(Y0[0])
     ode.start(drive, t1 - t0)
     e = rtol * ATOL_ENERGY * ode.energy_atol
     atol = np.array([rtol * max(abs(t0), abs(t1)) * 1e-3, rtol * 1e-4, e, e])
-    span = (t1 - t0) * 2.0 + 20.0 / ode.F_ref * (1.0 + abs(math.log(max(Y0[1], ode.z_floor))))
-    sol = solve_ivp(ode.fun, (0.0, span), np.asarray(Y0, dtype=float), method="LSODA", jac=ode.jac, rtol=rtol,
-                    atol=atol, events=ode.events(t1, peak), dense_output=True, first_step=FIRST_STEP * span)
-    if sol.status < 0:
-        raise ArithmeticError(f"kinetics: the integrator failed at t = {sol.y[0, -1]!r} s: {sol.message}")
-    found = []
-    for kind, ss, ys in zip(EVENT_KINDS, sol.t_events, sol.y_events):
-        found += [(kind, float(s), np.array(y)) for s, y in zip(ss, ys)]
-    found.sort(key=lambda e: e[1])
-    terminal = found[-1][0] if sol.status == 1 and found and found[-1][0] != "segment-end" else ""
-    if sol.status == 0:
-        raise ArithmeticError(f"kinetics: the arclength span ended at t = {sol.y[0, -1]!r} s before t1 = {t1!r}")
-    return sol, found, terminal
+    z_max = math.exp(ode.q * (ode.arc.u_last - ode.u_ref))         # the arclength is t plus the path of z/F_ref
+    span = 2.0 * (t1 - t0) + 4.0 * (Y0[1] + z_max) / ode.F_ref
+    solver = LSODA(ode.fun, 0.0, np.asarray(Y0, dtype=float), span, rtol=rtol, atol=atol, jac=ode.jac,
+                   first_step=FIRST_STEP * span)
+    before = ode.watch(solver.y, t1, peak)
+    steps, events = [], []
+    while True:
+        s_old = solver.t
+        solver.step()
+        if solver.status == "failed":
+            raise ArithmeticError(f"kinetics: the integrator failed at t = {solver.y[0]!r} s")
+        after = ode.watch(solver.y, t1, peak)
+        crossed = np.nonzero((np.sign(before) != np.sign(after)) & (DIRECTION * (after - before) > 0))[0]
+        out = solver.dense_output() if (dense or crossed.size) else None
+        roots = sorted((_root(ode, out, k, s_old, solver.t, before[k], after[k], t1, peak), k) for k in crossed)
+        for s, k in roots:
+            Y = out(s)
+            if EVENT_KINDS[k] == "segment-end":
+                Y[0] = t1                                  # the end of the drive, exactly
+            events.append((EVENT_KINDS[k], s, Y))
+            if TERMINAL[k]:
+                steps.append((s, Y, out))
+                return steps, events, "" if EVENT_KINDS[k] == "segment-end" else EVENT_KINDS[k]
+        steps.append((solver.t, solver.y.copy(), out))
+        if solver.status == "finished":
+            raise ArithmeticError(f"kinetics: the arclength span ended at t = {solver.y[0]!r} s before {t1!r}")
+        before = after
+
+
+def _root(ode, out, k, lo, hi, f_lo, f_hi, t_end, peak):
+    """The arclength where event k crosses zero between two steps."""
+    return _roots.brent(lambda s, _: ode.watch(out(s), t_end, peak)[k], lo, hi, (), f_lo, f_hi)

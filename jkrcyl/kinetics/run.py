@@ -86,9 +86,9 @@ class Run:
         t0, x1 = float(self.Y[0]), self.to_kernel(target)
         slope = (x1 - self.held) / (t1 - t0)
         drive = _int.Linear(t0, self.held, slope)
-        sol, found, terminal = _int.segment(self.ode, drive, t1, self.Y, self.rtol, peak)
-        pts = [(sol.t[i], 1, sol.y[:, i], None) for i in range(1, sol.t.size)]
-        pts += [(s, 1, Y, None) for s, Y in _at_times(sol, times)] if times is not None else []
+        steps, found, terminal = _int.segment(self.ode, drive, t1, self.Y, self.rtol, peak, times is not None)
+        pts = [(s, 1, Y, None) for s, Y, _ in steps]
+        pts += [(s, 1, Y, None) for s, Y in _at_times(steps, t0, times)] if times is not None else []
         pts += [(s, 0, Y, kind) for kind, s, Y in found if kind != "segment-end"]
         last = None
         for s, _, Y, kind in sorted(pts, key=lambda e: (e[0], e[1])):
@@ -102,7 +102,7 @@ class Run:
             self.held_at.append(drive.value(float(Y[0])))
             if kind is not None:
                 self.events.append((kind, len(self.rows) - 1, drive))
-        self.Y = np.array(sol.y[:, -1])
+        self.Y = np.array(steps[-1][1])
         self.held = drive.value(float(self.Y[0])) if terminal else x1
         return terminal
 
@@ -122,19 +122,20 @@ class Run:
         return History(**{**hist.__dict__, "events": events})
 
 
-def _at_times(sol, times):
-    """[(s, state)] at the instants ``times`` inside the segment: t(s) is increasing, so each s is found by
-    bisection on the dense output (60 halvings: to the last bit of s)."""
-    t_steps, times = sol.y[0], np.asarray(times, dtype=float)
-    inside = times[(times > t_steps[0]) & (times <= t_steps[-1])]
-    if inside.size == 0:
-        return []
-    j = np.clip(np.searchsorted(t_steps, inside), 1, t_steps.size - 1)
-    lo, hi = sol.t[j - 1].copy(), sol.t[j].copy()
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        below = sol.sol(mid)[0] < inside
-        lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
-    Y = sol.sol(hi)
-    Y[0] = inside
-    return [(hi[i], Y[:, i]) for i in range(inside.size)]
+def _at_times(steps, t0, times):
+    """[(s, state)] at the instants ``times`` inside the segment: t(s) increases, so each s is found by bisection
+    on the dense output of its step (60 halvings: to the last bit of s)."""
+    t_steps = np.array([t0] + [Y[0] for _, Y, _ in steps])
+    times = np.asarray(times, dtype=float)
+    out = []
+    for tq in times[(times > t_steps[0]) & (times < t_steps[-1])]:
+        j = int(np.searchsorted(t_steps, tq))               # the step ending at or after tq
+        s_hi, _, dense = steps[j - 1]
+        lo, hi = dense.t_old, s_hi
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if dense(mid)[0] < tq else (lo, mid)
+        Y = dense(hi)
+        Y[0] = tq
+        out.append((hi, Y))
+    return out

@@ -193,3 +193,23 @@ def kinetics_of(law, what: str = "rate") -> Kinetic:
     raise ValueError(f"{what}: a rate-dependent answer needs crack kinetics at the contact edges, e.g. "
                      f"Contact(..., kinetics=jkrcyl.CrackKinetics(v_star=..., n=...)); this contact's law is "
                      f"{law.name} (quasi-static: leave {what} out)")
+
+
+def kinetics_or_none(law) -> Optional[Kinetic]:
+    """The law if it has crack kinetics, else None (what Contact.kinetics reads)."""
+    return law if isinstance(law, Kinetic) else None
+
+
+def law_with(kinetics, law, sigma0):
+    """The contact's law= from its shorthand kinetics= (both given: they must agree; not with sigma0: the
+    cohesive law with kinetics is not modelled)."""
+    if kinetics is None:
+        return law
+    if not isinstance(kinetics, Kinetic):
+        raise ValueError(f"kinetics must be a jkrcyl.laws.Kinetic, e.g. jkrcyl.CrackKinetics(v_star=1e-6, n=0.6), "
+                         f"got {kinetics!r}")
+    if sigma0 is not None:
+        raise ValueError("kinetics: crack kinetics with the cohesive law (sigma0) are not modelled")
+    if law is not None and law != kinetics:
+        raise ValueError(f"kinetics: give the law once (kinetics={kinetics!r}, law={law!r})")
+    return kinetics
