@@ -88,9 +88,7 @@ def respond(contact, t, P=None, delta_work=None, delta=None, route: str = "table
     start, why = rest_start(contact, control, float(x[0]))
     if start is None:
         raise ValueError(f"{name}: {why}")
-    run = Run(contact, control, start, _largest_contact(contact, control, start, x.max()), route, rtol)
-    run.Y[0] = t[0]
-    run.ode.drive = None
+    run = Run(contact, control, start, _largest_contact(contact, control, start, x.max()), route, rtol, t[0])
     for k in _corners(t, x)[1:]:
         if run.drive(float(t[k]), float(x[k]), peak=control != "load", times=t):
             break

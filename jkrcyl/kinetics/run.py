@@ -50,7 +50,8 @@ def rest_start(contact, control: str, held=None):
 class Run:
     """One contact driven under one control from an equilibrium at rest (kernel units inside, SI outside)."""
 
-    def __init__(self, contact, control: str, start, a_max: float, route: str = "table", rtol: float = None):
+    def __init__(self, contact, control: str, start, a_max: float, route: str = "table", rtol: float = None,
+                 t0: float = 0.0):
         self.law = kinetics_of(contact.law)
         self.contact, self.control = contact, control
         pb = self.problem = contact.problem
@@ -64,10 +65,10 @@ class Run:
             hi = min(GROWTH * a_max, 0.5 * (a_max + float(DirectArc(pb).solver.a_crit)))
             arc = TabulatedArc(pb, math.log(a0 * _int.A_FLOOR), math.log(hi))
         self.ode = _int.EdgeODE(pb, self.law, contact.R, control, arc, a0)
-        self.Y = np.array([0.0, 1.0, 0.0, 0.0])              # (t, z, W, D): at rest, t = 0
+        self.Y = np.array([t0, 1.0, 0.0, 0.0])               # (t, z, W, D): at rest at t0
         self.held = self.to_kernel(start.held(control))
         self.rows, self.held_at, self.events, self.note = [self.Y.copy()], [self.held], [], ""
-        self.ode.start(_int.Linear(0.0, self.held, 0.0), 1.0)
+        self.ode.start(_int.Linear(t0, self.held, 0.0), 1.0)
 
     # --- units --------------------------------------------------------------------------------------------
     @property

@@ -14,7 +14,9 @@ without a rate, the state) is JKR's, bit for bit.  Time histories (pull_off, res
 jkrcyl.kinetics.
 
 Inverted for the speed, with x = G/w:  v = phi^-1(x - 1) opening (x > 1), v = phi^-1(1/x - 1) closing
-(0 < x < 1), unbounded as x -> 0 (an edge without tension closes at once).
+(0 < x < 1), unbounded as x -> 0 (an edge without tension closes at once).  Within |x - 1| < X_REST = 1e-9 of
+rest the speed is taken linear in x (the chord to x = 1 +- X_REST): for n > 1 the law's own v ~ |x - 1|^(1/n)
+has an unbounded slope at rest, on which an implicit integrator chatters; the change of G is below 1e-9 w.
 """
 from __future__ import annotations
 
@@ -28,6 +30,7 @@ from .griffith import Griffith
 
 N_MAX = 2.0                 # 0 < n <= 2: the exponents reported for elastomers lie in 0.1 ... 0.8
 X_CLOSE = 1e-4              # G/w below which a closing edge's speed is continued linearly (far beyond any test)
+X_REST = 1e-9               # |G/w - 1| within which the speed is linear in G/w (module docstring)
 _GAS_CONSTANT = 8.314462618  # J/(mol K)
 
 
@@ -149,27 +152,32 @@ class Kinetic(Griffith):
 
     def speed(self, x: float) -> float:
         """The crack speed [m/s] at G/w = x: positive opening (x > 1, the contact recedes), negative closing
-        (x < 1, it advances), continued linearly below x = X_CLOSE (a closing edge without tension moves at once:
-        the continuation only keeps an implicit integrator's trial points finite)."""
-        if x >= 1.0:
+        (x < 1, it advances); linear within X_REST of rest; continued linearly below x = X_CLOSE (a closing edge
+        without tension moves at once: the continuation only keeps an implicit integrator's trial points
+        finite)."""
+        if x >= 1.0 + X_REST:
+            if self.phi is None:
+                return self.reference_speed * (x - 1.0) ** (1.0 / self.n)
             return self._phi_inverse(x - 1.0)
+        if x > 1.0 - X_REST:
+            return (x - 1.0) / X_REST * self.speed(1.0 + X_REST if x >= 1.0 else 1.0 - X_REST) * (
+                1.0 if x >= 1.0 else -1.0)
         if x >= X_CLOSE:
             return -self._phi_inverse(1.0 / x - 1.0)
         return self.speed(X_CLOSE) + self.speed_slope(X_CLOSE) * (x - X_CLOSE)
 
-    def speed_slope(self, x: float, floor: float = 1e-9) -> float:
-        """d(speed)/dx [m/s]: analytic for the power law, a difference quotient for a user phi; |x - 1| is held
-        above ``floor`` (for n > 1 the slope is unbounded at rest: the integrator's Jacobian only needs a bound)."""
+    def speed_slope(self, x: float) -> float:
+        """d(speed)/dx [m/s]: analytic for the power law, a difference quotient for a user phi."""
         if x < X_CLOSE:
             x = X_CLOSE
-        if abs(x - 1.0) < floor:
-            x = 1.0 + math.copysign(floor, x - 1.0 if x != 1.0 else 1.0)
+        if abs(x - 1.0) < X_REST:
+            return abs(self.speed(1.0 + X_REST if x >= 1.0 else 1.0 - X_REST)) / X_REST
         if self.phi is None:
             v0, k = self.reference_speed, 1.0 / self.n
             if x > 1.0:
                 return v0 * k * (x - 1.0) ** (k - 1.0)
             return v0 * k * (1.0 / x - 1.0) ** (k - 1.0) / (x * x)
-        h = 1e-6 * max(abs(x - 1.0), floor)
+        h = 1e-6 * abs(x - 1.0)
         return (self.speed(x + h) - self.speed(x - h)) / (2 * h)
 
 
