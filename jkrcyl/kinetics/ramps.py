@@ -19,8 +19,8 @@ from .results import RateCycle, RatePullOff
 from .run import Run, rest_start
 
 MAX_RAMPS = 40             # a pull-off ramp is extended by factors of 4 at most this often
-MAX_LOOPS = 30             # cycles driven at most until the loop repeats
-LOOP_REPEATS = 1e-9        # relative change of the contact at the top of the cycle that counts as a repeat
+MAX_LOOPS = 60             # cycles driven at most until the loop repeats
+LOOP_REPEATS = 1e-6        # relative change of the loop's work from one cycle to the next that counts as a repeat
 HELD_NAME = {"load": "P", "grip": "delta", "grip-work": "delta_work"}
 
 
@@ -125,34 +125,42 @@ def cycle(contact, control, hi, lo, rate, n=2000, route="table", rtol=None) -> R
     if not lo < x0 < hi:
         raise ValueError(f"{HELD_NAME[control]}: the cycle must contain the start at rest, {lo!r} < {x0!r} < {hi!r}")
     run = Run(contact, control, start, _largest_contact(contact, control, start, hi), route, rtol)
-    legs, tops, end, leg = [0], [], "", 0
+    legs, tops, loops, end, repeated = [0], [], [], "", False
     t, x = 0.0, x0
     for k in range(2 * MAX_LOOPS + 1):
         target = hi if k % 2 == 0 else lo
         t += abs(target - x) / rate
         x = target
-        end = run.drive(t, target, peak=control != "load")
+        end = run.drive(t, target, peak=control != "load", energy=True)
         legs.append(len(run.rows) - 1)
         if end:
             break
         if k % 2 == 0:
             tops.append(len(run.rows) - 1)
-            z = [run.rows[i][1] for i in tops[-2:]]
-            if len(z) == 2 and abs(z[1] - z[0]) <= LOOP_REPEATS * z[1]:
+            if len(tops) >= 2:
+                loops.append(_loop_work(run, tops[-2], tops[-1]))
+            if len(loops) >= 2 and abs(loops[-1] - loops[-2]) <= LOOP_REPEATS * abs(loops[-1]):
+                repeated = True
                 break
     hist = run.history()
-    closed = not end and len(tops) >= 2
     energy = edge = None
-    if closed:
+    if len(tops) >= 2 and not end:
         i, j = tops[-2], tops[-1]
         energy, edge = float(hist.work[j] - hist.work[i]), float(hist.dissipated[j] - hist.dissipated[i])
     leg_of = np.searchsorted(np.array(legs[1:]), np.arange(len(hist.t)), side="left")
     keep = np.unique(np.linspace(0, len(hist.t) - 1, min(n, len(hist.t))).astype(int))
-    note = "" if closed else (f"{end}: the single patch ended at t = {hist.t[-1]:.6g} s" if end
-                              else f"the loop did not repeat within {MAX_LOOPS} cycles")
+    note = "" if repeated else (f"{end}: the single patch ended at t = {hist.t[-1]:.6g} s" if end else
+                                f"the loop's work still changed by {abs(loops[-1] / loops[-2] - 1):.2g} per cycle "
+                                f"after {MAX_LOOPS} cycles (dissipated: the last loop's)")
     a = np.tan(hist.eps / 2)
     return RateCycle(control=control, P=hist.P[keep], delta=hist.delta[keep], branch=np.full(keep.size, "kinetic"),
                      a=a[keep], stable=np.zeros(keep.size, bool), leg=leg_of[keep], jumps=[], dissipated=energy,
-                     closed_from_leg=(len(legs) - 3) if closed else None, delta_work=hist.delta_work[keep],
+                     closed_from_leg=(len(legs) - 3) if repeated else None, delta_work=hist.delta_work[keep],
                      note=note, limits=(lo, hi), rate=rate, frequency=rate / (2 * (hi - lo)), history=hist,
                      edge_dissipation=edge)
+
+
+def _loop_work(run, i, j):
+    """int P d(delta_work) between recorded rows i and j (kernel units: the History's work column there)."""
+    W = run.ode.record(np.array([run.rows[i], run.rows[j]]).T, np.array([run.held_at[i], run.held_at[j]]))[8]
+    return float(W[1] - W[0])

@@ -44,9 +44,11 @@ class RateCycle(Cycle):
     ``rate`` (N/m/s or m/s), from the zero-load contact at rest, until the loop repeats.
 
     The path (P, delta, delta_work, a, leg) is the history's, thinned; there are no jumps (the edges move
-    at finite speed); dissipated [J/m]: int P d(delta_work) round the last loop, which equals the energy the
-    edges dissipated over it (int (G - w) over the crack advance) once the loop repeats; None if an event
-    ended the single patch first (note says which).  frequency [Hz] of the steady loop; history: the record.
+    at finite speed); dissipated [J/m]: int P d(delta_work) round the last loop (top to top), which equals the
+    energy the edges dissipated over it (edge_dissipation, int (G - w) over the crack advance) once the loop
+    repeats; closed_from_leg: the first leg of that loop where it repeated (to jkrcyl.kinetics.ramps.LOOP_REPEATS),
+    None if not (note says why); dissipated None if an event ended the single patch first.  frequency [Hz] of
+    the loop (rate over twice the held range); history: the record.
     """
 
     rate: Optional[float] = None

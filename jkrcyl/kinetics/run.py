@@ -80,14 +80,15 @@ class Run:
         return value / self.unit
 
     # --- driving --------------------------------------------------------------------------------------------
-    def drive(self, t1: float, target: float, peak: bool = False, times=None) -> str:
+    def drive(self, t1: float, target: float, peak: bool = False, times=None, energy: bool = False) -> str:
         """Move the held quantity linearly from its present value to ``target`` (SI) at t1 [s]: the terminal
         event's kind, or '' (the drive reached t1).  ``times``: instants in (t, t1] to record besides the
-        integrator's own steps."""
+        integrator's own steps; ``energy``: the work and dissipation under the integrator's error control."""
         t0, x1 = float(self.Y[0]), self.to_kernel(target)
         slope = (x1 - self.held) / (t1 - t0)
         drive = _int.Linear(t0, self.held, slope)
-        steps, found, terminal = _int.segment(self.ode, drive, t1, self.Y, self.rtol, peak, times is not None)
+        steps, found, terminal = _int.segment(self.ode, drive, t1, self.Y, self.rtol, peak, times is not None,
+                                               energy)
         pts = [(s, 1, Y, None) for s, Y, _ in steps]
         pts += [(s, 1, Y, None) for s, Y in _at_times(steps, t0, times)] if times is not None else []
         pts += [(s, 0, Y, kind) for kind, s, Y in found if kind != "segment-end"]
@@ -112,6 +113,7 @@ class Run:
         un, ode = self.units, self.ode
         Y = np.array(self.rows).T
         t, p, dn, dw, eps, x, V, h, W, D, total = ode.record(Y, np.array(self.held_at))
+        W = W - W[0]                                       # the work since the start
         w = self.contact.law.edge_work(self.contact.w)
         P = p * self.units.load_scale / self.problem.scale
         hist = History(control=self.control, t=t, P=P, delta=dn * un.Delta, delta_work=dw * un.Delta, eps=eps,

@@ -14,9 +14,10 @@ without a rate, the state) is JKR's, bit for bit.  Time histories (pull_off, res
 jkrcyl.kinetics.
 
 Inverted for the speed, with x = G/w:  v = phi^-1(x - 1) opening (x > 1), v = phi^-1(1/x - 1) closing
-(0 < x < 1), unbounded as x -> 0 (an edge without tension closes at once).  Within |x - 1| < X_REST = 1e-9 of
-rest the speed is taken linear in x (the chord to x = 1 +- X_REST): for n > 1 the law's own v ~ |x - 1|^(1/n)
-has an unbounded slope at rest, on which an implicit integrator chatters; the change of G is below 1e-9 w.
+(0 < x < 1), unbounded as x -> 0 (an edge without tension closes at once).  For n > 1 the law's own
+v ~ |x - 1|^(1/n) has an unbounded slope at rest, on which an implicit integrator chatters: within
+X_REST = 1e-9 of rest it is smoothed, v* f (f^2 + X_REST^2)^((1/n - 1)/2) with f = phi(|v|) signed (a user phi:
+the chord to rest), a change of G below 1e-9 w.
 """
 from __future__ import annotations
 
@@ -150,34 +151,43 @@ class Kinetic(Griffith):
         lo = 0.0
         return _roots.brent(lambda v, _: self.phi_of(v) - f, lo, hi, (), -f, self.phi_of(hi) - f)
 
+    def _power(self, f: float) -> float:
+        """v_ref sign(f) |f|^(1/n), for n > 1 smoothed within X_REST of rest: v_ref f (f^2 + X_REST^2)^((1/n - 1)/2)."""
+        k = 1.0 / self.n
+        if k >= 1.0:
+            return self.reference_speed * math.copysign(abs(f) ** k, f)
+        return self.reference_speed * f * (f * f + X_REST * X_REST) ** (0.5 * (k - 1.0))
+
+    def _power_slope(self, f: float) -> float:
+        k = 1.0 / self.n
+        if k >= 1.0:
+            return self.reference_speed * (1.0 if k == 1.0 else k * abs(f) ** (k - 1.0))
+        q = f * f + X_REST * X_REST
+        return self.reference_speed * q ** (0.5 * (k - 3.0)) * (k * f * f + X_REST * X_REST)
+
     def speed(self, x: float) -> float:
         """The crack speed [m/s] at G/w = x: positive opening (x > 1, the contact recedes), negative closing
-        (x < 1, it advances); linear within X_REST of rest; continued linearly below x = X_CLOSE (a closing edge
-        without tension moves at once: the continuation only keeps an implicit integrator's trial points
-        finite)."""
-        if x >= 1.0 + X_REST:
-            if self.phi is None:
-                return self.reference_speed * (x - 1.0) ** (1.0 / self.n)
-            return self._phi_inverse(x - 1.0)
-        if x > 1.0 - X_REST:
-            return (x - 1.0) / X_REST * self.speed(1.0 + X_REST if x >= 1.0 else 1.0 - X_REST) * (
-                1.0 if x >= 1.0 else -1.0)
-        if x >= X_CLOSE:
-            return -self._phi_inverse(1.0 / x - 1.0)
-        return self.speed(X_CLOSE) + self.speed_slope(X_CLOSE) * (x - X_CLOSE)
+        (x < 1, it advances); continued linearly below x = X_CLOSE (a closing edge without tension moves at
+        once: the continuation only keeps an implicit integrator's trial points finite)."""
+        if x < X_CLOSE:
+            return self.speed(X_CLOSE) + self.speed_slope(X_CLOSE) * (x - X_CLOSE)
+        f = x - 1.0 if x >= 1.0 else 1.0 - 1.0 / x            # phi(|v|) at this x, signed as v
+        if self.phi is None:
+            return self._power(f)
+        if self.n > 1.0 and abs(f) < X_REST:                 # the chord to rest (module docstring)
+            return f / X_REST * self._phi_inverse(X_REST)
+        return math.copysign(self._phi_inverse(abs(f)), f)
 
     def speed_slope(self, x: float) -> float:
         """d(speed)/dx [m/s]: analytic for the power law, a difference quotient for a user phi."""
         if x < X_CLOSE:
             x = X_CLOSE
-        if abs(x - 1.0) < X_REST:
-            return abs(self.speed(1.0 + X_REST if x >= 1.0 else 1.0 - X_REST)) / X_REST
+        f, df_dx = (x - 1.0, 1.0) if x >= 1.0 else (1.0 - 1.0 / x, 1.0 / (x * x))
         if self.phi is None:
-            v0, k = self.reference_speed, 1.0 / self.n
-            if x > 1.0:
-                return v0 * k * (x - 1.0) ** (k - 1.0)
-            return v0 * k * (1.0 / x - 1.0) ** (k - 1.0) / (x * x)
-        h = 1e-6 * abs(x - 1.0)
+            return self._power_slope(f) * df_dx
+        if self.n > 1.0 and abs(f) < X_REST:
+            return self._phi_inverse(X_REST) / X_REST * df_dx
+        h = 1e-6 * max(abs(x - 1.0), X_REST)
         return (self.speed(x + h) - self.speed(x - h)) / (2 * h)
 
 
