@@ -4,14 +4,13 @@ Both edges of the bottom patch move at the crack speed V(G/w) of the law (jkrcyl
 opening), so d eps/dt = -V/R, with G/w = g|g| and g = (X(t) - X0(a))/X1(a) fixed by the held quantity X(t)
 (p, delta/Delta or delta_work/Delta; jkrcyl.kinetics.arc).
 
-Two changes of variable keep the equation regular:
+Two devices keep the equation regular:
 
 * the contact vanishes in finite time: near separation G ~ X^2/a and V ~ a^(-1/n) (power law), so a^(1 + 1/n)
   falls at a finite rate, and the state variable is z = (a/a_ref)^q, q = 1 + 1/n (separation: z = 0, an event);
 * past a fold of the quasi-static branch the edges run away in a time that may be far below the resolution of t
-  (v* -> inf: the quasi-static limit), so the independent variable is an arclength s with
-  dt/ds = 1/N, dz/ds = F/N, N = 1 + |F|/F_ref (F = dz/dt, F_ref the drive's own rate of z): s is t where the
-  contact follows the drive and z where it runs away.
+  (v* -> inf: the quasi-static limit): where |dz/dt| exceeds RUNAWAY times the drive's own rate of z, the
+  integration restarts with its time origin there, so that the run-away is resolved in the offset from it.
 
 The work on the pin W = int p d(dw) and the dissipation D = int 2 m^2 (G/w - 1)(-d eps) (kernel energy units,
 4 pi Delta^2/beta*) are integrated alongside, W by parts so that its integrand holds no rate of the state (which
@@ -19,11 +18,12 @@ is rounding noise where the contact tracks its equilibrium): W = Q + B(t) - B(t_
 B = X dw under load (X = p), dQ/dt = p dX/dt with B = 0 under grip-work (X = dw) and B = c p^2/2 under grip
 (X = dn, dw = dn + c p).  scipy's LSODA (Adams where the contact runs, BDF where it relaxes
 stiffly onto its equilibrium) with the analytic Jacobian, stepped here; events (separation, h(pi) = 0, the peak
-tension, the end of the tabulated range, the end of the segment) are roots on its dense output.
+tension, the end of the tabulated range, the run-away) are roots on its dense output.
 """
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -33,12 +33,16 @@ from ..numerics import roots as _roots
 from .arc import B0, B1, DN0, DN1, DW0, DW1, H0, H1, HELD, P0, P1
 
 A_FLOOR = 1e-12        # a/a_ref below which the states are those at the floor (the time left there is negligible)
+RUNAWAY = 1e3          # |dz/dt| over the drive's rate F_ref at which the integration restarts its time origin
 RTOL = 1e-10           # default relative tolerance of the integrator
-FIRST_STEP = 1e-12     # of the arclength span: LSODA restarts mid-way on a stiff slow manifold from a tiny step
+RTOL_MAX = 1e-7        # where the contact tracks its equilibrium within G/w - 1 ~ 1e-8 and below, that difference
+#                        is rounding noise (a cancellation of held and equilibrium values) and the implicit solve
+#                        cannot meet a tight tolerance: it is relaxed, tenfold at a time, up to this
+FIRST_STEP = 1e-12     # of the segment: LSODA restarts mid-way on a stiff slow manifold from a tiny step
 ATOL_ENERGY = 1e-4     # of rtol times the adhesion energy of the reference contact: the error control of Q, D
 #                        where asked for (cycles: the loop's energy is the answer; where the contact tracks its
 #                        equilibrium stiffly that control costs many steps, so pull-offs go without)
-EVENT_KINDS = ("separation", "top-contact", "range-end", "peak-tension", "segment-end")
+EVENT_KINDS = ("separation", "top-contact", "range-end", "peak-tension", "runaway")
 
 
 @dataclass(frozen=True)
@@ -66,7 +70,7 @@ class EdgeODE:
         self.c = problem.work_shift
         self.x1_ref = abs(arc.at(self.u_ref)[0][self.i1])     # the adhesive scale of the held quantity
         self.energy_atol = self.m2 * a_ref                    # the adhesion energy of the reference contact
-        self.drive, self.F_ref = None, 1.0
+        self.drive, self.F_ref, self.t_origin, self.relaxed = None, 1.0, 0.0, 0.0
 
     def start(self, drive: Linear, duration: float):
         """Set the drive of a segment and the rate F_ref of z it imposes (or 1/duration for a hold)."""
@@ -89,43 +93,37 @@ class EdgeODE:
         dg_dt = (self.drive.slope - (dy[i0] + g * dy[i1]) * du_dt) / y[i1]
         return a, y, dy, g, x, V, du_dt, dg_dt
 
-    def fun(self, s, Y):
-        """d(t, z, Q, D)/ds."""
-        t, z = Y[0], max(Y[1], self.z_floor)
+    def fun(self, tau, Y):
+        """d(z, Q, D)/dtau at t = t_origin + tau."""
+        t, z = self.t_origin + tau, max(Y[0], self.z_floor)
         a, y, dy, g, x, V, du_dt, dg_dt = self.local(t, z)
-        F = self.q * z * du_dt
-        N = 1.0 + abs(F) / self.F_ref
         held = y[DW0] + g * y[DW1] if self.control == "load" else -(y[P0] + g * y[P1])
-        return np.array([1.0, F, -held * self.drive.slope, 2.0 * self.m2 * (x - 1.0) * V / self.R]) / N
+        return np.array([self.q * z * du_dt, -held * self.drive.slope, 2.0 * self.m2 * (x - 1.0) * V / self.R])
 
-    def jac(self, s, Y):
-        """d(fun)/d(t, z, Q, D): exact in (t, z); Q and D do not feed back, and their rows are left 0 (Newton's
-        iteration on them then converges with that on z)."""
-        t, z = Y[0], max(Y[1], self.z_floor)
+    def jac(self, tau, Y):
+        """d(fun)/d(z, Q, D): exact in z; Q and D do not feed back, and their rows are left 0 (Newton's iteration
+        on them then converges with that on z)."""
+        t, z = self.t_origin + tau, max(Y[0], self.z_floor)
         a, y, dy, g, x, V, du_dt, _ = self.local(t, z)
         i0, i1 = self.i0, self.i1
-        F = self.q * z * du_dt
         geo = (1.0 + a * a) / (2.0 * a)
-        dV_dx = self.law.speed_slope(x)
         dx_du = 2.0 * abs(g) * (-(dy[i0] + g * dy[i1]) / y[i1])
-        F_z = self.q * du_dt + (a * a - 1.0) / (2.0 * a) * (-V / self.R) - geo * dV_dx / self.R * dx_du
-        F_t = -self.q * z * geo * dV_dx / self.R * 2.0 * abs(g) * self.drive.slope / y[i1]
-        N = 1.0 + abs(F) / self.F_ref
-        sg = math.copysign(1.0, F) / self.F_ref
-        J = np.zeros((4, 4))
-        J[0, 0], J[0, 1] = -sg * F_t / (N * N), -sg * F_z / (N * N)
-        J[1, 0], J[1, 1] = F_t / (N * N), F_z / (N * N)
+        J = np.zeros((3, 3))
+        J[0, 0] = (self.q * du_dt + (a * a - 1.0) / (2.0 * a) * (-V / self.R)
+                   - geo * self.law.speed_slope(x) / self.R * dx_du)
         return J
 
     # --- events -------------------------------------------------------------------------------------------
-    def watch(self, Y, t_end: float, peak: bool):
-        """The event functions at a state, in the order of :data:`EVENT_KINDS`: z (separation), h(pi)/Delta,
-        the distance to the end of the tabulated range, dp/dt (the peak tension; 1 unless watched), t - t_end."""
-        t, z = Y[0], Y[1]
+    def watch(self, t, Y, peak: bool):
+        """The event functions at time t and state Y = (z, Q, D), in the order of :data:`EVENT_KINDS`: z
+        (separation), h(pi)/Delta, the distance to the end of the tabulated range, dp/dt (the peak tension; 1
+        unless watched), |dz/dt| - RUNAWAY F_ref."""
+        z = Y[0]
         a, y, dy, g, x, V, du_dt, dg_dt = self.local(t, z)
         dp = (dy[P0] + g * dy[P1]) * du_dt + y[P1] * dg_dt if peak else 1.0
         u = self.u_ref + math.log(max(z, self.z_floor)) / self.q
-        return np.array([z, y[H0] + g * y[H1], self.arc.u_last - u, dp, t - t_end])
+        run = abs(self.q * max(z, self.z_floor) * du_dt) - RUNAWAY * self.F_ref
+        return np.array([z, y[H0] + g * y[H1], self.arc.u_last - u, dp, run])
 
     # --- the record of states ---------------------------------------------------------------------------------
     def record(self, Y, held):
@@ -156,48 +154,82 @@ class EdgeODE:
 
 #: the direction in which each event function crosses zero, and whether the event ends the segment
 DIRECTION = np.array([-1, -1, -1, 1, 1])
-TERMINAL = np.array([True, True, True, False, True])
+TERMINAL = np.array([True, True, True, False, False])
+
+
+class Dense:
+    """The dense output of one step as a function of the time offset tau from its origin, giving (t, z, Q, D)."""
+
+    def __init__(self, out, t_origin):
+        self.out, self.t_origin, self.t_old, self.t = out, t_origin, out.t_old, out.t
+
+    def __call__(self, tau):
+        return np.concatenate([[self.t_origin + tau], self.out(tau)])
 
 
 def segment(ode: EdgeODE, drive: Linear, t1: float, Y0, rtol=RTOL, peak=False, dense=False, energy=False):
-    """Integrate from Y0 = (t0, z, W, D) to t1 under a linear drive.  Returns (steps, events, terminal):
-    steps [(s, Y, dense output or None)] after the start, events [(kind, s, Y)] in order, the terminal kind
-    ('' at t1).  ``energy``: the work and dissipation under the error control too (else they follow the steps
-    of (t, z)).  Events are roots of :meth:`EdgeODE.watch` on the step's dense output (Brent, to adjacent
-    doubles in s)."""
+    """Integrate from Y0 = (t0, z, Q, D) to t1 under a linear drive.  Returns (steps, events, terminal):
+    steps [(key, Y, dense output or None)] after the start, events [(kind, key, Y)] in order (key: a sortable
+    position along the segment), the terminal kind ('' at t1).  ``energy``: Q and D under the error control too
+    (else they follow the steps of z).  Events are roots of :meth:`EdgeODE.watch` on the step's dense output
+    (Brent, to adjacent doubles in time).  Where the contact runs away (|dz/dt| > RUNAWAY F_ref: past a fold
+    of a stiff, nearly quasi-static path it vanishes in a time that may lie below the resolution of t) the
+    integration restarts with its time origin there."""
     t0 = float(Y0[0])
     ode.start(drive, t1 - t0)
-    e = rtol * ATOL_ENERGY * ode.energy_atol if energy else 1e300
-    atol = np.array([rtol * max(abs(t0), abs(t1)) * 1e-3, rtol * 1e-4, e, e])
-    z_max = math.exp(ode.q * (ode.arc.u_last - ode.u_ref))         # the arclength is t plus the path of z/F_ref
-    span = 2.0 * (t1 - t0) + 4.0 * (Y0[1] + z_max) / ode.F_ref
-    solver = LSODA(ode.fun, 0.0, np.asarray(Y0, dtype=float), span, rtol=rtol, atol=atol, jac=ode.jac,
-                   first_step=FIRST_STEP * span)
-    before = ode.watch(solver.y, t1, peak)
-    steps, events = [], []
+    steps, events, restart, armed, Y = [], [], 0, True, np.asarray(Y0, dtype=float)
     while True:
-        s_old = solver.t
-        solver.step()
-        if solver.status == "failed":
-            raise ArithmeticError(f"kinetics: the integrator failed at t = {solver.y[0]!r} s")
-        after = ode.watch(solver.y, t1, peak)
-        crossed = np.nonzero((np.sign(before) != np.sign(after)) & (DIRECTION * (after - before) > 0))[0]
-        out = solver.dense_output() if (dense or crossed.size) else None
-        roots = sorted((_root(ode, out, k, s_old, solver.t, before[k], after[k], t1, peak), k) for k in crossed)
-        for s, k in roots:
-            Y = out(s)
-            if EVENT_KINDS[k] == "segment-end":
-                Y[0] = t1                                  # the end of the drive, exactly
-            events.append((EVENT_KINDS[k], s, Y))
-            if TERMINAL[k]:
-                steps.append((s, Y, out))
-                return steps, events, "" if EVENT_KINDS[k] == "segment-end" else EVENT_KINDS[k]
-        steps.append((solver.t, solver.y.copy(), out))
-        if solver.status == "finished":
-            raise ArithmeticError(f"kinetics: the arclength span ended at t = {solver.y[0]!r} s before {t1!r}")
-        before = after
+        ode.t_origin = t_o = float(Y[0])
+        e = rtol * ATOL_ENERGY * ode.energy_atol if energy else 1e300
+        solver = LSODA(ode.fun, 0.0, Y[1:], t1 - t_o, rtol=rtol, atol=np.array([rtol * 1e-4, e, e]),
+                       jac=ode.jac, first_step=min(FIRST_STEP * (t1 - t0), 0.5 * (t1 - t_o)))
+        before = ode.watch(t_o, solver.y, peak)
+        runaway = False
+        while solver.status == "running" and not runaway:
+            tau_old = solver.t
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", UserWarning)          # lsoda's own words on a failure
+                solver.step()
+            if solver.status == "failed":
+                if rtol >= RTOL_MAX:
+                    x = ode.local(t_o + solver.t, solver.y[0])[4]
+                    raise ArithmeticError(f"rate: at t = {t_o + solver.t:.6g} s the contact follows its equilibrium "
+                                          f"within rounding (G/w - 1 = {x - 1:.2g}): the quasi-static answer "
+                                          f"(no rate) holds there; the integrator cannot resolve the lag")
+                rtol = min(10.0 * rtol, RTOL_MAX)                  # G/w - 1 below rounding: see RTOL_MAX
+                ode.relaxed = max(ode.relaxed, rtol)
+                Y = steps[-1][1] if steps else np.asarray(Y0, dtype=float)
+                restart += 1
+                break
+            after = ode.watch(t_o + solver.t, solver.y, peak)
+            crossed = np.nonzero((np.sign(before) != np.sign(after)) & (DIRECTION * (after - before) > 0)
+                                 & (armed | (np.arange(5) != 4)))[0]
+            out = Dense(solver.dense_output(), t_o) if (dense or crossed.size) else None
+            roots = sorted((_root(ode, out, k, tau_old, solver.t, before[k], after[k], peak), k) for k in crossed)
+            for tau, k in roots:
+                Y = out(tau)
+                kind = EVENT_KINDS[k]
+                if kind == "runaway":                    # a new time origin here
+                    steps.append(((restart, tau), Y, out))
+                    restart, armed, runaway = restart + 1, False, True
+                    break
+                events.append((kind, (restart, tau), Y))
+                if TERMINAL[k]:
+                    steps.append(((restart, tau), Y, out))
+                    return steps, events, kind
+            if not runaway:
+                Y = np.concatenate([[t_o + solver.t], solver.y])
+                steps.append(((restart, solver.t), Y, out))
+                before = after
+                armed = armed or after[4] < -0.99 * RUNAWAY * ode.F_ref      # re-armed once it has slowed down
+        if solver.status == "finished" and not runaway:
+            steps[-1][1][0] = t1                                             # the end of the drive, exactly
+            return steps, events, ""
 
 
-def _root(ode, out, k, lo, hi, f_lo, f_hi, t_end, peak):
-    """The arclength where event k crosses zero between two steps."""
-    return _roots.brent(lambda s, _: ode.watch(out(s), t_end, peak)[k], lo, hi, (), f_lo, f_hi)
+def _root(ode, out, k, lo, hi, f_lo, f_hi, peak):
+    """The time offset where event k crosses zero between two steps."""
+    def f(tau, _):
+        Y = out(tau)
+        return ode.watch(Y[0], Y[1:], peak)[k]
+    return _roots.brent(f, lo, hi, (), f_lo, f_hi)

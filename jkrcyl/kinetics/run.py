@@ -108,6 +108,13 @@ class Run:
         self.held = drive.value(float(self.Y[0])) if terminal else x1
         return terminal
 
+    def _note(self):
+        if not self.ode.relaxed:
+            return self.note
+        return (self.note + "; " if self.note else "") + (
+            f"tolerance relaxed to {self.ode.relaxed:g} where G/w - 1 fell to rounding (the contact at its "
+            "equilibrium)")
+
     def history(self) -> History:
         """The states recorded so far, in SI units."""
         un, ode = self.units, self.ode
@@ -118,7 +125,7 @@ class Run:
         P = p * self.units.load_scale / self.problem.scale
         hist = History(control=self.control, t=t, P=P, delta=dn * un.Delta, delta_work=dw * un.Delta, eps=eps,
                        contact_width=2 * un.R * eps, G=w * x, v=V, h_pi=h * un.Delta, work=W * un.energy_scale,
-                       dissipated=D * un.energy_scale, potential=total * un.energy_scale, note=self.note)
+                       dissipated=D * un.energy_scale, potential=total * un.energy_scale, note=self._note())
         # a peak of the tension is an event where it is the largest so far (not a wiggle of a tracked plateau)
         events = tuple(Event(kind, float(t[i]), float(P[i]), float(hist.delta[i]), float(hist.delta_work[i]), i)
                        for kind, i, _ in self.events if kind != "peak-tension" or P[i] <= P[:i + 1].min())
@@ -133,12 +140,12 @@ def _at_times(steps, t0, times):
     out = []
     for tq in times[(times > t_steps[0]) & (times < t_steps[-1])]:
         j = int(np.searchsorted(t_steps, tq))               # the step ending at or after tq
-        s_hi, _, dense = steps[j - 1]
-        lo, hi = dense.t_old, s_hi
+        key, _, dense = steps[j - 1]
+        lo, hi = dense.t_old, dense.t
         for _ in range(60):
             mid = 0.5 * (lo + hi)
             lo, hi = (mid, hi) if dense(mid)[0] < tq else (lo, mid)
         Y = dense(hi)
         Y[0] = tq
-        out.append((hi, Y))
+        out.append(((key[0], hi), Y))
     return out
