@@ -28,6 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.integrate import LSODA
+from scipy.optimize import minimize_scalar
 
 from ..numerics import roots as _roots
 from .arc import B0, B1, DN0, DN1, DW0, DW1, H0, H1, HELD, P0, P1
@@ -114,16 +115,15 @@ class EdgeODE:
         return J
 
     # --- events -------------------------------------------------------------------------------------------
-    def watch(self, t, Y, peak: bool):
+    def watch(self, t, Y):
         """The event functions at time t and state Y = (z, Q, D), in the order of :data:`EVENT_KINDS`: z
-        (separation), h(pi)/Delta, the distance to the end of the tabulated range, dp/dt (the peak tension; 1
-        unless watched), |dz/dt| - RUNAWAY F_ref."""
+        (separation), h(pi)/Delta, the distance to the end of the tabulated range, p (its smallest value, the
+        peak tension, is found by :func:`peaks`, not as a root), |dz/dt| - RUNAWAY F_ref."""
         z = Y[0]
         a, y, dy, g, x, V, du_dt, dg_dt = self.local(t, z)
-        dp = (dy[P0] + g * dy[P1]) * du_dt + y[P1] * dg_dt if peak else 1.0
         u = self.u_ref + math.log(max(z, self.z_floor)) / self.q
         run = abs(self.q * max(z, self.z_floor) * du_dt) - RUNAWAY * self.F_ref
-        return np.array([z, y[H0] + g * y[H1], self.arc.u_last - u, dp, run])
+        return np.array([z, y[H0] + g * y[H1], self.arc.u_last - u, y[P0] + g * y[P1], run])
 
     # --- the record of states ---------------------------------------------------------------------------------
     def record(self, Y, held):
@@ -153,7 +153,7 @@ class EdgeODE:
 
 
 #: the direction in which each event function crosses zero, and whether the event ends the segment
-DIRECTION = np.array([-1, -1, -1, 1, 1])
+DIRECTION = np.array([-1, -1, -1, 0, 1])
 TERMINAL = np.array([True, True, True, False, False])
 
 
@@ -172,9 +172,9 @@ def segment(ode: EdgeODE, drive: Linear, t1: float, Y0, rtol=RTOL, peak=False, d
     steps [(key, Y, dense output or None)] after the start, events [(kind, key, Y)] in order (key: a sortable
     position along the segment), the terminal kind ('' at t1).  ``energy``: Q and D under the error control too
     (else they follow the steps of z).  Events are roots of :meth:`EdgeODE.watch` on the step's dense output
-    (Brent, to adjacent doubles in time).  Where the contact runs away (|dz/dt| > RUNAWAY F_ref: past a fold
-    of a stiff, nearly quasi-static path it vanishes in a time that may lie below the resolution of t) the
-    integration restarts with its time origin there."""
+    (Brent, to adjacent doubles in time); ``peak``: the peak tensions too (:func:`peaks`).  Where the contact
+    runs away (|dz/dt| > RUNAWAY F_ref: past a fold of a stiff, nearly quasi-static path it vanishes in a time
+    that may lie below the resolution of t) the integration restarts with its time origin there."""
     t0 = float(Y0[0])
     ode.start(drive, t1 - t0)
     steps, events, restart, armed, Y = [], [], 0, True, np.asarray(Y0, dtype=float)
@@ -183,7 +183,7 @@ def segment(ode: EdgeODE, drive: Linear, t1: float, Y0, rtol=RTOL, peak=False, d
         e = rtol * ATOL_ENERGY * ode.energy_atol if energy else 1e300
         solver = LSODA(ode.fun, 0.0, Y[1:], t1 - t_o, rtol=rtol, atol=np.array([rtol * 1e-4, e, e]),
                        jac=ode.jac, first_step=min(FIRST_STEP * (t1 - t0), 0.5 * (t1 - t_o)))
-        before = ode.watch(t_o, solver.y, peak)
+        before = ode.watch(t_o, solver.y)
         runaway = False
         while solver.status == "running" and not runaway:
             tau_old = solver.t
@@ -201,11 +201,11 @@ def segment(ode: EdgeODE, drive: Linear, t1: float, Y0, rtol=RTOL, peak=False, d
                 Y = steps[-1][1] if steps else np.asarray(Y0, dtype=float)
                 restart += 1
                 break
-            after = ode.watch(t_o + solver.t, solver.y, peak)
+            after = ode.watch(t_o + solver.t, solver.y)
             crossed = np.nonzero((np.sign(before) != np.sign(after)) & (DIRECTION * (after - before) > 0)
                                  & (armed | (np.arange(5) != 4)))[0]
-            out = Dense(solver.dense_output(), t_o) if (dense or crossed.size) else None
-            roots = sorted((_root(ode, out, k, tau_old, solver.t, before[k], after[k], peak), k) for k in crossed)
+            out = Dense(solver.dense_output(), t_o) if (dense or peak or crossed.size) else None
+            roots = sorted((_root(ode, out, k, tau_old, solver.t, before[k], after[k]), k) for k in crossed)
             for tau, k in roots:
                 Y = out(tau)
                 kind = EVENT_KINDS[k]
@@ -216,7 +216,7 @@ def segment(ode: EdgeODE, drive: Linear, t1: float, Y0, rtol=RTOL, peak=False, d
                 events.append((kind, (restart, tau), Y))
                 if TERMINAL[k]:
                     steps.append(((restart, tau), Y, out))
-                    return steps, events, kind
+                    return steps, events + (peaks(ode, steps) if peak else []), kind
             if not runaway:
                 Y = np.concatenate([[t_o + solver.t], solver.y])
                 steps.append(((restart, solver.t), Y, out))
@@ -224,12 +224,32 @@ def segment(ode: EdgeODE, drive: Linear, t1: float, Y0, rtol=RTOL, peak=False, d
                 armed = armed or after[4] < -0.99 * RUNAWAY * ode.F_ref      # re-armed once it has slowed down
         if solver.status == "finished" and not runaway:
             steps[-1][1][0] = t1                                             # the end of the drive, exactly
-            return steps, events, ""
+            return steps, events + (peaks(ode, steps) if peak else []), ""
 
 
-def _root(ode, out, k, lo, hi, f_lo, f_hi, peak):
+def _root(ode, out, k, lo, hi, f_lo, f_hi):
     """The time offset where event k crosses zero between two steps."""
     def f(tau, _):
         Y = out(tau)
-        return ode.watch(Y[0], Y[1:], peak)[k]
+        return ode.watch(Y[0], Y[1:])[k]
     return _roots.brent(f, lo, hi, (), f_lo, f_hi)
+
+
+def peaks(ode: EdgeODE, steps):
+    """[('peak-tension', key, Y)] at each local minimum of the load p over the steps, refined on the dense output
+    of the two steps around it (bounded Brent minimisation of p itself: where the contact tracks its
+    equilibrium stiffly, the rate of p is rounding noise, but p is not)."""
+    p = np.array([ode.watch(Y[0], Y[1:])[3] for _, Y, _ in steps])
+    out = []
+    for i in range(1, len(steps) - 1):
+        (k0, _, _), (k1, _, d1), (k2, _, d2) = steps[i - 1], steps[i], steps[i + 1]
+        if not (p[i] <= p[i - 1] and p[i] < p[i + 1] and p[i] < 0) or not k0[0] == k1[0] == k2[0]:
+            continue
+
+        def load(tau):
+            Y = (d1 if tau <= k1[1] else d2)(tau)
+            return ode.watch(Y[0], Y[1:])[3]
+        res = minimize_scalar(load, bounds=(k0[1], k2[1]), method="bounded", options={"xatol": 1e-14 * k2[1]})
+        tau = res.x if res.fun < p[i] else k1[1]
+        out.append(("peak-tension", (k1[0], tau), (d1 if tau <= k1[1] else d2)(tau)))
+    return out
