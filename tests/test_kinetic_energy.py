@@ -55,7 +55,7 @@ def test_work_is_potential_plus_dissipation_over_a_cycle(load_cycle):
     cy = load_cycle
     h = cy.history
     assert cy.closed_from_leg is not None and cy.note == ""
-    top = np.nonzero(h.P == cy.limits[1])[0]
+    top = np.nonzero(np.abs(h.P / cy.limits[1] - 1) < 1e-9)[0]        # the rows at P_max
     i, j = top[-2], top[-1]
     err, D = balance(h, i, j)
     assert D > 0 and abs(err) <= 1e-6 * D                    # over the last loop
@@ -85,14 +85,15 @@ def test_pull_off_balance_up_to_the_event():
 
 def test_cycle_dissipation_vanishes_as_rate_goes_to_zero():
     """The quasi-static loop between these limits has no jump, so dissipates nothing; the rate-dependent loop
-    dissipates more, the more the faster, and tends to it."""
+    dissipates more (>= 0) and tends to it as the rate falls: for n = 1 (G - w linear in v) in proportion to the
+    rate (the slower half of the loss peak; at high rate the contact freezes and the loss falls again)."""
     c = contact(v_star=1e-3, n=1.0)
     po = c.pull_off().P
     qs = c.cycle(P_max=-po, P_min=0.5 * po)
     assert qs.dissipated == 0.0 and [j.kind for j in qs.jumps] == ["snap-in"]
-    E = [c.cycle(P_max=-po, P_min=0.5 * po, rate=r).dissipated for r in (3000.0, 300.0, 30.0)]
+    E = [c.cycle(P_max=-po, P_min=0.5 * po, rate=r).dissipated for r in (10.0, 3.0, 1.0)]
     assert E[0] > E[1] > E[2] > 0
-    assert E[2] < 0.2 * E[0]
+    assert E[2] / E[0] == pytest.approx(0.1, rel=0.2)
 
 
 def test_cycle_that_passes_pull_off_stops_at_the_event():

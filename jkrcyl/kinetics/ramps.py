@@ -90,7 +90,7 @@ def respond(contact, t, P=None, delta_work=None, delta=None, route: str = "table
         raise ValueError(f"{name}: {why}")
     run = Run(contact, control, start, _largest_contact(contact, control, start, x.max()), route, rtol, t[0])
     for k in _corners(t, x)[1:]:
-        if run.drive(float(t[k]), float(x[k]), peak=control != "load", times=t):
+        if run.drive(float(t[k]), float(x[k]), peak=control != "load", times=t, energy=True):
             break
     return run.history()
 
