@@ -112,9 +112,14 @@ def test_collocation_states_and_their_table_give_the_same_history(control):
     assert a.kind == b.kind and a.kind
     assert a.P == pytest.approx(b.P, rel=1e-6)
     assert a.history.events[-1].t == pytest.approx(b.history.events[-1].t, rel=1e-6)
-    i = np.searchsorted(b.history.t, a.history.t[len(a.history.t) // 2])
-    assert np.interp(a.history.t[len(a.history.t) // 2], b.history.t[i - 1:i + 1], b.history.eps[i - 1:i + 1]) == \
-        pytest.approx(a.history.eps[len(a.history.t) // 2], rel=1e-5)      # mid-way (linear interpolation of b)
+    t = np.linspace(0.0, 0.9 * a.history.events[-1].t, 7)                   # the same ramp, at given instants
+    x = (-rate * t) if control == "load" else a.history.delta_work[0] - rate * t
+    kw = {"P": x} if control == "load" else {"delta_work": x}
+    ha, hb = (ramps.respond(c, t, route=r, **kw) for r in ("table", "direct"))
+    rows = [np.searchsorted(h.t, t) for h in (ha, hb)]
+    assert np.array_equal(ha.t[rows[0]], t) and np.array_equal(hb.t[rows[1]], t)
+    assert np.allclose(ha.eps[rows[0]], hb.eps[rows[1]], rtol=1e-6, atol=0)
+    assert np.allclose(ha.P[rows[0]], hb.P[rows[1]], rtol=1e-6, atol=1e-9 * np.abs(hb.P).max())
 
 
 def test_half_plane_high_rate_power_law():

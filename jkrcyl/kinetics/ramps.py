@@ -44,9 +44,9 @@ def pull_off(contact, control: str, rate: float, route: str = "table", rtol: flo
     if start is None:
         return _none(control, rate, why)
     run = Run(contact, control, start, start.a, route, rtol)
-    # the ramp's time scale: the quasi-static pull-off's held value over the rate, extended until an event
-    scale = abs(contact.pull_off("load").P or contact.load_scale) if control == "load" else contact.Delta
-    t1, x0, end = scale / rate, start.held(control), ""
+    # the ramp's time scale: the adhesive part of the held quantity at the start over the rate, extended by
+    # factors of 4 until an event
+    t1, x0, end = run.ode.x1_ref * run.unit / rate, start.held(control), ""
     for _ in range(MAX_RAMPS):
         end = run.drive(t1, x0 - rate * t1, peak=control != "load")
         if end:

@@ -6,6 +6,7 @@ rest, and collects the states of every segment (linear pieces of the drive) into
 """
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -27,10 +28,11 @@ def check_route(route) -> str:
     return route
 
 
+@functools.lru_cache(maxsize=64)
 def rest_start(contact, control: str, held=None):
     """The equilibrium at rest a drive starts from: the zero-load contact of first contact (the quasi-static
     path, jkrcyl.analysis.path) or, with ``held`` (the held quantity, SI), the state that path reaches at it.
-    Returns (state, '') or (None, why not)."""
+    Returns (state, '') or (None, why not); cached per contact."""
     pb, un = contact.problem, _fw.Units.of(contact)
     _, to, _ = _path.first_contact(pb, un, "load")
     if to is None:
