@@ -16,12 +16,12 @@ from .history import EVENTS, Event, History
 from .results import RateCycle, RatePullOff
 
 __all__ = ["EVENTS", "Event", "History", "RateCycle", "RatePullOff", "rate_sweep", "RateSweep",
-           "high_rate_pull_off"]
+           "high_rate_pull_off", "frozen_pull_off"]
 
 
 def __getattr__(name):
     """The sweep (pull-off against rate) is imported on first use."""
-    if name in ("rate_sweep", "RateSweep", "high_rate_pull_off"):
+    if name in ("rate_sweep", "RateSweep", "high_rate_pull_off", "frozen_pull_off"):
         from . import sweep
         return getattr(sweep, name)
     raise AttributeError(f"module 'jkrcyl.kinetics' has no attribute {name!r}")
