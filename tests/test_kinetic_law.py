@@ -64,6 +64,15 @@ def test_user_phi_and_shift():
         pytest.approx(shifted.speed(3.0), rel=1e-10)
 
 
+def test_a_user_phi_equal_to_the_power_law_gives_its_pull_off():
+    m = PAIRS["identical"]
+    power = jkrcyl.Contact(R=1e-2, Delta=1e-6, w=0.05, materials=m, kinetics=Kinetic(1e-3, 0.6))
+    user = jkrcyl.Contact(R=1e-2, Delta=1e-6, w=0.05, materials=m,
+                          kinetics=Kinetic(1e-3, 0.6, phi=lambda v: (v / 1e-3) ** 0.6))
+    a, b = power.pull_off(rate=300.0), user.pull_off(rate=300.0)
+    assert a.kind == b.kind and a.P == pytest.approx(b.P, rel=1e-8)
+
+
 def test_shift_factors_are_the_textbook_formulas():
     # WLF: log10 a_T = -C1 (T - Tr)/(C2 + T - Tr); universal constants 17.44, 51.6 at Tr = Tg
     assert wlf_shift(-50.0, -70.0, 17.44, 51.6) == pytest.approx(10 ** (-17.44 * 20 / 71.6), rel=1e-14)

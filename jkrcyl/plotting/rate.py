@@ -55,6 +55,8 @@ def sweep_figure(sw, contact, title: str = ""):
         ax.axvspan(top.min(), r.max(), color=cmap(0.6), alpha=0.08, lw=0)
     ax.set_xscale("log")
     ax.set_yscale("log")
+    levels = [v for v in (*P[ok], -(sw.P_quasi_static or np.nan), -(sw.P_frozen or np.nan)) if np.isfinite(v)]
+    ax.set_ylim(0.5 * min(levels), 2.0 * max(levels))          # the power law drawn up to the ceiling's decade
     ax.set_xlabel(f"rate [{RATE_UNIT[sw.control]}] ({CONTROL[sw.control]})")
     ax.set_ylabel("pull-off: largest tension $|P|$ [N/m]")
     ax.legend(fontsize=7.5, loc="upper left")
