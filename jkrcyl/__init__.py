@@ -29,5 +29,5 @@ def __getattr__(name):
     are imported on first use: they load scipy.optimize and scipy.integrate."""
     if name in ("fit", "kinetics"):
         import importlib
-        return importlib.import_module(".fit", __name__)
+        return importlib.import_module("." + name, __name__)
     raise AttributeError(f"module 'jkrcyl' has no attribute {name!r}")
