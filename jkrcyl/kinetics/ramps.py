@@ -7,8 +7,6 @@ value.  The held quantity is then driven linearly, piece by piece (jkrcyl.kineti
 """
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from .._validate import count, finite_scalar, real_array

@@ -67,7 +67,7 @@ class Run:
             hi = min(GROWTH * a_max, 0.5 * (a_max + float(DirectArc(pb).solver.a_crit)))
             arc = TabulatedArc(pb, math.log(a0 * _int.A_FLOOR), math.log(hi))
         self.ode = _int.EdgeODE(pb, self.law, contact.R, control, arc, a0)
-        self.Y = np.array([t0, 1.0, 0.0, 0.0])               # (t, z, W, D): at rest at t0
+        self.Y = np.array([t0, 1.0, 0.0, 0.0])               # (t, z, Q, D): at rest at t0
         self.held = self.to_kernel(start.held(control))
         self.rows, self.held_at, self.events, self.note = [self.Y.copy()], [self.held], [], ""
         self.ode.start(_int.Linear(t0, self.held, 0.0), 1.0)
