@@ -5,7 +5,9 @@ Run: python benchmarks/bench_cohesive.py [--repeats 50]        (smoke: --repeats
 Prints, in one run:
   * time per cohesive state (default nodes, best of the repeats) and its error against the same state with twice the nodes (max of
     |dp|, |d delta/Delta|, |dc|), over lambda at alpha* = 0 and for a steel pin in aluminium (alpha* != 0);
-  * the error against the number of nodes at lambda = 10 (against n = 256) with the Bernstein-ellipse rate;
+  * the error against the number of nodes at lambda = 10 (against n = 256) with the Bernstein-ellipse rate of the
+    plain collocation, and with the zone's end layer subtracted (jkrcyl.numerics.cohesive_layer) at lambda = 10
+    and 1000;
   * the JKR limit: lambda^2 (X - X_JKR) for p, delta/Delta, h(pi) (the O(lambda^-2) approach);
   * the half-plane limit against Baney-Hui (reference/baney_hui.py, run from the repository root);
   * time per contactless state (closed form) and per touch state;
@@ -54,7 +56,8 @@ def state_table(repeats, quick):
     print("\n## time per state (default nodes), error against twice the nodes")
     print(f"{'pair':>24} {'lambda':>7} {'n':>5} {'c - eps':>10} {'time':>10} {'error':>9}")
     steel = jkrcyl.Materials.from_young(E=70e9, nu=0.33, E_I=210e9, nu_I=0.3)
-    cases = [("alpha* = 0", THETA, GB, 0.0, lam) for lam in ((1, 3, 10) if quick else (0.3, 1, 3, 10, 30, 100))]
+    cases = [("alpha* = 0", THETA, GB, 0.0, lam) for lam in ((1, 3, 10, 1000) if quick else
+                                                             (0.3, 1, 3, 10, 30, 100, 300, 1000, 3000))]
     cases.append(("steel pin in aluminium", steel.theta, steel.inv_G_I / steel.beta, steel.alpha_ratio, 3.0))
     times = {}
     for name, theta, gb, ar, lam in cases:
@@ -69,21 +72,27 @@ def state_table(repeats, quick):
 
 
 def nodes_table():
-    print("\n## error against the number of nodes (lambda = 10, eps = 0.8; against n = 256)")
+    print("\n## error against the number of nodes (eps = 0.8; plain: against n = 256, layered: against n = 192)")
     s0 = cs.zone_strength(10.0, M)
-    ref = co.cohesive_state(EPS, M, s0, THETA, GB, n=256)
+    ref = co.cohesive_state(EPS, M, s0, THETA, GB, n=256, layered=False)
     rho = ref.c / EPS + math.sqrt((ref.c / EPS) ** 2 - 1)
-    print(f"Bernstein ellipse through the zone end: rho = {rho:.4f}, rho^-n at n = 24, 48, 96: "
-          f"{rho ** -24:.1e}, {rho ** -48:.1e}, {rho ** -96:.1e}")
+    print(f"lambda = 10, plain collocation: Bernstein ellipse through the zone end rho = {rho:.4f}, rho^-n at "
+          f"n = 24, 48, 96: {rho ** -24:.1e}, {rho ** -48:.1e}, {rho ** -96:.1e}")
+    refs = {lam: co.cohesive_state(EPS, M, cs.zone_strength(lam, M), THETA, GB, n=192, layered=True)
+            for lam in (10.0, 1000.0)}
+    print(f"{'n':>5} {'plain, 10':>10} {'layered, 10':>12} {'layered, 1000':>14}")
     for n in (16, 24, 32, 48, 64, 96, 128):
-        print(f"n = {n:4d}: error {error(co.cohesive_state(EPS, M, s0, THETA, GB, n=n), ref):.2e}")
+        lay = [error(co.cohesive_state(EPS, M, cs.zone_strength(lam, M), THETA, GB, n=n, layered=True), r)
+               for lam, r in refs.items()]
+        print(f"{n:5d} {error(co.cohesive_state(EPS, M, s0, THETA, GB, n=n, layered=False), ref):10.2e} "
+              f"{lay[0]:12.2e} {lay[1]:14.2e}")
 
 
 def jkr_table(quick):
     print("\n## JKR limit: lambda^2 (X - X_JKR) at eps = 0.8 (steady: the O(lambda^-2) approach)")
     sl = solver(Problem(M / THETA, THETA, GB)).states([math.tan(EPS / 2)])
     st = {"p": sl.p, "dn": sl.dn, "h": sl.h}
-    for lam in ((12.5, 25, 50) if quick else (12.5, 25, 50, 100, 200)):
+    for lam in ((12.5, 25, 50, 1000) if quick else (12.5, 25, 50, 100, 200, 400, 1000, 2000)):
         s = co.cohesive_state(EPS, M, cs.zone_strength(lam, M), THETA, GB)
         d = [(getattr(s, a) - st[b][0]) * lam ** 2 for a, b in (("p", "p"), ("delta_over_Delta", "dn"),
                                                                   ("h_pi_over_Delta", "h"))]
@@ -118,7 +127,7 @@ def pull_off_table(quick):
     f = lambda eps: solver(Problem(0.2 / THETA, THETA, GB)).states([math.tan(eps / 2)]).p[0]
     ref = minimize_scalar(f, bracket=(0.3, 0.5, 0.7), options=dict(xtol=1e-12)).fun
     times = []
-    for lam in ((1, 3) if quick else (0.3, 1, 3, 10, 25)):
+    for lam in ((1, 3, 100) if quick else (0.3, 1, 3, 10, 25, 100, 300)):
         t = time.perf_counter()
         r = po.pull_off_load(0.2, cs.zone_strength(lam, 0.2), THETA, GB)
         times.append(time.perf_counter() - t)

@@ -8,10 +8,14 @@ Prints, in one run (the README pin's pair, R = 10 mm, Delta = 1 um, w = 0.05 J/m
     (state + tangent slopes + stability derivatives + feasibility + energy, jkrcyl.model.cohesive);
   * the branch: trace and table of a fresh contact (cold: what the first call on a contact costs);
   * a pull-off through the public API, cold (trace, table, walk: the median of 3 fresh contacts after numba's
-    cached code is loaded, with the LUs it built) at lambda = 1, 3, 10, 50, and warm; the stand-alone continuation;
+    cached code is loaded, with the LUs it built) at lambda = 1, 3, 10, 50 and the thin zones 143 (the issue-26
+    roller's lambda), 300, 1000 (the Dugdale end layer subtracted, jkrcyl.numerics.cohesive_layer), and warm;
+    the stand-alone continuation;
   * a load cycle (P = +-2000 N/m), warm;
   * the (lambda, M) pull-off map (n x n, lambda in [0.01, 10], M in [0.01, 1], Dask on 2 processes).
-Goals (issue 19): one state <= 1 ms, a pull-off <= 100 ms, the 100 x 100 map <= 60 s on 2 cores.
+Goals (issue 19): one state <= 1 ms, a pull-off <= 100 ms, the 100 x 100 map <= 60 s on 2 cores; issue 26: a cold
+pull-off <= 100 ms at lambda <= 10 and <= 0.5 s up to lambda = 1000.  Times are wall clock; the CPU time of the
+process is printed beside them (the machine is shared: the load average is printed with the goals).
 """
 import argparse
 import math
@@ -48,26 +52,27 @@ def fresh(lam, k):
 def cold_pull_off(lam, k, runs):
     """Median over ``runs`` fresh contacts of the first pull_off('load') (trace, table, walk), and the LUs
     (collocation matrices) it built."""
-    times, lus = [], []
+    times, lus, cpu = [], [], []
     for _ in range(runs):
         k[0] += 1
         c = fresh(lam, k[0])
-        t = time.perf_counter()
+        t, t_cpu = time.perf_counter(), time.process_time()
         c.pull_off("load")
         times.append(time.perf_counter() - t)
+        cpu.append(time.process_time() - t_cpu)
         lus.append(solver(c.problem).law.fixed.cache_info().misses)
-    return float(np.median(times)), int(np.median(lus))
+    return float(np.median(times)), int(np.median(lus)), float(np.median(cpu))
 
 
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--repeats", type=int, default=20)
     ap.add_argument("--map", type=int, default=100, help="map points per axis (0: skip)")
-    ap.add_argument("--quick", action="store_true", help="skip lambda = 50 (4 s a pull-off)")
+    ap.add_argument("--quick", action="store_true", help="cold pull-offs at lambda = 1, 3, 10, 1000 only")
     args = ap.parse_args()
     print(f"# {platform.processor() or platform.machine()}, python {platform.python_version()}")
     k = [1]
-    for lam in (2.0, 20.0):                   # numba's cached code loaded (both LU paths): not a contact's cost
+    for lam in (2.0, 20.0, 500.0):            # numba's cached code loaded (both LU paths, the layer): not a contact's cost
         k[0] += 1
         fresh(lam, k[0]).pull_off("load")
     c = fresh(3.0, 0)
@@ -80,10 +85,11 @@ def main():
     t_point = best(lambda: (sv._cache.clear(), sv.point(mid)), args.repeats)
     print(f"one table point (state, slopes, stability derivatives, feasibility, energy): {t_point * 1e3:.3f} ms")
     cold = {}
-    for lam in (1.0, 3.0, 10.0) if args.quick else (1.0, 3.0, 10.0, 50.0):
+    for lam in (1.0, 3.0, 10.0, 1000.0) if args.quick else (1.0, 3.0, 10.0, 50.0, 143.0, 300.0, 1000.0):
         cold[lam] = cold_pull_off(lam, k, 3)
         print(f"pull-off (load), public API, cold (trace + table + walk), lambda = {lam:4g}: "
-              f"{cold[lam][0] * 1e3:7.1f} ms ({cold[lam][1]} LUs; median of 3 fresh contacts)")
+              f"{cold[lam][0] * 1e3:7.1f} ms, CPU {cold[lam][2] * 1e3:6.1f} ms ({cold[lam][1]} LUs; median of 3 "
+              "fresh contacts)")
     t_warm = best(lambda: c.pull_off("load"), args.repeats)
     print(f"pull-off (load), public API, warm: {t_warm * 1e3:.1f} ms")
     t_two = best(lambda: cpo.pull_off_load(pb.m, pb.edge.s0, pb.theta, pb.gb), max(2, args.repeats // 4))
@@ -99,8 +105,10 @@ def main():
     ok = lambda t, goal: "met" if t <= goal else "NOT met"
     print(f"\ngoals: issue 19 vs measured (load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores)")
     print(f"  one state <= 1 ms: {t_state * 1e3:.2f} ms ({ok(t_state, 1e-3)}; a table point {t_point * 1e3:.2f} ms)")
-    for lam, (t, _) in cold.items():
-        print(f"  a pull-off <= 100 ms, lambda = {lam:g}: cold {t * 1e3:.0f} ms ({ok(t, 0.1)})")
+    for lam, (t, _, t_cpu) in cold.items():
+        goal = 0.1 if lam <= 10 else 0.5
+        print(f"  a pull-off <= {goal * 1e3:.0f} ms, lambda = {lam:g}: cold {t * 1e3:.0f} ms ({ok(t, goal)}; CPU "
+              f"{t_cpu * 1e3:.0f} ms)")
     print(f"  a pull-off <= 100 ms, warm {t_warm * 1e3:.1f} ms ({ok(t_warm, 0.1)}), stand-alone {t_two * 1e3:.0f} ms "
           f"({ok(t_two, 0.1)})")
     if args.map:

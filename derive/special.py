@@ -139,4 +139,6 @@ def derive(report):
         Kernel("rubbery_P_star", (("P_R_star", P_R_star),), "(7.6): P_R* = P beta*/(4 pi Delta)."),
         Kernel("lift_off", (("f", lift_off),), "(7.7): sqrt(a) dP_R*/da; zero at lift-off."),
         Kernel("neat_fit_load", (("Q_star", Q),), "Q* = P/zeta* at Delta = 0 (section 7.3)."),
+        Kernel("neat_fit_slope", (("dQ_star_da", sp.diff(Q, a)),),
+               "dQ*/da at Delta = 0: fixed-load stable where Q* dQ*/da < 0 (jkrcyl.model.stability)."),
     ]

@@ -97,3 +97,21 @@ def neat_fit_load(a, inv_theta):
     x1 = inv_theta*math.log1p(x0)
     Q_star = 2*math.sqrt(a)*(x0 + 1)*(inv_theta*x0 - x1 + 2)/(2*a**4*inv_theta + x1 - 2)
     return Q_star
+
+
+@njit(cache=True, error_model="numpy")
+def neat_fit_slope(a, inv_theta):
+    """
+    dQ*/da at Delta = 0: fixed-load stable where Q* dQ*/da < 0 (jkrcyl.model.stability).
+    """
+    x0 = a**2
+    x1 = inv_theta*math.log1p(x0)
+    x2 = 1/(2*a**4*inv_theta + x1 - 2)
+    x3 = inv_theta*x0 - x1 + 2
+    x4 = 4*a**(3/2)
+    x5 = x3*x4
+    x6 = x0 + 1
+    x7 = 1/x6
+    x8 = inv_theta*x6
+    dQ_star_da = x2*(-x2*x5*x8*(4*x0 + x7) + x4*x8*(1 - x7) + x5 + x3*x6/math.sqrt(a))
+    return dQ_star_da

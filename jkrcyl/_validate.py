@@ -1,6 +1,6 @@
 """Input checks: every bad value gets a ValueError that names the parameter and the allowed range.
 
-Documented domain (issue 11): every real input is 0 or has magnitude in [TINY, HUGE] = [1e-100, 1e100]
+Documented domain: every real input is 0 or has magnitude in [TINY, HUGE] = [1e-100, 1e100]
 (inf only where a parameter allows it, e.g. a rigid body); the contact parameter a = tan(eps/2) lies in
 [A_MIN, A_MAX] = [1e-100, 1e20] (beyond, the closed forms under- or overflow), a <= PRESSURE_A_MAX = 1e4 for
 the pressure; vartheta <= 1e100 or inf;

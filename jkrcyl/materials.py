@@ -9,14 +9,36 @@ from ._validate import THETA_MAX, finite_scalar
 ALPHA_TOLERANCE = 1e-9   # |alpha*| / beta* below this counts as alpha* = 0
 
 
+def snap_alpha(ratio: float) -> float:
+    """alpha*/beta*, exactly 0.0 where |alpha*/beta*| <= ALPHA_TOLERANCE: the one place that decides alpha* = 0.
+
+    The closed forms, the engine's enrichment and every other test of alpha* read the snapped value.
+
+    Parameters
+    ----------
+    ratio : float
+        alpha*/beta* as computed (dimensionless).
+
+    Returns
+    -------
+    float
+        0.0 within the tolerance, else ``ratio`` unchanged.
+
+    Examples
+    --------
+    >>> snap_alpha(3e-12), snap_alpha(0.1)
+    (0.0, 0.1)
+    """
+    return 0.0 if abs(ratio) <= ALPHA_TOLERANCE else ratio
+
+
 @dataclass(frozen=True)
 class Materials:
-    """Shear moduli G, G_I [Pa] (math.inf for a rigid body) and Kolosov constants kappa, kappa_I.
+    """The plane-strain material pair of section 2: the body with the hole (G, kappa) and the pin (G_I, kappa_I).
 
-    kappa = 3 - 4 nu in plane strain.  Any pair is accepted: the closed forms of the paper need the second
-    Dundurs parameter alpha* = (kappa - 1)/(2G) - (kappa_I - 1)/(2G_I) to vanish (section 2,
-    :attr:`closed_form`); otherwise :meth:`jkrcyl.Contact.state` solves (2.1) numerically
-    (jkrcyl.numerics.arcs).
+    kappa = 3 - 4 nu in plane strain (:meth:`from_young`).  Any pair is accepted: the closed forms of the paper need
+    the second Dundurs parameter alpha* = (kappa - 1)/(2G) - (kappa_I - 1)/(2G_I) to vanish (section 2,
+    :attr:`closed_form`); otherwise the collocation solver (jkrcyl.model.collocation) solves (2.1) numerically.
 
     Parameters
     ----------
@@ -33,7 +55,17 @@ class Materials:
     ------
     ValueError
         Naming the parameter: not a real number, G or G_I <= 0, kappa < 1, both bodies rigid, a magnitude outside
-        the documented domain (jkrcyl._validate), beta* not finite or vartheta above 1e100 (finite G).
+        the documented domain (jkrcyl._validate), beta* not finite or vartheta above 1e100 (finite G), or kappa,
+        kappa_I so far apart that |alpha*/beta*| rounds to 1.
+
+    Examples
+    --------
+    >>> m = Materials(G=1e9, kappa=1.8, G_I=1e9, kappa_I=1.8)           # identical bodies, nu = 0.3
+    >>> m.beta, m.theta, m.closed_form                                   # beta* = 2 (1.8 + 1)/(2e9)
+    (2.8e-09, 1.0, True)
+    >>> rigid_pin = Materials(G=1e6, kappa=2.0, G_I=math.inf, kappa_I=2.0)
+    >>> rigid_pin.theta, round(rigid_pin.alpha_ratio, 12)              # vartheta = 1/2; (kappa - 1)/(kappa + 1)
+    (0.5, 0.333333333333)
     """
 
     G: float
@@ -76,6 +108,14 @@ class Materials:
         ------
         ValueError
             Naming E, nu, E_I or nu_I (or G, G_I for a pair outside the domain), with the allowed range.
+
+        Examples
+        --------
+        >>> Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)      # G = E/(2 (1 + nu)) = 1 GPa
+        Materials(G=1000000000.0, kappa=1.8, G_I=1000000000.0, kappa_I=1.8)
+        >>> steel_in_aluminium = Materials.from_young(E=70e9, nu=0.33, E_I=210e9, nu_I=0.3)
+        >>> round(steel_in_aluminium.theta, 4), round(steel_in_aluminium.alpha_ratio, 4)
+        (0.6702, 0.1167)
         """
         pairs = []
         for e_name, e, n_name, n in (("E", E, "nu", nu), ("E_I", E_I, "nu_I", nu_I)):
@@ -97,21 +137,38 @@ class Materials:
 
     @property
     def alpha_ratio(self) -> float:
-        """alpha*/beta* (dimensionless, in (-1, 1); <= 1/2 in size for nu, nu_I >= 0); 0 for the closed forms."""
-        return self.alpha_star / self.beta
+        """alpha*/beta* (dimensionless, in (-1, 1); <= 1/2 in size for nu, nu_I >= 0); exactly 0 for the closed
+        forms (:func:`snap_alpha`)."""
+        return snap_alpha(self.alpha_star / self.beta)
 
     @property
     def closed_form(self) -> bool:
         """True when alpha* = 0 (|alpha*/beta*| <= ALPHA_TOLERANCE): the paper's closed forms hold exactly."""
-        return abs(self.alpha_ratio) <= ALPHA_TOLERANCE
+        return self.alpha_ratio == 0.0
 
     def require_closed_form(self, what: str = "the closed form") -> None:
-        """Raise ValueError (naming alpha*) unless alpha* = 0.
+        """Raise ValueError (naming alpha*) unless alpha* = 0, the condition of the paper's closed forms.
 
         Parameters
         ----------
         what : str
             The operation that needs the closed form, quoted in the message.
+
+        Returns
+        -------
+        None
+
+        Raises
+        ------
+        ValueError
+            Naming alpha* and its value where alpha* != 0 (|alpha*/beta*| > ALPHA_TOLERANCE).
+
+        Examples
+        --------
+        >>> Materials.from_young(E=70e9, nu=0.33, E_I=210e9, nu_I=0.3).require_closed_form("Fig. 2")
+        Traceback (most recent call last):
+        ...
+        ValueError: Fig. 2 needs alpha* = 0, got alpha* = ...
         """
         if not self.closed_form:
             raise ValueError(
@@ -130,7 +187,7 @@ class Materials:
         """vartheta = G beta*/(1 + kappa) = 1/2 + G (kappa_I + 1)/(2 G_I (1 + kappa)) >= 1/2 (section 4).
 
         Summed in the second form, so a rigid indenter (G_I = inf) gives exactly 1/2 (the first form rounds
-        to 0.4999999999999999 for nu = 0.5, issue 11)."""
+        to 0.4999999999999999 for nu = 0.5)."""
         if math.isinf(self.G):
             return math.inf
         return 0.5 + self.G * (self.kappa_I + 1) / (2 * self.G_I * (1 + self.kappa))

@@ -1,10 +1,13 @@
-"""benchmarks/bench_cohesive_core.py in smoke mode (two repeats, no map, no lambda = 50) so that the benchmark
+"""benchmarks/bench_cohesive_core.py in smoke mode (two repeats, no map, lambda 1, 3, 10, 1000) so that the benchmark
 cannot rot; times are not checked."""
 import pathlib
 import subprocess
 import sys
 
+import pytest
+
 ROOT = pathlib.Path(__file__).resolve().parents[1]
+pytestmark = pytest.mark.slow         # a whole benchmark script in a subprocess: make test-slow
 
 
 def test_bench_cohesive_core_smoke():

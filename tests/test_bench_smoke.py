@@ -3,7 +3,10 @@ import pathlib
 import subprocess
 import sys
 
+import pytest
+
 ROOT = pathlib.Path(__file__).resolve().parents[1]
+pytestmark = pytest.mark.slow         # a whole benchmark script in a subprocess: make test-slow
 
 
 def test_bench_state_smoke():

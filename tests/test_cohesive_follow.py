@@ -13,7 +13,8 @@ import pytest
 
 from jkrcyl.analysis import forward as fw
 from jkrcyl.analysis import pull_off as po
-from jkrcyl.model.problem import Dugdale, Problem
+from jkrcyl.laws import DugdaleEdge
+from jkrcyl.model.problem import Problem
 from jkrcyl.numerics import cohesive as co
 from jkrcyl.numerics import cohesive_branch as cb
 from jkrcyl.numerics import cohesive_follow as fo
@@ -36,7 +37,7 @@ def law_of(lam, M):
 
 
 def start_and_domain(law):
-    start = co.cohesive_state(law.eps_lo, law.m, law.s0, THETA, GB, 0.0, n=law.nodes(law.eps_lo))
+    start = law.state(law.eps_lo)
 
     def inside(x):
         eps, d = math.exp(x[0]), math.exp(x[1])
@@ -59,7 +60,8 @@ def test_follow_traces_the_branch_of_the_pseudo_arclength_tracer(lam, M):
     the tip lies between samples; the end to 1e-2: follow stops within 64 H_MIN of the edge)."""
     law = law_of(lam, M)
     x0, inside = start_and_domain(law)
-    got = fo.follow(law, x0, inside)
+    got, why = fo.follow(law, x0, inside)
+    assert why == ""
     ref = pseudo_arclength(law, x0, inside)
     res = np.array([fo.residual(law, x) for x in got[1:]])
     assert np.all(np.abs(res) <= 1e-9 * (1 + law.h0))
@@ -74,7 +76,8 @@ def test_follow_turns_back_at_a_sharp_fold():
     inside one step of a bracket search): follow goes round it and ends near the start's eps."""
     law = law_of(*TURNS_BACK)
     x0, inside = start_and_domain(law)
-    got = fo.follow(law, x0, inside)
+    got, why = fo.follow(law, x0, inside)
+    assert why == ""
     assert got[:, 0].max() > -1.4 and got[-1, 0] < x0[0] + 0.01
 
 
@@ -84,7 +87,7 @@ def test_stand_alone_pull_off_at_a_fold_in_eps_equals_the_walkers_fold():
     lam, M = MIN_AT_FOLD
     pb0 = Problem(M, THETA, GB, 0.0)
     s0 = scales.zone_strength(lam, pb0.m)
-    pb = Problem(M, THETA, GB, 0.0, edge=Dugdale(s0))
+    pb = Problem(M, THETA, GB, 0.0, edge=DugdaleEdge(s0))
     walker = po.pull_off(pb, fw.Units(1.0, 1.0, 1.0, 0.0), "load")
     assert walker.state is not None and "fold" in walker.reason
     for kw in (dict(), dict(steps=(0.3, 1.2), xtol=1e-6, zero_load=False)):

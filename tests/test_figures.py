@@ -16,6 +16,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.colors import to_rgb  # noqa: E402
 
+import jkrcyl  # noqa: E402
 from jkrcyl import Contact, Materials, plotting  # noqa: E402
 from jkrcyl import equilibria as eq  # noqa: E402
 
@@ -132,7 +133,8 @@ def _independent_contact(M):
     mat = Materials.from_young(E=2.6, nu=0.3, E_I=2.6, nu_I=0.3)
     A = mat.beta / (2 * math.pi)
     w = 2 * (M * 1.0 * 1.0) ** 2 / (A * 2.0)
-    return Contact(R=2.0, Delta=1.0, w=w, materials=mat)
+    with pytest.warns(jkrcyl.ValidityWarning):          # normalised figures: Delta/R = 1/2 only fixes the units
+        return Contact(R=2.0, Delta=1.0, w=w, materials=mat)
 
 
 def _panel_limits(fig, i):
@@ -203,8 +205,10 @@ def test_fig08_stability_rule_agrees_with_library_release_rate():
     slope_rule = np.gradient(cv.P_star, cv.a) < 0
     interior = slice(5, -5)
     assert np.mean(slope_rule[interior] == cv.stable_load[interior]) > 0.98
-    c = {"a": cv.a, "Q_star": cv.P_star}
-    assert np.array_equal(plotting.neat_fit_stable(c), slope_rule)
+    from jkrcyl import special
+    neat = special.neat_fit_stable(cv.a, 1.0)          # Q* dQ*/da < 0, dQ*/da derived (derive/special.py)
+    assert np.mean(neat[interior] == cv.stable_load[interior]) > 0.98
+    assert np.mean(neat[interior] == slope_rule[interior]) > 0.98
 
 
 def test_fig07_says_which_approach_it_draws(built):

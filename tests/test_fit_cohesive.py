@@ -70,14 +70,14 @@ def test_noise_free_recovery_at_a_given_sigma0(lambda_one):
 
 
 def test_one_free_parameter_and_an_unresolvable_sigma0(lambda_one):
-    """E alone at the given w and sigma0 (noise-free); a sigma0 too large for the solver (lambda ~ 1e4) is refused
-    with a message naming sigma0, not used silently at another lambda."""
+    """E alone at the given w and sigma0 (noise-free); a sigma0 too large for the solver (lambda ~ 1e6, beyond its
+    1e4) is refused with a message naming sigma0, not used silently at another lambda."""
     c, width, P = lambda_one
     res = jkrcyl.fit(P=P, width=width, R=R, Delta=DELTA, materials=START, free=("E",), w=W, sigma0=c.sigma0,
                      interval=None)
     assert abs(res.values["E"] / E_STAR - 1) < 1e-6
     with pytest.raises(ValueError, match="sigma0: the cohesive solver cannot resolve"):
-        jkrcyl.fit(P=P, width=width, R=R, Delta=DELTA, materials=PAIR, free=("w", "E"), sigma0=1e4 * c.sigma0)
+        jkrcyl.fit(P=P, width=width, R=R, Delta=DELTA, materials=PAIR, free=("w", "E"), sigma0=1e6 * c.sigma0)
 
 
 def test_noisy_fit_truth_inside_the_intervals(lambda_one, tmp_path):

@@ -50,3 +50,41 @@ def test_item4_solve_finds_the_state_at_a_large_push(jkr):
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         jkr.solve(P=1e5, branches=["sub-critical"])               # the closed-form tables reach a_crit
+
+
+def test_item7_size_arguments_are_bounded():
+    """Was: two_patch(n=10**7) and `jkrcyl atlas --n-M 100000000` ran for minutes."""
+    import subprocess
+    import sys
+    c = jkrcyl.Contact(R=1e-2, Delta=1e-6, w=0.05, materials=jkrcyl.Materials.from_young(2.6e9, 0.3, 2.6e9, 0.3))
+    with pytest.raises(ValueError, match=r"^n must be in \[4, 100000\], got 10000000"):
+        c.two_patch(n=10 ** 7)
+    r = subprocess.run([sys.executable, "-m", "jkrcyl", "atlas", "--n-M", "100000000", "--out", "unused"],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 2 and r.stderr.strip().count("\n") == 0 and "n-M must be in [2, 10000]" in r.stderr
+
+
+def test_item7_a_crit_has_one_meaning():
+    """Seven entry points once; now jkrcyl.a_crit (= jkrcyl.equilibria.a_crit) and Contact.a_crit, the pair's
+    receding contact; the cohesive solver's branch end is a_end.  Reference: the pole of the adhesionless load,
+    P -> inf, solved here independently from (4.4)'s denominator 2 vartheta - log(1 + a^2) - 2 a^4 (alpha* = 0)."""
+    from scipy.optimize import brentq
+    from jkrcyl import equilibria
+    ref = brentq(lambda a: 2 * 1.0 - math.log1p(a * a) - 2 * a ** 4, 0.1, 2.0, xtol=1e-15)
+    assert jkrcyl.a_crit(1.0) == pytest.approx(ref, rel=1e-13) and equilibria.a_crit is jkrcyl.a_crit
+    m = jkrcyl.Materials.from_young(70e9, 0.33, 210e9, 0.3)
+    c = jkrcyl.Contact(R=1e-2, Delta=1e-6, w=0.05, materials=m)
+    assert c.a_crit == jkrcyl.a_crit(m.theta, m.inv_G_I / m.beta, m.alpha_ratio)
+    coh = jkrcyl.Contact(R=1e-2, Delta=1e-6, w=0.05, materials=m, sigma0=5e7)
+    from jkrcyl.model.single_patch import solver
+    assert solver(coh.problem).a_crit == c.a_crit
+    with pytest.raises(ValueError, match="^gb must be given"):
+        jkrcyl.a_crit(1.0, alpha_ratio=0.2)
+
+
+def test_item4_a_cycle_past_the_traced_branch_says_so(jkr):
+    """A cycle driven beyond the traced load cap stops with a note naming the table's end (it used to end with
+    'no stable state to jump to')."""
+    c = jkrcyl.Contact.with_lambda(**ARGS, lambda_=10)
+    cy = c.cycle(P_max=1e5, P_min=-5, n=100)
+    assert "table ends at P = " in cy.note and "traced up to" in cy.note and cy.dissipated is None

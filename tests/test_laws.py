@@ -72,15 +72,15 @@ def test_toy_law_cycle_and_state_are_jkr_at_twice_w():
 
 def test_sigma0_is_shorthand_for_the_dugdale_law():
     m = PAIRS["identical"]
-    a = jkrcyl.Contact(R=R, Delta=DELTA, w=0.05, materials=m, sigma0=20e6)
-    b = jkrcyl.Contact(R=R, Delta=DELTA, w=0.05, materials=m, law=jkrcyl.laws.Dugdale(sigma0=20e6))
-    assert a == b and hash(a) == hash(b) and b.sigma0 == 20e6 and a.law == jkrcyl.laws.Dugdale(20e6)
+    a = jkrcyl.Contact(R=R, Delta=DELTA, w=0.05, materials=m, sigma0=2e5)          # lambda = 3.7
+    b = jkrcyl.Contact(R=R, Delta=DELTA, w=0.05, materials=m, law=jkrcyl.laws.Dugdale(sigma0=2e5))
+    assert a == b and hash(a) == hash(b) and b.sigma0 == 2e5 and a.law == jkrcyl.laws.Dugdale(2e5)
     assert a.pull_off().P == b.pull_off().P                             # bit-identical: the same problem
 
 
 def test_a_law_that_does_not_model_a_family_is_refused_in_its_name():
     m = PAIRS["identical"]
-    c = jkrcyl.Contact(R=R, Delta=DELTA, w=0.05, materials=m, law=jkrcyl.laws.Dugdale(sigma0=20e6))
+    c = jkrcyl.Contact(R=R, Delta=DELTA, w=0.05, materials=m, law=jkrcyl.laws.Dugdale(sigma0=2e5))
     for call in (c.two_patch, c.confined_events, lambda: c.solve(P=0.0, branches=["two-patch"]),
                  lambda: c.solve(P=0.0, branches=["super-critical"])):
         with pytest.raises(ValueError, match="^sigma0: .*not modelled for the Maugis-Dugdale law"):

@@ -123,7 +123,7 @@ def test_confined_fold_and_jump_marked(M, regime):
         (start,) = [ln for ln in ax.lines if ln.get_marker() == "o" and to_rgb(ln.get_color()) == (0, 0, 0)]
         assert start.get_ydata()[0] == pytest.approx(0.0, abs=1e-12)
         assert start.get_xdata()[0] == pytest.approx(
-            float(eq.curve(M, 1.0, "super-critical" if ev.start[0] > eq.a_crit(M, 1.0, gb=GB_PIN) else
+            float(eq.curve(M, 1.0, "super-critical" if ev.start[0] > eq.a_crit(1.0, gb=GB_PIN) else
                            "sub-critical", a=[ev.start[0]], gb=GB_PIN).delta_over_Delta[0]), rel=1e-9)
     finally:
         plt.close(fig)

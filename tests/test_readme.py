@@ -3,8 +3,9 @@
 * ``python`` blocks run in order in one namespace (exec), in a temporary directory;
 * ``sh`` blocks: each ``.venv/bin/jkrcyl ...`` line runs as ``python -m jkrcyl ...`` in a temporary directory
   (exit status 0, no traceback, output or written files non-empty); every other line must be one of
-  :data:`SKIPPED` (``make test`` runs this suite, ``make derive`` is tests/test_generated_up_to_date.py, figures and
-  the atlas have their own tests), so a new command line cannot slip through untested;
+  :data:`SKIPPED` (``make test``, ``make test-slow`` and ``make test-boundscheck`` run this suite, ``make derive``
+  is tests/test_generated_up_to_date.py, figures and the atlas have their own tests), so a new command line cannot
+  slip through untested;
 * a block in any other language fails the test.
 
 References for the stated numbers: a_crit(1) is the root of the denominator of (4.4), 2 vartheta - log(1 + a^2)
@@ -28,7 +29,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 README = (ROOT / "README.md").read_text()
 BLOCK = re.compile(r"^```(\w*)\n(.*?)^```", re.S | re.M)
 BLOCKS = [(m.group(1), m.group(2)) for m in BLOCK.finditer(README)]
-SKIPPED = {"make derive", "make test", "make figures", "make atlas"}
+SKIPPED = {"make derive", "make test", "make test-slow", "make test-boundscheck", "make figures", "make atlas"}
 CLI_PREFIX = ".venv/bin/jkrcyl"
 TIMEOUT = 120
 

@@ -99,7 +99,7 @@ def branches_04():
 @pytest.mark.parametrize("a", [0.2, 0.6, 1.3])
 def test_single_arc_engine_matches_closed_form(theta, gb, a):
     M = 0.35
-    regime = "sub-critical" if a < eq.a_crit(M, theta, gb) else "super-critical"
+    regime = "sub-critical" if a < eq.a_crit(theta, gb) else "super-critical"
     ref = eq.curve(M, theta, regime, a=np.array([a]), gb=gb)
     lin = tp._linear(2 * math.atan(a), 0.0, theta, gb, 32)
     d = (M / math.pi - lin.q0[2]) / lin.q1[2]        # Griffith k = M/pi
@@ -608,7 +608,7 @@ def test_cli_two_patch_and_confined_report_for_a_pair_with_alpha(capsys):
         lin = tp._linear(eps, 0.0, th, gb, 64, ar)
         d = (M / math.pi - lin.q0[2]) / lin.q1[2]
         return lin.q0[0] + d * lin.q1[0]
-    e_c = 2 * math.atan(eq.a_crit(M, th, gb, ar))
+    e_c = 2 * math.atan(eq.a_crit(th, gb, ar))
     r = minimize_scalar(P, bounds=(e_c + 0.2, 2.6), method="bounded", options={"xatol": 1e-9})
     assert e_c + 0.21 < r.x < 2.59                # an interior minimum (the super-critical fold)
     assert conf["P_fold"] == pytest.approx(r.fun, rel=1e-8)

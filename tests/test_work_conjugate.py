@@ -66,7 +66,7 @@ def test_stable_grip_work_is_the_load_rule_with_delta_work(M, theta, gb):
     inv_t = 0.0 if math.isinf(theta) else 1 / theta
     m = M if math.isinf(theta) else M * theta
     for regime in (("sub-critical",) if math.isinf(theta) else ("sub-critical", "super-critical")):
-        ac = 1.0 if math.isinf(theta) else eq.a_crit(M, theta, gb)    # vartheta = inf: 0 < a < 0.97 checked
+        ac = 1.0 if math.isinf(theta) else eq.a_crit(theta, gb)    # vartheta = inf: 0 < a < 0.97 checked
         lo, hi = (1e-12, 0.97 * min(ac, 1e3)) if regime == "sub-critical" else (1.03 * ac, 1e3)
         a = np.geomspace(lo, hi, 400)
         s = _k.star_m(a, inv_theta=inv_t, m=m, gb=gb)

@@ -1,4 +1,4 @@
-"""The load-control pull-off of the Maugis-Dugdale pin over (lambda, M): where it vanishes (issue 19).
+"""The load-control pull-off of the Maugis-Dugdale pin over (lambda, M): where it vanishes.
 
 Every point is independent: the stand-alone pull-off by continuation of jkrcyl.numerics.cohesive_pull_off (the
 second route to Contact.pull_off('load'), tested equal to the walker's to 1e-8; no branch table per point; with

@@ -54,6 +54,10 @@ class _Run:
             if event == "target":
                 return s, ""
             value = s.held()
+            short = _short(self.pb, s) if event == "end" else ""
+            if short:
+                return None, (f"leg {leg}: the {s.branch} branch's table ends at P = {s.P:.6g} N/m, delta = "
+                              f"{s.delta:.6g} m ({short}); the cycle stops there")
             if s.branch == "separated" and self.control != "load":
                 lo, hi = _fw.solver(self.pb).free_range()      # where the free pin touches a side (or its range)
                 value = (hi if up else lo) * self.un.Delta
@@ -93,6 +97,13 @@ class _Run:
         self.pts += [(tr.P[k], tr.delta[k], tr.name, tr.a[k], True, leg) for k in passed[1:]]
         self.add(end, leg)
         return end, event
+
+
+def _short(pb, s) -> str:
+    """Why the branch of s ended at s short of its end ('' where it really ends: a_crit, round, a continuation)."""
+    regime = s.branch.replace("-top", "")
+    sv = _fw.solver(pb)
+    return sv.stops_short(regime, s.a) if regime in sv.regimes() and sv.continues(regime, s.a) is None else ""
 
 
 def _same(s1, s2, rel=1e-6):

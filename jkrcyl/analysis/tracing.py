@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from .._validate import finite_scalar
+from .._validate import count, finite_scalar
 from ..model import two_patch as _two
 from ..model.problem import Problem
 from ..model.single_patch import solver
@@ -26,6 +26,7 @@ SCAN_POINTS = 32
 SCAN_GAP = 0.1          # rows stop this far from full contact (F keeps one sign there)
 H0 = 0.05               # continuation step in log half-angles
 H_MAX = 10              # longest step, in units of H0
+N_RESAMPLE_MAX = 100_000   # points per resampled branch (each a two-arc solve: ~0.1 ms)
 LOG_AXIS = math.log(EPS_AXIS)
 
 
@@ -200,7 +201,7 @@ def branches(pb: Problem, n=None, nodes: int = _two.N_NODES) -> tuple:
     """Every branch of two-patch equilibria: a tuple of TwoPatchCurve (n points each, equally spaced in
     arclength in the half-angle plane; default: the continuation steps).  Cached per problem."""
     if n is not None:
-        n = int(finite_scalar("n", n, low=4))
+        n = count("n", n, low=4, high=N_RESAMPLE_MAX)
     fx, _ = _residuals(pb, nodes)
     out = []
     for p, ends in traced(pb, nodes):

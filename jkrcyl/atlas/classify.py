@@ -15,8 +15,8 @@ where M means M_R* of (7.6) and P* means P_R*) :func:`classify` decides
 * ``adherence``    the lowest *feasible* fixed-load adherence point among the sub-critical minimum and
                    the super-critical minimum with P* < 0: ``P_adh``, ``a_adh``, ``adh_branch`` (1 sub-,
                    2 super-critical);
-* ``confined``     what slow pulling under load control does to the pin in the hole (issue 12; codes
-                   :data:`CONFINED`), from the load path of :func:`jkrcyl.twopatch.confined_events`:
+* ``confined``     what slow pulling under load control does to the pin in the hole (codes
+                   :data:`CONFINED`), from the load path of :func:`jkrcyl.analysis.confined.confined_events`:
                    start at the stable, feasible zero-load contact (the largest; without one, the
                    stable feasible state of largest P*), follow the branch towards lower P* and stop at
                    the first event -- the fold (P* minimum, where the state turns unstable) or h(pi) = 0
@@ -65,7 +65,7 @@ CONFINED = {
     CONF_TWO_PATCH: "top contact forms and a two-patch state stable under load follows",
     CONF_BONDED: "no stable, feasible zero-load contact: at first touch the pin zips into full contact (bonded)",
 }
-# jkrcyl.twopatch.REGIMES -> code (the refinement of CONF_TOP and the tests' reference)
+# jkrcyl.analysis.confined regimes -> code (the refinement of CONF_TOP and the tests' reference)
 FROM_TWOPATCH = {"no-path": CONF_NONE, "detachment": CONF_TRANSFER, "zip-full": CONF_ZIP,
                  "snap-in-transfer": CONF_TOP_TRANSFER, "snap-in-full": CONF_TOP_FULL,
                  "two-patch": CONF_TWO_PATCH, "bonded": CONF_BONDED}

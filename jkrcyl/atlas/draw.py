@@ -1,5 +1,7 @@
 """The atlas map: what slow pulling does to the pin (``confined`` classes) over (M, vartheta), contours of
 the load of that event, the zero-load limit M_max(vartheta) of (8.1) and a strip for vartheta = inf."""
+from typing import List, Mapping
+
 import numpy as np
 
 from .classify import CONFINED
@@ -10,8 +12,39 @@ PALETTE = {0: "#f0f0f0", 1: "#a6cee3", 2: "#fdbf6f", 3: "#fb9a99", 4: "#b2df8a",
 LEVELS = (-5, -3, -2, -1.5, -1, -0.75, -0.5, -0.3, -0.2, -0.1, -0.05, 0.05, 0.1, 0.2, 0.3, 0.5)
 
 
-def draw(atlas, path_stem):
-    """Write path_stem.png and .pdf; returns the paths."""
+def draw(atlas: Mapping[str, np.ndarray], path_stem: str) -> List[str]:
+    """Draw the atlas map into path_stem.png and path_stem.pdf (matplotlib, Agg backend).
+
+    One colour per ``confined`` class (distinct in greyscale too), contours of P* of the first event (the fold, or
+    where the gap at phi = pi closes), the zero-load limit M_max(vartheta) of (8.1) dashed, and a strip for the
+    vartheta = inf row (M_R*, P_R* of (7.6)) when the grid has one.
+
+    Parameters
+    ----------
+    atlas : mapping of str to ndarray
+        What :func:`jkrcyl.atlas.classify` returns (or the arrays of a file of :func:`jkrcyl.atlas.write_npz`).
+    path_stem : str
+        The path without the extension.
+
+    Returns
+    -------
+    list of str
+        The two paths written.
+
+    Raises
+    ------
+    KeyError
+        Where ``atlas`` lacks a field (M, theta, confined, event_P, zero_load_M_max).
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from jkrcyl import atlas
+    >>> result = atlas.classify(*atlas.default_grid(n_M=5, n_theta=3, M_max=1.0, theta_max=2.0), parallel=False)
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     [os.path.basename(p) for p in draw(result, os.path.join(folder, "atlas"))]
+    ['atlas.png', 'atlas.pdf']
+    """
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt

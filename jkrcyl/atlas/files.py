@@ -1,4 +1,9 @@
-"""Atlas output files: compressed npz (every field) and CSV (one row per (vartheta, M) pair)."""
+"""Atlas output files: compressed npz (every field) and CSV (one row per (vartheta, M) pair).
+
+:data:`NOTE` (what M and P* mean on the vartheta = inf row, the masks, the codes of ``confined``) heads both.
+"""
+from typing import Mapping
+
 import numpy as np
 
 from .classify import CONFINED, FIELDS_BOOL, FIELDS_FLOAT, FIELDS_INT
@@ -9,13 +14,72 @@ NOTE = ("vartheta = inf row: M is M_R* = sqrt(wAR)/(sqrt(2) Delta) and P* is P_R
 CSV_COLUMNS = ("theta", "M") + FIELDS_BOOL + FIELDS_INT + FIELDS_FLOAT
 
 
-def write_npz(path, atlas):
+def write_npz(path: str, atlas: Mapping[str, np.ndarray]) -> None:
+    """Every field of an atlas, compressed, with :data:`NOTE` and the lists of boolean, integer and float fields.
+
+    Parameters
+    ----------
+    path : str
+        The file (numpy adds .npz where it is missing).
+    atlas : mapping of str to ndarray
+        What :func:`jkrcyl.atlas.classify` returns.
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    OSError
+        Where the file cannot be written.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from jkrcyl import atlas
+    >>> result = atlas.classify(*atlas.default_grid(n_M=5, n_theta=3, M_max=1.0, theta_max=2.0), parallel=False)
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     write_npz(os.path.join(folder, "atlas.npz"), result)
+    ...     saved = np.load(os.path.join(folder, "atlas.npz"))
+    ...     bool((saved["confined"] == result["confined"]).all()), str(saved["note"]) == NOTE
+    (True, True)
+    """
     np.savez_compressed(path, note=np.array(NOTE), fields_bool=np.array(FIELDS_BOOL),
                         fields_int=np.array(FIELDS_INT), fields_float=np.array(FIELDS_FLOAT), **atlas)
 
 
-def write_csv(path, atlas):
-    """One row per (vartheta, M) pair; booleans 0/1, theta 'inf' on the rigid-cradle row."""
+def write_csv(path: str, atlas: Mapping[str, np.ndarray]) -> None:
+    """One row per (vartheta, M) pair (columns :data:`CSV_COLUMNS`), after a comment line with :data:`NOTE`.
+
+    Booleans 0/1, floats to 17 digits, theta 'inf' on the rigid-cradle row.
+
+    Parameters
+    ----------
+    path : str
+        The file.
+    atlas : mapping of str to ndarray
+        What :func:`jkrcyl.atlas.classify` returns.
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    OSError
+        Where the file cannot be written.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from jkrcyl import atlas
+    >>> result = atlas.classify(*atlas.default_grid(n_M=5, n_theta=3, M_max=1.0, theta_max=2.0), parallel=False)
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     write_csv(os.path.join(folder, "atlas.csv"), result)
+    ...     lines = open(os.path.join(folder, "atlas.csv")).read().splitlines()
+    >>> len(lines), lines[1].split(",")[:3], lines[-1].split(",")[:2]        # note, header, 4 x 5 pairs
+    (22, ['theta', 'M', 'sub_min'], ['inf', '1'])
+    """
     TH, MM = np.meshgrid(atlas["theta"], atlas["M"], indexing="ij")
     cols = [TH.ravel(), MM.ravel()]
     cols += [atlas[k].ravel().astype(np.int64) for k in FIELDS_BOOL + FIELDS_INT]

@@ -6,11 +6,15 @@ import time
 
 from . import inputs
 
+GRID_MAX = 10_000        # points per axis: 10^4 x 10^4 pairs is ~1.6 GB of fields and hours on 2 cores
+
 
 def run(args):
     from .. import atlas
-    if args.n_M < 2 or args.n_theta < 2:
-        raise ValueError(f"n-M and n-theta must be >= 2, got {args.n_M} and {args.n_theta}")
+    for name, n in (("n-M", args.n_M), ("n-theta", args.n_theta)):
+        if not 2 <= n <= GRID_MAX:
+            raise ValueError(f"{name} must be in [2, {GRID_MAX}] (the grid's memory and time grow with "
+                             f"n-M x n-theta), got {n}")
     if not args.theta_min < args.theta_max:
         raise ValueError(f"theta-max must be > theta-min, got theta-min = {args.theta_min:g}, "
                          f"theta-max = {args.theta_max:g}")

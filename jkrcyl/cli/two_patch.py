@@ -36,7 +36,8 @@ def run(args):
     if args.figure:
         return _figure(args)
     pi = inputs.resolve(args)
-    eq.problem(pi.M, pi.theta, pi.gb, pi.alpha_ratio, s0=pi.s0).require("two-patch", "two-patch states are")
+    param = "lambda" if getattr(args, "lambda_", None) is not None else ""        # the name the user gave the law
+    eq.problem(pi.M, pi.theta, pi.gb, pi.alpha_ratio, s0=pi.s0).require("two-patch", "two-patch states are", param)
     n = inputs.positive_count("n", args.n, 4)
     if pi.contact is not None:               # physical columns P [N/m], delta, delta_work [m] too
         bs = pi.contact.two_patch(n)

@@ -20,7 +20,19 @@ from .griffith import GRIFFITH_EDGE
 
 @dataclass(frozen=True)
 class DugdaleEdge(Edge):
-    """The normalised Maugis-Dugdale law: s0 > 0."""
+    """The normalised Maugis-Dugdale law: the zone traction s0 = sigma0 R beta*/(4 pi Delta) > 0.
+
+    Its branch families: the sub-critical single patch with its zone and the zone alone ('contactless').
+
+    Examples
+    --------
+    >>> DugdaleEdge(s0=0.1).models("contactless"), DugdaleEdge(s0=0.1).models("two-patch")
+    (True, False)
+    >>> DugdaleEdge(s0=-1.0)
+    Traceback (most recent call last):
+    ...
+    ValueError: s0 must be in (0, inf], got -1.0
+    """
 
     s0: float
     name = "Maugis-Dugdale"
@@ -30,31 +42,136 @@ class DugdaleEdge(Edge):
     def __post_init__(self):
         object.__setattr__(self, "s0", finite_scalar("s0", self.s0, low=0.0, low_open=True))
 
-    def check(self, problem) -> None:
+    def check(self, problem: "jkrcyl.model.problem.Problem") -> None:
+        """Reject a problem without adhesion (Edge.check).
+
+        Parameters
+        ----------
+        problem : jkrcyl.model.problem.Problem
+            The problem being made.
+
+        Returns
+        -------
+        None
+
+        Raises
+        ------
+        ValueError
+            Naming M where M = 0 (w = 0: lambda and h0 = w/sigma0 need adhesion).
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> jkrcyl.equilibria.problem(0.0, 1.0, 1 / 2.8, s0=0.1)
+        Traceback (most recent call last):
+        ...
+        ValueError: M must be > 0 with the Maugis-Dugdale law (w > 0: lambda and h0 = w/sigma0 need it)
+        """
         if problem.M == 0:
             raise ValueError("M must be > 0 with the Maugis-Dugdale law (w > 0: lambda and h0 = w/sigma0 need it)")
 
-    def single_patch(self, problem):
+    def single_patch(self, problem: "jkrcyl.model.problem.Problem") -> Cohesive:
+        """The cohesive single-patch solver (jkrcyl.model.cohesive): the contact branch with its zone, traced.
+
+        Parameters
+        ----------
+        problem : jkrcyl.model.problem.Problem
+            The normalised problem with this edge.
+
+        Returns
+        -------
+        jkrcyl.model.cohesive.Cohesive
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> type(DugdaleEdge(s0=0.1).single_patch(jkrcyl.equilibria.problem(0.3, 1.0, 1 / 2.8, s0=0.1))).__name__
+        'Cohesive'
+        """
         return Cohesive(problem)
 
     def edge_coefficient(self, m: float) -> float:
+        """0: a finite stress at the contact edge in equilibrium (Maugis; Edge.edge_coefficient).
+
+        Parameters
+        ----------
+        m : float
+            The adhesion M vartheta.
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> DugdaleEdge(s0=0.1).edge_coefficient(0.3)
+        0.0
+        """
         return 0.0
 
     def range_over_Delta(self, m: float) -> float:
-        """h0/Delta = m^2/s0."""
+        """The range over the clearance, h0/Delta = m^2/s0.
+
+        Parameters
+        ----------
+        m : float
+            The adhesion M vartheta (M_R* for vartheta = inf).
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> round(DugdaleEdge(s0=0.1).range_over_Delta(0.3), 12)
+        0.9
+        """
         return m * m / self.s0
 
 
-def edge_of_strength(s0):
-    """The normalised edge of a cohesive strength s0 (the normalised API's shorthand): None -> JKR's Griffith
-    edge, else DugdaleEdge(s0)."""
+def edge_of_strength(s0: "float | None") -> Edge:
+    """The normalised edge of a cohesive strength s0, the normalised API's shorthand (jkrcyl.equilibria).
+
+    Parameters
+    ----------
+    s0 : float or None
+        sigma0 R beta*/(4 pi Delta) > 0, or None for JKR.
+
+    Returns
+    -------
+    Edge
+        :data:`jkrcyl.laws.GRIFFITH_EDGE` for None, else ``DugdaleEdge(s0)``.
+
+    Raises
+    ------
+    ValueError
+        Naming s0 outside (0, inf).
+
+    Examples
+    --------
+    >>> edge_of_strength(None), edge_of_strength(0.1)
+    (GriffithEdge(), DugdaleEdge(s0=0.1))
+    """
     return GRIFFITH_EDGE if s0 is None else DugdaleEdge(s0)
 
 
 @dataclass(frozen=True)
 class Dugdale(EdgeLaw):
     """The Maugis-Dugdale cohesive law of strength sigma0 [Pa] > 0: range h0 = w/sigma0, needs w > 0 and Delta > 0.
-    ``Contact(..., sigma0=s)`` is the shorthand of ``Contact(..., law=Dugdale(s))`` (the same contact).
+
+    ``Contact(..., sigma0=s)`` is the shorthand of ``Contact(..., law=Dugdale(s))`` (the same contact); or give the
+    transition parameter: :meth:`jkrcyl.Contact.with_lambda`.
+
+    Parameters
+    ----------
+    sigma0 : float
+        The traction wherever 0 < gap <= h0 [Pa], > 0.
+
+    Raises
+    ------
+    ValueError
+        Naming sigma0 outside (0, inf) (and, made into a Contact, outside the domain of its normalised strength,
+        or with w = 0 or Delta = 0: :meth:`check`).
 
     Examples
     --------
@@ -74,7 +191,32 @@ class Dugdale(EdgeLaw):
     def __post_init__(self):
         object.__setattr__(self, "sigma0", finite_scalar("sigma0", self.sigma0, low=0.0, low_open=True))
 
-    def check(self, contact) -> None:
+    def check(self, contact: "jkrcyl.Contact") -> None:
+        """Reject a contact without adhesion or clearance, or with a strength outside the domain (EdgeLaw.check).
+
+        Parameters
+        ----------
+        contact : jkrcyl.Contact
+            The contact being made.
+
+        Returns
+        -------
+        None
+
+        Raises
+        ------
+        ValueError
+            Naming sigma0: w = 0 or Delta = 0, or sigma0 R beta*/(4 pi Delta) outside [1e-100, 1e100].
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+        >>> jkrcyl.Contact(R=10e-3, Delta=0.0, w=0.05, materials=m, sigma0=1e6)
+        Traceback (most recent call last):
+        ...
+        ValueError: sigma0: a cohesive law needs w > 0 and Delta > 0 (h0 = w/sigma0, lengths over Delta), ...
+        """
         if contact.w == 0 or contact.Delta == 0:
             raise ValueError(f"sigma0: a cohesive law needs w > 0 and Delta > 0 (h0 = w/sigma0, lengths over "
                              f"Delta), got w = {contact.w!r}, Delta = {contact.Delta!r}")
@@ -84,13 +226,68 @@ class Dugdale(EdgeLaw):
                              f"normalised strength sigma0 R beta*/(4 pi Delta) in [{TINY:g}, {HUGE:g}]), got "
                              f"{self.sigma0!r}")
 
-    def edge(self, contact) -> Edge:
+    def edge(self, contact: "jkrcyl.Contact") -> DugdaleEdge:
+        """The normalised law, s0 = sigma0 R beta*/(4 pi Delta) (EdgeLaw.edge).
+
+        Parameters
+        ----------
+        contact : jkrcyl.Contact
+            The contact (Delta > 0).
+
+        Returns
+        -------
+        DugdaleEdge
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+        >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m)
+        >>> round(Dugdale(sigma0=5e6).edge(pin).s0, 6), round(5e6 * 1e-2 * 2.8e-9 / (4 * math.pi * 1e-6), 6)
+        (11.140846, 11.140846)
+        """
         return DugdaleEdge(self.sigma0 * contact.R * contact.beta / (4 * math.pi * contact.Delta))
 
-    def stress_intensity(self, contact) -> float:
-        """0: the zone carries the adhesion, the contact edge has a finite stress."""
+    def stress_intensity(self, contact: "jkrcyl.Contact") -> float:
+        """0: the zone carries the adhesion, the contact edge has a finite stress (EdgeLaw.stress_intensity).
+
+        Parameters
+        ----------
+        contact : jkrcyl.Contact
+            The contact.
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+        >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m)
+        >>> Dugdale(sigma0=5e6).stress_intensity(pin)
+        0.0
+        """
         return 0.0
 
-    def range(self, contact) -> float:
-        """h0 = w/sigma0 [m]."""
+    def range(self, contact: "jkrcyl.Contact") -> float:
+        """h0 = w/sigma0 [m], the range of the traction (EdgeLaw.range).
+
+        Parameters
+        ----------
+        contact : jkrcyl.Contact
+            The contact (its w).
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+        >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m)
+        >>> round(Dugdale(sigma0=5e6).range(pin) * 1e9, 9)                 # nm
+        10.0
+        """
         return contact.w / self.sigma0

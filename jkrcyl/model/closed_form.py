@@ -26,6 +26,7 @@ class ClosedForm(SinglePatch):
     dense_points = 4000        # points of a branch's search table (jkrcyl.analysis.branches)
     a_max = A_MAX              # the closed forms hold (and are stable) over the whole domain of a
     noise = 1e-15
+    pole_needs_gb = False      # the root of 2 vartheta - log(1 + a^2) - 2 a^4 (section 4)
 
     def __init__(self, problem):
         self.problem = problem

@@ -1,4 +1,4 @@
-"""The Maugis-Dugdale (cohesive-zone) law behind the single-patch interface (issue 19, phase 2).
+"""The Maugis-Dugdale (cohesive-zone) law behind the single-patch interface.
 
 :class:`Cohesive` gives, like the Griffith solvers, a :class:`~jkrcyl.model.patch.Slice` per branch parameter a
 (kernel scale: p = P beta*/(4 pi Delta), lengths over Delta).  Its branches:
@@ -29,11 +29,10 @@ import functools
 import math
 
 import numpy as np
-from scipy.optimize import brentq
-
 from ..numerics import cohesive_branch as _cb
 from ..numerics import cohesive_pull_off as _cpo
 from ..numerics import cohesive_zones as _cz
+from ..numerics import one_arc as _one
 from ..numerics import roots as _roots
 from .patch import SinglePatch, Slice
 
@@ -57,8 +56,12 @@ class Cohesive(SinglePatch):
 
     # --- the traced branch ---------------------------------------------------------------------------
     @functools.cached_property
+    def _traced(self):
+        return _cb.trace(self.law)           # (x, kind, why it stopped early: '' when it did not)
+
+    @functools.cached_property
     def _trace(self):
-        x, kind = _cb.trace(self.law)
+        x, kind, _ = self._traced
         keep = np.concatenate([[True], np.any(np.diff(x, axis=0) != 0, axis=1)])
         x = x[keep]
         t = x[:, 0] - x[0, 0] if kind == "all" else _cb.arclength(x)
@@ -77,9 +80,15 @@ class Cohesive(SinglePatch):
         return len(self._trace[1])
 
     @property
-    def a_crit(self) -> float:
-        """The end of the contact branch's parameter (not a receding contact: the pair's is Contact.a_crit)."""
+    def a_end(self) -> float:
+        """The end of the contact branch's parameter a = 2 + t."""
         return 2.0 + float(self._trace[1][-1]) * (1 + 1e-12)
+
+    @functools.cached_property
+    def a_crit(self) -> float:
+        """The pair's receding contact tan(eps_crit/2) (the one meaning of a_crit: jkrcyl.critical); the traced
+        branch stops below it (jkrcyl.numerics.cohesive_branch.EPS_MARGIN)."""
+        return _one.receding_contact(self.problem.theta, self.problem.gb, self.problem.alpha_ratio)
 
     def regimes(self):
         return ("contactless", "sub-critical") if self._contactless is not None else ("sub-critical",)
@@ -100,7 +109,7 @@ class Cohesive(SinglePatch):
         return 2.0 + (t if n == self.dense_points else np.linspace(t[0], t[-1], n))
 
     def on_branch(self, regime, a):
-        lo, hi = (0.0, 1.0) if regime == "contactless" else (2.0, self.a_crit)
+        lo, hi = (0.0, 1.0) if regime == "contactless" else (2.0, self.a_end)
         bad = (a <= lo) | (a > hi) if regime == "contactless" else (a < lo) | (a > hi)
         if regime not in self.regimes() or np.any(bad):
             raise ValueError(f"a must be in ({lo!r}, {hi!r}) on the {regime} branch of this cohesive law "
@@ -130,9 +139,7 @@ class Cohesive(SinglePatch):
         return eps, eps + d, (de, de + d * chord[1])
 
     def _all_c(self, eps):
-        from ..numerics import cohesive as _co
-        s = _co.cohesive_state(eps, self.law.m, self.law.s0, self.law.theta, self.law.gb, self.law.ar,
-                               n=self.law.nodes(eps))
+        s = self.law.state(eps)
         return math.pi if s.zones == "all" else s.c
 
     def point(self, a):
@@ -195,13 +202,10 @@ class Cohesive(SinglePatch):
         a (SLOPE_XTOL for a slope: a fold) -- the states carry ~1e-10 of noise and the slopes (finite differences)
         ~1e-9, so the bisection to adjacent doubles of the other solvers buys nothing but evaluations (each a
         state, and for a slope two more contacts)."""
-        if flo == 0.0 or fhi == 0.0:
-            return lo if flo == 0.0 else hi
         seen = {lo: flo, hi: fhi}
-        f = lambda x: seen[x] if x in seen else seen.setdefault(x, self.value(field, x) - target)
+        f = lambda x, _: seen[x] if x in seen else seen.setdefault(x, self.value(field, x) - target)
         xtol = SLOPE_XTOL if field in _SLOPES else ROOT_XTOL
-        x = brentq(f, lo, hi, xtol=xtol, rtol=4 * np.finfo(float).eps)
-        return None if _roots.is_pole(f(x), flo, fhi) else x
+        return _roots.brent_or_pole(f, lo, hi, (), flo, fhi, xtol=xtol)
 
     def at_contact(self, eps):
         """(c, p, dn, dw, h) at contact half-angles eps: the zone end's first root above the Dugdale estimate
@@ -218,12 +222,14 @@ class Cohesive(SinglePatch):
         return {ctl: np.full(np.shape(s.p), np.nan) for ctl in ("load", "grip", "grip-work")}
 
     # --- the branches' ends and what the analyses ask ------------------------------------------------------
-    def stops_short(self, regime):
+    def stops_short(self, regime, a=None):
         """The contact branch is traced up to p = P_CAP m^(4/3) (jkrcyl.numerics.cohesive_branch) unless it ends
-        first (the receding limit, the zone reaching round)."""
+        first (the receding limit, the zone reaching round); a: only if a is the table's last point."""
         if regime != "sub-critical" or self._trace[2] == "all":
             return ""
-        p_end = self.value("p", self.a_crit)
+        if a is not None and a < 2.0 + (self.a_end - 2.0) * (1 - 1e-9):
+            return ""
+        p_end = self.value("p", self.a_end)
         return f"traced up to P_CAP m^(4/3) = {self.law.p_cap:.6g}" if p_end > 0.5 * self.law.p_cap else ""
 
     def continues(self, regime, a):
@@ -240,11 +246,12 @@ class Cohesive(SinglePatch):
     def grows_under_pull(self, a, control):
         """At a fold, the state leaves along the branch's tangent in the direction a further pull drives it:
         under load the approach falls, under grip the load rises towards 0; the contact grows if eps rises
-        that way."""
-        h = 1e-4 * max(1.0, a)
-        s = self.states([a - h, a + h])
-        deps, ddn, dp = np.diff(s.contact)[0], np.diff(s.dn)[0], np.diff(s.p)[0]
-        return bool(deps * ddn < 0) if control == "load" else bool(deps * dp > 0)
+        that way.  The tangent at the point (d eps, and the per-point slopes of p and delta along it), not a
+        difference across points; the zone-only pin (a <= 1) has no contact to grow."""
+        if a <= 1:
+            return False
+        (deps, _), pt = self._where(a - 2.0)[2], self.point(a)
+        return bool(deps * pt.ddn_dt < 0) if control == "load" else bool(deps * pt.dp_dt > 0)
 
     def free_range(self):
         """The free pin feels no traction while every gap exceeds h0: -2 + h0 < delta/Delta < -h0."""
@@ -269,8 +276,11 @@ class Cohesive(SinglePatch):
 
     @functools.cached_property
     def unmodelled(self):
-        """Why the analyses cannot follow the branch ('' when they can): its zone stops reaching round by a jump
+        """Why the analyses cannot follow the branch ('' when they can): the trace stopped before the branch's end
+        (jkrcyl.numerics.cohesive_follow says where and why), or its zone stops reaching round by a jump
         (jkrcyl.numerics.cohesive_branch.top_opens: a top bridge or an S-shaped branch, not traced)."""
+        if self._traced[2]:                  # the trace stopped before the branch's end: no silent answer
+            return self._traced[2]
         if self._trace[2] != "all" or self.law.h0 >= 2.0:      # h0 >= 2 Delta: no state pulls, nothing to follow
             return ""
         opens = _cb.top_opens(self.law)

@@ -13,7 +13,8 @@ A law has two faces, as a reference solution of a contact code has:
   not modelled, the one message that says so (:meth:`Edge.require`).
 
 Every analysis (forward solves, the walker, pull-off, cycles, two patches, the atlas, the fit) reaches a law
-only through these two classes; a new law is a new module beside jkrcyl.laws.griffith and jkrcyl.laws.dugdale that subclasses both.
+only through these two classes; a new law is a new module beside jkrcyl.laws.griffith and jkrcyl.laws.dugdale
+that subclasses both.
 """
 from __future__ import annotations
 
@@ -27,35 +28,143 @@ FAMILIES = ("super-critical", "two-patch", "full-contact", "contactless")
 class Edge:
     """The normalised edge law of a Problem (kernel scale: nu = N R beta*/(4 pi Delta), lengths over Delta).
 
-    Subclasses are frozen dataclasses (a Problem is a cache key) and set :attr:`name`, :attr:`param` (the user's
-    parameter that selects the law, named in messages) and :attr:`families`, and implement
-    :meth:`single_patch`."""
+    Subclasses are frozen dataclasses (a Problem is a cache key), set :attr:`name`, :attr:`param` (the user's
+    parameter that selects the law, named in messages) and :attr:`families`, and implement :meth:`single_patch`
+    and :meth:`edge_coefficient`.
+
+    Examples
+    --------
+    >>> from jkrcyl.laws import GRIFFITH_EDGE, DugdaleEdge
+    >>> GRIFFITH_EDGE.name, sorted(GRIFFITH_EDGE.families)
+    ('JKR', ['full-contact', 'super-critical', 'two-patch'])
+    >>> DugdaleEdge(s0=0.1).param
+    'sigma0'
+    """
 
     name: str = "edge law"
     param: str = "law"
     families: FrozenSet[str] = frozenset()
 
-    def single_patch(self, problem):            # pragma: no cover - interface
-        """The single-patch solver (a jkrcyl.model.patch.SinglePatch) of a problem with this edge."""
+    def single_patch(self, problem: "jkrcyl.model.problem.Problem") -> "SinglePatch":  # pragma: no cover - interface
+        """The single-patch solver of a problem with this edge (the model core's only way to the law's states).
+
+        Parameters
+        ----------
+        problem : jkrcyl.model.problem.Problem
+            The normalised problem (section 6), with this edge.
+
+        Returns
+        -------
+        jkrcyl.model.patch.SinglePatch
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> from jkrcyl.laws import GRIFFITH_EDGE
+        >>> type(GRIFFITH_EDGE.single_patch(jkrcyl.equilibria.problem(0.3, 1.0, 1 / 2.8))).__name__
+        'ClosedForm'
+        """
         raise NotImplementedError
 
     def edge_coefficient(self, m: float) -> float:   # pragma: no cover - interface
-        """k of nu ~ -k/sqrt(eps - |phi|) at a contact edge in equilibrium, at adhesion m = M vartheta."""
+        """k of nu ~ -k/sqrt(eps - |phi|) at a contact edge in equilibrium, at adhesion m = M vartheta.
+
+        Parameters
+        ----------
+        m : float
+            The adhesion in the kernel scale, M vartheta (M_R* for vartheta = inf), >= 0.
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> import math
+        >>> from jkrcyl.laws import GRIFFITH_EDGE, DugdaleEdge
+        >>> GRIFFITH_EDGE.edge_coefficient(math.pi), DugdaleEdge(s0=0.1).edge_coefficient(math.pi)   # (pi k/m)^2 = G/w
+        (1.0, 0.0)
+        """
         raise NotImplementedError
 
-    def check(self, problem) -> None:
-        """ValueError where the law cannot be used with this problem (called once, when the Problem is made)."""
+    def check(self, problem: "jkrcyl.model.problem.Problem") -> None:
+        """Reject a problem the law cannot be used with (called once, when the Problem is made).
+
+        Parameters
+        ----------
+        problem : jkrcyl.model.problem.Problem
+            The problem being made.
+
+        Returns
+        -------
+        None
+
+        Raises
+        ------
+        ValueError
+            Where the law cannot be used with the problem (the Maugis-Dugdale law: M = 0); none for JKR.
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> jkrcyl.equilibria.problem(0.0, 1.0, 1 / 2.8, s0=0.1)
+        Traceback (most recent call last):
+        ...
+        ValueError: M must be > 0 with the Maugis-Dugdale law (w > 0: lambda and h0 = w/sigma0 need it)
+        """
 
     def models(self, family: str) -> bool:
-        """Whether the branch family (:data:`FAMILIES`) is modelled for this law."""
+        """Whether the branch family is modelled for this law.
+
+        Parameters
+        ----------
+        family : str
+            One of :data:`FAMILIES` (the sub-critical single patch every law has).
+
+        Returns
+        -------
+        bool
+
+        Examples
+        --------
+        >>> from jkrcyl.laws import GRIFFITH_EDGE, DugdaleEdge
+        >>> GRIFFITH_EDGE.models("two-patch"), DugdaleEdge(s0=0.1).models("two-patch")
+        (True, False)
+        """
         return family in self.families
 
-    def require(self, family: str, what: str = "") -> None:
-        """ValueError, naming the law's parameter, unless ``family`` is modelled: the one place that says
-        'not modelled for this law'."""
+    def require(self, family: str, what: str = "", param: str = "") -> None:
+        """The one place that says 'not modelled for this law'.
+
+        Parameters
+        ----------
+        family : str
+            One of :data:`FAMILIES`.
+        what : str
+            The operation, quoted in the message (default: the family).
+        param : str
+            The name the caller's user gave the law (e.g. the CLI's lambda); default :attr:`param`.
+
+        Returns
+        -------
+        None
+
+        Raises
+        ------
+        ValueError
+            Naming the law's parameter (:attr:`param`), unless ``family`` is modelled.
+
+        Examples
+        --------
+        >>> from jkrcyl.laws import DugdaleEdge
+        >>> DugdaleEdge(s0=0.1).require("two-patch", "two_patch() is")
+        Traceback (most recent call last):
+        ...
+        ValueError: sigma0: two_patch() is not modelled for the Maugis-Dugdale law (its branch families: ...)
+        """
         if not self.models(family):
             modelled = ", ".join(sorted(self.families)) or "none beyond the sub-critical single patch"
-            raise ValueError(f"{self.param}: {what or family} not modelled for the {self.name} law (its branch "
+            raise ValueError(f"{param or self.param}: {what or family} not modelled for the {self.name} law (its branch "
                              f"families: sub-critical, {modelled})")
 
 
@@ -63,27 +172,130 @@ class EdgeLaw:
     """A dimensional edge law (what ``Contact(..., law=...)`` takes).  Subclasses are frozen dataclasses.
 
     The defaults are JKR's: the edge is a crack whose critical energy release rate is w (Griffith, (3.5)-(3.6));
-    a law changes what it needs to."""
+    a law changes what it needs to, and implements :meth:`edge`.
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> [law.name for law in (jkrcyl.laws.Griffith(), jkrcyl.laws.Dugdale(sigma0=5e6))]
+    ['JKR', 'Maugis-Dugdale']
+    """
 
     name: str = "edge law"
     param: str = "law"          # the user's parameter that selects the law, named in messages
 
     def edge_work(self, w: float) -> float:
-        """The energy per unit area the edge condition asks for, G_c [J/m^2] at a contact edge in equilibrium:
-        w for JKR.  It is what enters the normalised adhesion M = sqrt(G_c A R)/(sqrt(2) Delta vartheta)."""
+        """The energy per unit area the edge condition asks for, G_c [J/m^2] at a contact edge in equilibrium.
+
+        It is what enters the normalised adhesion M = sqrt(G_c A R)/(sqrt(2) Delta vartheta) (section 6).
+
+        Parameters
+        ----------
+        w : float
+            The work of adhesion [J/m^2].
+
+        Returns
+        -------
+        float
+            G_c [J/m^2]: w for JKR.
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> jkrcyl.laws.Griffith().edge_work(0.05)
+        0.05
+        """
         return w
 
-    def check(self, contact) -> None:
-        """ValueError (naming this law's parameter) where the law cannot be used with this contact."""
+    def check(self, contact: "jkrcyl.Contact") -> None:
+        """Reject a contact the law cannot be used with (called once, when the Contact is made).
 
-    def edge(self, contact) -> Edge:             # pragma: no cover - interface
-        """The normalised edge of this law for a contact (Delta > 0)."""
+        Parameters
+        ----------
+        contact : jkrcyl.Contact
+            The contact being made.
+
+        Returns
+        -------
+        None
+
+        Raises
+        ------
+        ValueError
+            Naming this law's parameter (the Maugis-Dugdale law: sigma0, for w = 0, Delta = 0 or a strength
+            outside the domain); none for JKR.
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+        >>> jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.0, materials=m, sigma0=1e6)
+        Traceback (most recent call last):
+        ...
+        ValueError: sigma0: a cohesive law needs w > 0 and Delta > 0 (h0 = w/sigma0, lengths over Delta), ...
+        """
+
+    def edge(self, contact: "jkrcyl.Contact") -> Edge:             # pragma: no cover - interface
+        """The normalised edge of this law for a contact (Delta > 0): what the model core asks.
+
+        Parameters
+        ----------
+        contact : jkrcyl.Contact
+            The contact (its ``problem`` carries the edge).
+
+        Returns
+        -------
+        Edge
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+        >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m)
+        >>> round(jkrcyl.laws.Dugdale(sigma0=5e6).edge(pin).s0, 6)         # sigma0 R beta*/(4 pi Delta)
+        11.140846
+        """
         raise NotImplementedError
 
-    def stress_intensity(self, contact) -> float:
-        """K [Pa m^1/2] at a contact edge in equilibrium: (pi/4) A K^2 = G_c, A = beta*/(2 pi) (3.5)-(3.6)."""
+    def stress_intensity(self, contact: "jkrcyl.Contact") -> float:
+        """K [Pa m^1/2] at a contact edge in equilibrium: (pi/4) A K^2 = G_c, A = beta*/(2 pi) (3.5)-(3.6).
+
+        Parameters
+        ----------
+        contact : jkrcyl.Contact
+            The contact (its w and beta*).
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+        >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m)
+        >>> round(pin.law.stress_intensity(pin)), round(float(pin.state(0.5).K))         # the state's K (3.4)
+        (11952, 11952)
+        """
         return math.sqrt(8 * self.edge_work(contact.w) / contact.beta)
 
-    def range(self, contact) -> float:
-        """The range of the adhesive traction [m]: 0 for an edge of zero range (JKR)."""
+    def range(self, contact: "jkrcyl.Contact") -> float:
+        """The range of the adhesive traction [m]: 0 for an edge of zero range (JKR).
+
+        Parameters
+        ----------
+        contact : jkrcyl.Contact
+            The contact.
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+        >>> jkrcyl.laws.Griffith().range(jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m))
+        0.0
+        """
         return 0.0

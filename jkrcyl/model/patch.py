@@ -64,6 +64,7 @@ class SinglePatch:
     dense_points: int          # points of a branch's search table: what the solver's cost allows
     a_max: float               # the largest contact parameter the solver resolves (the tables stop there)
     noise: float               # relative rounding of its states (what a difference quotient must stay above)
+    pole_needs_gb = True       # whether a_crit depends on gb = (1/G_I)/beta* (not for the closed forms)
 
     def states(self, a) -> Slice:                       # pragma: no cover - interface
         raise NotImplementedError
@@ -96,8 +97,9 @@ class SinglePatch:
         """(lo, hi) of delta/Delta where the free pin (no contact, no traction) is an equilibrium."""
         return -2.0, 0.0
 
-    def stops_short(self, regime: str) -> str:
-        """Why the branch's table ends before the branch does ('' where it reaches the end: a_crit, round)."""
+    def stops_short(self, regime: str, a=None) -> str:
+        """Why the branch's table ends before the branch does ('' where it reaches the end: a_crit, round);
+        with a: only where a is the table's last point (the end the table stops short at)."""
         return ""
 
     def continues(self, regime: str, a: float):

@@ -16,6 +16,7 @@ from dataclasses import InitVar, dataclass
 
 from .._validate import finite_scalar, theta as _check_theta
 from ..laws.griffith import GRIFFITH_EDGE
+from ..materials import snap_alpha
 from ..numerics import kernels as _k
 from .edge import Edge
 
@@ -60,7 +61,7 @@ class Problem:
         ar = finite_scalar("alpha_ratio", self.alpha_ratio, low=-1.0, high=1.0, low_open=True, **tiny)
         if ar == 1.0:
             raise ValueError("alpha_ratio must be in (-1, 1) (|alpha*| < beta* for every elastic pair), got 1")
-        object.__setattr__(self, "alpha_ratio", ar)
+        object.__setattr__(self, "alpha_ratio", snap_alpha(ar))
         if not isinstance(self.edge, Edge):
             raise ValueError(f"edge must be a normalised edge law (jkrcyl.model.edge.Edge, e.g. "
                              f"jkrcyl.laws.GRIFFITH_EDGE or jkrcyl.laws.DugdaleEdge(s0)), got {self.edge!r}")
@@ -80,10 +81,10 @@ class Problem:
         problem's edge law."""
         return self.edge.models(family)
 
-    def require(self, family: str, what: str = "") -> "Problem":
+    def require(self, family: str, what: str = "", param: str = "") -> "Problem":
         """ValueError (the edge law's one message) unless the branch family is modelled for its law; returns the
         problem."""
-        self.edge.require(family, what)
+        self.edge.require(family, what, param)
         return self
 
     @classmethod

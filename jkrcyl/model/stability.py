@@ -23,6 +23,11 @@ import numpy as np
 HELD = {"load": ("p", "dp_da"), "grip": ("dn", "ddn_da"), "grip-work": ("dw", "ddw_da")}
 
 
+def stable(dX_da, dX_dk):
+    """The one rule: stable under the held X where (dX/da) (dX/dk)|_a < 0 (module docstring); arrays or scalars."""
+    return np.asarray(dX_da * dX_dk < 0)
+
+
 def fixed_arc_derivatives(s, work_shift):
     """{control: (dX/dk)|_a} of a Slice: p_k, dn_k and dn_k + c p_k (c = Problem.work_shift)."""
     return {"load": s.p_k, "grip": s.dn_k, "grip-work": s.dn_k + work_shift * s.p_k}
@@ -31,7 +36,7 @@ def fixed_arc_derivatives(s, work_shift):
 def single_patch_flags(s, work_shift):
     """{control: stable (bool array)} of a single-patch Slice (module docstring)."""
     d = fixed_arc_derivatives(s, work_shift)
-    return {ctl: np.asarray(getattr(s, HELD[ctl][1]) * d[ctl] < 0) for ctl in HELD}
+    return {ctl: stable(getattr(s, HELD[ctl][1]), d[ctl]) for ctl in HELD}
 
 
 def release_rates(s, m, work_shift):

@@ -2,14 +2,14 @@
 solved by Gauss-Chebyshev collocation on one or two arcs (bottom |phi| < eps, top |phi - pi| < eps_top).
 
 Normalised unknown nu = N R beta*/(4 pi Delta) (so n = nu/vartheta is the n of section 6 and of
-jkrcyl.twopatch; nu stays finite for a rigid cradle).  On every arc, with t = phi - psi,
+jkrcyl.model.two_patch; nu stays finite for a rigid cradle).  On every arc, with t = phi - psi,
 
     (delta/Delta) cos(phi) - (1 - cos(phi)) = - int nu(psi) K(phi - psi) dpsi,                  (5.2)
     K(t) = cos t log(2 - 2 cos t) + gb cos t + 1 - 1/(2 vartheta) + ar (pi sign(t) sin t - t sin t),
 
 gb = (1/G_I)/beta*, ar = alpha*/beta* (alpha* = (kappa - 1)/(2G) - (kappa_I - 1)/(2G_I)); the alpha* part
 pi sin|t| - t sin t is written pi sign(t) sin t - t sin t, valid without wrapping for |t| < 2 pi.  At ar = 0
-this is (5.2) (the kernel of jkrcyl.numerics.arcs_log).  The kernel is the sum of the Michell modes of the
+this is (5.2) (the kernel of the closed forms, derive/approach.py).  The kernel is the sum of the Michell modes of the
 hole and the disk (derive/green.py); K'' + K reproduces the csc^2 and local -pi alpha* N terms of (2.1).
 
 Discretisation: phi = c + e s, nu dphi = u(s) ds/sqrt(1 - s^2) (square-root ends explicit, u smooth at

@@ -1,4 +1,4 @@
-"""Maugis-Dugdale (cohesive-zone) equilibrium states of the pin in the hole, any material pair (issue 19).
+"""Maugis-Dugdale (cohesive-zone) equilibrium states of the pin in the hole, any material pair.
 
 Normalised as jkrcyl.numerics.arcs: nu = N R beta*/(4 pi Delta) (N compressive positive), p = int nu cos(phi)
 dphi = P beta*/(4 pi Delta) (= vartheta P*), m = M vartheta (M_R* for vartheta = inf), and the Dugdale law
@@ -18,11 +18,16 @@ end solves h(c) = h0 (Brent, the LU reused: only the zone right-hand side and on
 
 Node count: v is analytic on the contact with singularities at the zone ends +-c (the jump of the traction),
 so Chebyshev converges like rho^-n with rho the Bernstein ellipse through c/eps: n ~ sqrt(eps/(c - eps)) (as
-for near-touching arcs in jkrcyl.twopatch).  The zone length is first estimated by the Dugdale crack value
+for near-touching arcs in jkrcyl.model.two_patch).  The zone length is first estimated by the Dugdale crack value
 c - eps ~ m^2/(4 s0^2) and the node count corrected once from the root.  Measured (lambda = 10, eps = 0.8,
 rho = 1.263): errors 5e-5, 1e-7, 2e-9, 7e-13 at n = 24, 48, 64, 96 (benchmarks/bench_cohesive.py); the
-default (11 sqrt(eps/(c - eps)), at least 24) gives ~1e-9.  Up to NODES_MAX = 1024 nodes (256 at alpha* != 0),
-i.e. lambda up to a few hundred; beyond, cohesive_state refuses (the state is JKR's to O(lambda^-2) there).
+default (11 sqrt(eps/(c - eps)), at least 24) gives ~1e-9.  Where that exceeds LAYER_NODES (a thin zone,
+c - eps ~ eps/lambda^2: lambda above ~5) the zone's end layer is subtracted in closed form instead
+(jkrcyl.numerics.cohesive_layer: the half-plane Maugis traction, whose potential is exact) and the rest is
+smooth: 32 nodes (64 at alpha* != 0) resolve any lambda up to LAMBDA_MAX = 1e4 (~1e-10 at alpha* = 0, ~1e-9 at
+|alpha*/beta*| = 0.2; tests/test_cohesive_layer.py), beyond which cohesive_state refuses naming sigma0 (c = eps + d
+keeps d only to ulp(c), ~1e-8 relative at 1e4; the states are JKR's there to O(lambda^-2)).  The fixed contact,
+its checks and the node policy: jkrcyl.numerics.cohesive_contact.
 
 JKR limit: at a fixed contact the states differ from the Griffith ones by C/lambda^2 (the zone length over the
 contact, C = O(1): 0.77 for p at M = 0.4, eps = 0.8; 1e-4 relative is reached near lambda = 100 there); the
@@ -36,16 +41,16 @@ import math
 from collections import namedtuple
 
 import numpy as np
-from scipy.linalg.lapack import dgetrf as _dgetrf
-from threadpoolctl import ThreadpoolController
 
 from ..generated import cohesive as _gc
 from .._validate import count, finite_scalar, theta as _check_theta
 from . import arcs as _arcs
 from . import arcs_enrich as _en
 from . import cohesive_kernels as _ck
+from . import cohesive_layer as _cl
+from .cohesive_contact import (FixedContact, contact_nodes, nodes_for, LAPACK_NODES, LAYER_NODES, NODES_ALPHA,  # noqa: F401
+                               NODES_LAYER, NODES_LAYER_ALPHA, NODES_MAX, NODES_MAX_ALPHA, NODES_MIN, NODES_PER_ZONE)
 
-_BLAS = ThreadpoolController()
 CohesiveState = namedtuple("CohesiveState", [
     "eps", "c", "c_top", "zones", "p", "delta_over_Delta", "delta_work_over_Delta", "h_pi_over_Delta", "k", "B",
     "m", "s0", "h0_over_Delta", "n", "fields"])
@@ -58,14 +63,7 @@ paper's delta), delta_work_over_Delta = delta/Delta + (gb/2) p (work conjugate o
 at phi = pi; k: edge coefficient at the contact end (0: finite stress); B = int nu dphi; m, s0, h0_over_Delta:
 the law; n: collocation nodes (0 without contact); fields: .gap(phi), .pressure(phi)."""
 
-NODES_MIN = 24            # alpha* = 0: a contact far from its zone ends (spectral, ~1e-13)
-NODES_PER_ZONE = 11       # nodes per sqrt(eps/(c - eps)): the Bernstein ellipse through the zone end (~1e-9)
-NODES_MAX = 1024
-NODES_ALPHA = 8           # alpha* != 0: node counts in multiples of 8 (one enrichment table per count)
-NODES_MAX_ALPHA = 256
-SCAN_FACTOR = 1.25        # upward scan for the first zone-end root: steps x 1.25, at most 0.05 rad
-SCAN_STEP = 0.05
-LAPACK_NODES = 96         # above: LAPACK's LU (blocked), below: the compiled one (no call overhead)
+LAMBDA_MAX = 1e4          # the transition parameter 4 s0/m^(2/3) supported (check_lambda)
 GAP_END_SKIP = 1e-6        # gap_check, alpha* != 0: see there
 GAP_TOL_REL = 1e-6         # gap_check: a violation must exceed this times the state's gap scale (max(h0, max |h|)):
                            # next to the ends the evaluated gap carries ~1e-8 of the engine's error (alpha* != 0,
@@ -74,8 +72,11 @@ GAP_TOL_REL = 1e-6         # gap_check: a violation must exceed this times the s
 
 def zone_displacement(phi, zones, kernel):
     """Z(phi) = int over the zones of K(phi - psi) dpsi; zones: (k, 2) array of (lo, hi) in [-pi, pi]."""
-    phi = np.ascontiguousarray(np.atleast_1d(phi), dtype=float)
-    return _ck.zone_sum(phi, np.ascontiguousarray(zones, dtype=float), kernel.k0, kernel.k1, kernel.ar)
+    phi = np.ascontiguousarray(np.atleast_1d(phi), dtype=float).ravel()
+    zones = np.ascontiguousarray(zones, dtype=float)
+    if zones.ndim != 2 or zones.shape[1] != 2:
+        raise ValueError(f"zones must be an array of (lo, hi) rows, got shape {zones.shape}")
+    return _ck.zone_sum(phi, zones, kernel.k0, kernel.k1, kernel.ar)
 
 
 def zones_of(c, c_top=0.0):
@@ -91,81 +92,6 @@ def zone_load(zones):
         z = _gc.zone_load(hi=hi, lo=lo)
         load, width = load + z.load, width + z.width
     return load, width
-
-
-def _factor(A):
-    """LU of the collocation matrix: compiled for small systems, LAPACK getrf on one BLAS thread above
-    LAPACK_NODES (threaded BLAS calls leave workers spinning that slow the small solves that follow)."""
-    if A.shape[0] <= LAPACK_NODES:
-        return _ck.lu_factor(A)
-    with _BLAS.limit(limits=1, user_api="blas"):
-        lu, piv, _ = _dgetrf(A)
-    return lu, _ck.perm_of_pivots(piv)
-
-
-class FixedContact:
-    """The contact |phi| < eps with n nodes: one LU, the unit solutions and the linear functionals.
-
-    Unknown vector u of jkrcyl.numerics.arcs (node values, then the alpha* enrichment), in nu units, for v.
-    """
-
-    def __init__(self, eps, kernel, n):
-        self.eps, self.kernel = float(eps), kernel
-        sy = self.sys = _arcs.Arcs([(0.0, self.eps)], kernel, n)
-        phin = self.eps * sy._xt                      # collocation angles
-        lu, perm = _factor(sy.A)
-        nn, mm = sy.n, sy.m
-        ek = np.empty(nn + mm)                        # u -> k (arcs.Arcs.edge)
-        ek[:nn] = -sy.D.sum(axis=0)
-        ek[nn:] = -_en.G_END[:mm]
-        self.ek = ek / math.sqrt(2 * self.eps)
-        U0, U1, kadj, k_0, k_1 = _ck.unit_solutions(lu, perm, phin, self.ek)
-        sf, gf = _arcs._fine_grid()
-        self.fx = (lu, perm, phin, U0, U1, k_0, k_1, kadj, kernel.k0, kernel.k1,
-                   kernel.ar, sy._ac, sy._ae, sy.s, sy.D, sy._Lam, sy._Sig, sy._omega, sy._gcs, sy._gss, sf, gf)
-        nodes = self.eps * sy.s                       # u -> int v cos, int v (arcs.Arcs.moments)
-        self.ep = self._moment_vector(np.cos(nodes))
-        self.eb = self._moment_vector(np.ones_like(nodes))
-
-    def _moment_vector(self, f):
-        sy = self.sys
-        out = np.empty(sy.n + sy.m)
-        out[:sy.n] = math.pi / sy.n * f
-        out[sy.n:] = [sy._mu[j] @ (sy.D @ f) for j in range(sy.m)]
-        return out
-
-    def solve(self, zones, s0):
-        """(delta/Delta, u) with k = 0 for the zone set: v for the rhs clearance + delta cos - s0 Z."""
-        return _ck.solve_zone(self.fx, np.ascontiguousarray(zones, dtype=float), float(s0))
-
-    def gap(self, phi, dn, u, zones, s0):
-        """h/Delta at exterior angles phi."""
-        phi = np.ascontiguousarray(np.atleast_1d(phi), dtype=float)
-        return _ck.gap(self.fx, phi, float(dn), u, np.ascontiguousarray(zones, dtype=float), float(s0))
-
-    def state(self, s0, h0, d_start, c_top=0.0):
-        """(zone length or None, delta/Delta, u, h(pi)/Delta) in one compiled call (cohesive_kernels.state)."""
-        d, dn, u, h_pi = _ck.state(self.fx, self.eps, float(s0), float(h0), float(d_start), SCAN_FACTOR, SCAN_STEP,
-                                   float(c_top))
-        return (None if d < 0 else d), dn, u, h_pi
-
-    def zone_end_near(self, s0, h0, d_near, c_top=0.0):
-        """The zone length nearest to d_near with h(c) = h0 (None: none within a factor 100)."""
-        d = _ck.zone_end_near(self.fx, self.eps, float(s0), float(h0), float(d_near), float(c_top))
-        return None if d < 0 else d
-
-    def zone_end(self, s0, h0, d_start, c_top=0.0):
-        """Zone length c - eps with h(c) = h0 (None: h < h0 up to pi - c_top); see cohesive_kernels.zone_end."""
-        d = _ck.zone_end(self.fx, self.eps, float(s0), float(h0), float(d_start), SCAN_FACTOR, SCAN_STEP,
-                         float(c_top))
-        return None if d < 0 else d
-
-
-def nodes_for(eps, zone, ar=0.0):
-    """Nodes for the contact |phi| < eps with its zone end at eps + zone (zone >= 0)."""
-    need = NODES_PER_ZONE * math.sqrt(eps / zone) if zone > 0 else 0.0
-    n = min(max(NODES_MIN, _arcs.nodes_for(eps, ar), need), NODES_MAX)
-    return int(n) if ar == 0.0 else int(min(NODES_ALPHA * math.ceil(n / NODES_ALPHA), NODES_MAX_ALPHA))
 
 
 def dugdale_zone(m, s0):
@@ -209,17 +135,19 @@ class _Fields:
             if sy.m:
                 val = val + C[0] @ _en._g(x[inside])[:sy.m]
             out[inside] = val / (e * np.sqrt(1 - x[inside] ** 2)) - self.s0
+            c = self.fc.layer_end(self.zones)
+            if c is not None:
+                out[inside] += self.s0 * _cl.traction(np.ascontiguousarray(phi[inside]), e, c)
         return out
 
 
 # --- states ------------------------------------------------------------------------------------------------
 def _state(eps, c, fc, dn, u, zones, m, s0, kernel, gb, n, c_top=0.0, h_pi=None):
-    load, width = zone_load(zones)
     if fc is not None:
-        p = fc.ep @ u - s0 * load
-        B = fc.eb @ u - s0 * width
+        p, B = fc.load_width(u, zones, s0)
         k = fc.ek @ u
     else:
+        load, width = zone_load(zones)
         p, B, k = -s0 * load, -s0 * width, 0.0
     f = _Fields(fc, dn, u, zones, s0, kernel)
     if c + c_top >= math.pi:
@@ -233,28 +161,42 @@ def _state(eps, c, fc, dn, u, zones, m, s0, kernel, gb, n, c_top=0.0, h_pi=None)
 
 
 def _law(m, s0, theta, gb, ar):
-    """Validated (m, s0, Kernel)."""
+    """Validated (m, s0, Kernel); ValueError naming sigma0 beyond the supported transition parameter."""
     m = finite_scalar("m", m, low=0.0)
     s0 = finite_scalar("s0", s0, low=0.0, low_open=True)
     theta = _check_theta(theta)
     gb = finite_scalar("gb", gb, low=0.0)
     ar = finite_scalar("ar", ar, low=-1.0, high=1.0, low_open=True)
+    check_lambda(m, s0)
     return m, s0, _arcs.Kernel(theta, gb, ar)
 
 
-def cohesive_state(eps, m, s0, theta, gb, ar=0.0, n=None, near=None):
+def check_lambda(m, s0):
+    """ValueError naming sigma0 and lambda when lambda = 4 s0/m^(2/3) (the transition parameter at Delta/R -> 0,
+    jkrcyl.numerics.cohesive_scales) exceeds LAMBDA_MAX: there the zone is thinner than double precision keeps
+    to ~1e-8 relative (c - eps ~ eps/lambda^2), and the states are JKR's to O(lambda^-2)."""
+    if m > 0 and 4 * s0 > LAMBDA_MAX * m ** (2 / 3):
+        lam = 4 * s0 / m ** (2 / 3)
+        raise ValueError(f"sigma0 is too large for the cohesive law: its transition parameter lambda = {lam:.4g} "
+                         f"must be at most {LAMBDA_MAX:g} (lambda is proportional to sigma0: at most "
+                         f"{LAMBDA_MAX / lam:.3g} times this sigma0); the Maugis-Dugdale states are JKR's there to "
+                         "O(lambda^-2): use the JKR law (sigma0=None)")
+
+
+def cohesive_state(eps, m, s0, theta, gb, ar=0.0, n=None, near=None, layered=None):
     """The Maugis-Dugdale state with the contact |phi| < eps (normalised; module docstring).
 
     eps: contact half-angle in (0, pi) [rad]; m = M vartheta (M_R* for vartheta = inf; m = 0: no adhesion, the
-    adhesionless state); s0 = sigma0 R beta*/(4 pi Delta) > 0; theta = vartheta >= 1/2 (inf: rigid cradle);
-    gb = (1/G_I)/beta*; ar = alpha*/beta*; n: nodes (default: from the zone length, ~1e-10).  The zone is the
+    adhesionless state); s0 = sigma0 R beta*/(4 pi Delta) > 0 (lambda = 4 s0/m^(2/3) <= LAMBDA_MAX); theta =
+    vartheta >= 1/2 (inf: rigid cradle); gb = (1/G_I)/beta*; ar = alpha*/beta*; n: nodes (default: from the zone
+    length, ~1e-10: :func:`contact_nodes`); layered: subtract the zone's end layer (None: where the zone needs
+    more than LAYER_NODES nodes; False with a thin zone needs n <= NODES_MAX nodes for it).  The zone is the
     bottom one |phi| < c with h(c) = h0 (the first root above the Dugdale estimate: the branch that tends to
     JKR as s0 -> inf), or the whole exterior when h <= h0 up to phi = pi (zones = 'all', c = pi; delta from
     k = 0 only).  The zone end can have several roots and the first one can turn back in eps (a fold of the
     branch): near = a zone length c - eps selects the root nearest to it (following a branch by continuity);
     None is returned when no root lies within a factor 100 of it.  Feasibility (gap >= 0, the law obeyed
-    everywhere): :func:`gap_check`.  ValueError when the zone is too thin for NODES_MAX nodes (lambda beyond a
-    few hundred): the state is JKR's there to O((c - eps)/eps) = O(lambda^-2).
+    everywhere): :func:`gap_check`.
     """
     eps = finite_scalar("eps", eps, low=0.0, high=math.pi, low_open=True)
     if eps >= math.pi:
@@ -268,11 +210,9 @@ def cohesive_state(eps, m, s0, theta, gb, ar=0.0, n=None, near=None):
         return _state(eps, eps, fc, dn, u, zones, m, s0, kernel, gb, fc.sys.n)
     h0 = m * m / s0
     d_guess = dugdale_zone(m, s0) if near is None else finite_scalar("near", near, low=0.0, low_open=True)
-    _check_resolved(eps, d_guess, kernel.ar, n)
-    n_fixed = nn
-    nn = nn or nodes_for(eps, d_guess, kernel.ar)
+    nn, lay = _nodes(eps, d_guess, kernel.ar, nn, layered)
     for _ in range(3):
-        fc = FixedContact(eps, kernel, nn)
+        fc = FixedContact(eps, kernel, nn, lay)
         if near is None:
             d, dn, u, h_pi = fc.state(s0, h0, d_guess / 2)
         else:
@@ -282,20 +222,23 @@ def cohesive_state(eps, m, s0, theta, gb, ar=0.0, n=None, near=None):
             dn, u = fc.solve(zones_of(eps + d), s0)
             h_pi = None
         c = math.pi if d is None else eps + d
-        need = n_fixed or nodes_for(eps, c - eps, kernel.ar)
-        if need <= nn:
+        need, lay_need = _nodes(eps, c - eps, kernel.ar, None if n is None else nn, layered)
+        if need <= nn and (lay or not lay_need):
             break
-        _check_resolved(eps, c - eps, kernel.ar, n)
-        nn, d_guess = need, (c - eps if near is None else near)
+        nn, lay, d_guess = need, lay or lay_need, (c - eps if near is None else near)
     return _state(eps, c, fc, dn, u, zones_of(c), m, s0, kernel, gb, nn, h_pi=h_pi)
 
 
-def _check_resolved(eps, zone, ar, n):
-    """The zone must be resolved: nodes_for within twice the cap (about 1e-6 at the cap), unless n is given."""
-    if n is None and zone < eps * (NODES_PER_ZONE / (2 * (NODES_MAX if ar == 0.0 else NODES_MAX_ALPHA))) ** 2:
-        raise ValueError(f"s0 too large for the collocation: the zone c - eps ~ {zone:.3g} rad is below the "
-                         f"resolution of {NODES_MAX if ar == 0.0 else NODES_MAX_ALPHA} nodes at eps = {eps:.6g} "
-                         "(lambda beyond a few hundred); the state is JKR's there to O((c - eps)/eps)")
+def _nodes(eps, zone, ar, n, layered):
+    """(n, layered) of cohesive_state: contact_nodes unless n or layered is given."""
+    n_auto, lay = contact_nodes(eps, zone, ar)
+    if layered is not None and bool(layered) != lay:
+        lay = bool(layered)
+        n_auto = nodes_for(eps, zone, ar) if not lay else contact_nodes(eps, 0.0, ar)[0]
+        if not lay and n is None and NODES_PER_ZONE * math.sqrt(eps / zone) > 2 * NODES_MAX:
+            raise ValueError(f"layered: the zone c - eps ~ {zone:.3g} rad at eps = {eps:.6g} needs more than "
+                             f"{NODES_MAX} nodes without its end layer subtracted (layered=None or True)")
+    return (n_auto if n is None else n), lay
 
 
 GapCheck = namedtuple("GapCheck", ["min_gap", "max_zone_gap", "min_free_gap", "feasible"])

@@ -1,4 +1,4 @@
-"""The contact branch of one Maugis-Dugdale law as a 1-D family (issue 19, phase 2), and its per-point data.
+"""The contact branch of one Maugis-Dugdale law as a 1-D family, and its per-point data.
 
 Notation of jkrcyl.numerics.cohesive (kernel scale: p = P beta*/(4 pi Delta), lengths over Delta, m, s0, h0 = m^2/s0).
 At a fixed contact |phi| < eps and zone end c every state is affine in the approach delta/Delta (the LU of the
@@ -24,9 +24,9 @@ import math
 from collections import namedtuple
 
 import numpy as np
-from scipy.optimize import brentq
 
 from . import cohesive as _co
+from . import roots as _roots
 from . import cohesive_kernels as _ck
 from . import cohesive_zones as _cz
 from . import cohesive_follow as _fo
@@ -36,7 +36,7 @@ START = 1e-3            # the trace starts at eps = START times the half-plane s
 EPS_MARGIN = 1e-3       # below the receding limit (the pair's pole)
 P_CAP = 200.0           # the branch is traced up to p = P_CAP m^(4/3) (200 times the adhesion load scale, ~100
                         # times the pull-off; beyond, solve warns: jkrcyl.BranchLimitWarning)
-FD_REL = 2e-4           # finite-difference steps in eps and c, relative to min(eps, c - eps)
+FD_REL = 2e-4           # finite-difference steps: in eps at a fixed zone length, relative to eps; in c, to c - eps
 GAP_POINTS = 96         # Gauss-Legendre points of int h over the zone (the interface energy)
 ALL_POINTS = 160        # eps samples of a branch whose zone reaches round at the touch end
 ROUND_SCAN = 10         # contacts scanned for a zone that stops reaching round (top_opens)
@@ -63,32 +63,30 @@ class Law:
 
     def nodes(self, eps):
         """Nodes as a function of eps only (a smooth residual along the trace: jkrcyl.numerics.cohesive_pull_off)."""
-        return _co.nodes_for(eps, self.d0, self.ar) // 8 * 8 + 8
+        return self.contact(eps)[0]
+
+    def contact(self, eps):
+        """(nodes, layered) as a function of eps only, from the Dugdale zone estimate d0
+        (jkrcyl.numerics.cohesive.contact_nodes): the same contact for the trace and every state on it."""
+        n, layered = _co.contact_nodes(eps, self.d0, self.ar)
+        return (n if layered else min(n // 8 * 8 + 8, _co.NODES_MAX)), layered
+
+    def state(self, eps, near=None):
+        """jkrcyl.numerics.cohesive.cohesive_state at eps with this law's contact (nodes, layer)."""
+        n, layered = self.contact(eps)
+        return _co.cohesive_state(eps, self.m, self.s0, self.theta, self.gb, self.ar, n=n, near=near,
+                                  layered=layered)
 
     def _fixed(self, eps):
-        return _co.FixedContact(eps, self.kernel, self.nodes(eps))
-
-
-def _zone_solution(law, fc, zones):
-    lu, perm, phin = fc.fx[:3]
-    return _ck.lu_solve(lu, perm, -_co.zone_displacement(phin, zones, law.kernel))
+        return _co.FixedContact(eps, self.kernel, *self.contact(eps))
 
 
 def affine(law, eps, c):
     """[k, p, B, g] at the contact eps, zone end c (c >= pi: zones 'all'), each (value at delta = 0, d/d delta);
-    g = h(c) - h0 (None for 'all')."""
+    g = h(c) - h0 (None for 'all'): jkrcyl.numerics.cohesive_kernels.affine."""
     fc = law.fixed(eps)
-    zones = _co.zones_of(min(c, math.pi))
-    ua, ub = fc.fx[3] + law.s0 * _zone_solution(law, fc, zones), fc.fx[4]
-    load, width = _co.zone_load(zones)
-    out = [(fc.ek @ ua, fc.ek @ ub), (fc.ep @ ua - law.s0 * load, fc.ep @ ub), (fc.eb @ ua - law.s0 * width, fc.eb @ ub)]
-    if c < math.pi:
-        g0 = fc.gap(c, 0.0, ua, zones, law.s0)[0] - law.h0
-        g1 = fc.gap(c, 1.0, ub, zones, 0.0)[0] - fc.gap(c, 0.0, np.zeros_like(ub), zones, 0.0)[0]
-        out.append((g0, g1))
-    else:
-        out.append(None)
-    return out
+    v = _ck.affine(fc.fx, fc.ek, fc.ep, fc.eb, float(c), law.s0, law.h0)
+    return [(v[0], v[1]), (v[2], v[3]), (v[4], v[5]), (v[6], v[7]) if c < math.pi else None]
 
 
 def _at(pair, delta):
@@ -105,7 +103,7 @@ def top_opens(law, points=ROUND_SCAN):
     the round-zone states go on and the first root belongs to a family met at a fold in eps.  A scan of
     ``points`` contacts (geometric in eps up to eps_hi: the top gap grows with the contact), the first short one
     bisected to 1e-10 in log eps."""
-    c_at = lambda e: _co.cohesive_state(e, law.m, law.s0, law.theta, law.gb, law.ar, n=law.nodes(e)).c
+    c_at = lambda e: law.state(e).c
     eps = np.geomspace(law.eps_lo, law.eps_hi, points)
     if c_at(eps[0]) < math.pi:
         return None
@@ -122,17 +120,19 @@ def top_opens(law, points=ROUND_SCAN):
     # a continuous opening (c ~ pi - k sqrt(eps - eps_open)) shrinks 10x; a jump stays
     if opening[1] <= max(ROUND_JUMP, 0.5 * opening[0]):
         return None
-    below = _co.cohesive_state(math.exp(lo), law.m, law.s0, law.theta, law.gb, law.ar, n=law.nodes(math.exp(lo)))
+    below = law.state(math.exp(lo))
     kind = "top bridge" if below.h_pi_over_Delta > (1 - 1e-2) * law.h0 else "S-shaped branch"
     return math.exp(hi), math.pi - opening[1], kind
 
 
 def trace(law):
-    """The branch as (x points (n, 2), kind): 'zone' (x = (log eps, log(c - eps))) or 'all' (x = (log eps, 0))."""
-    start = _co.cohesive_state(law.eps_lo, law.m, law.s0, law.theta, law.gb, law.ar, n=law.nodes(law.eps_lo))
+    """The branch as (x points (n, 2), kind, reason): kind 'zone' (x = (log eps, log(c - eps))) or 'all'
+    (x = (log eps, 0)); reason '' when the trace ends where the branch leaves its domain (the receding limit, the
+    zone reaching round, p = P_CAP m^(4/3)), else why it stopped before (jkrcyl.numerics.cohesive_follow)."""
+    start = law.state(law.eps_lo)
     if start.zones == "all":
         eps = np.geomspace(law.eps_lo, law.eps_hi, ALL_POINTS)
-        return np.column_stack([np.log(eps), np.zeros(eps.size)]), "all"
+        return np.column_stack([np.log(eps), np.zeros(eps.size)]), "all", ""
 
     def inside(x):
         eps, d = math.exp(x[0]), math.exp(x[1])
@@ -142,7 +142,8 @@ def trace(law):
         return _at(aff[1], -aff[0][0] / aff[0][1]) < law.p_cap
 
     x0 = np.array([math.log(law.eps_lo), math.log(start.c - law.eps_lo)])
-    return _fo.follow(law, x0, inside), "zone"
+    got = _fo.follow(law, x0, inside)
+    return got.points, "zone", got.reason
 
 
 def arclength(x):
@@ -170,7 +171,7 @@ def project(law, x_pred, normal, scale):
         for side in (1, -1):
             fs = f(side * w)
             if np.isfinite(fs) and fs * f0 < 0:
-                tau = brentq(f, *sorted((0.0, side * w)), xtol=1e-15, rtol=1e-14)
+                tau = _roots.root(f, *sorted((0.0, side * w)))
                 return x_pred + tau * normal
     d = law.fixed(eps).zone_end_near(law.s0, law.h0, math.exp(x_pred[1]))
     return None if d is None else np.array([x_pred[0], math.log(d)])
@@ -182,7 +183,7 @@ def state_values(law, eps, c):
     delta = -aff[0][0] / aff[0][1]
     fc = law.fixed(eps)
     zones = _co.zones_of(min(c, math.pi))
-    u = fc.fx[3] + delta * fc.fx[4] + law.s0 * _zone_solution(law, fc, zones)
+    u = fc.fx[3] + delta * fc.fx[4] + law.s0 * fc.zone_unit(zones)
     return _at(aff[1], delta), delta, fc.gap(math.pi, delta, u, zones, law.s0)[0]
 
 
@@ -197,21 +198,25 @@ def _slopes(law, eps, c, direction):
     aff = affine(law, eps, c)
     delta = -aff[0][0] / aff[0][1]
     k_d, p_d = aff[0][1], aff[1][1]
-    he = FD_REL * (min(eps, c - eps) if c < math.pi else eps)
-    de = [affine(law, eps + s * he, c) for s in (1, -1)]
     dv = lambda i, pair, h: (_at(pair[0][i], delta) - _at(pair[1][i], delta)) / (2 * h)
-    k_e, p_e = dv(0, de, he), dv(1, de, he)
     if c < math.pi:
-        hc = FD_REL * min(c - eps, math.pi - c)
+        # d/d eps at fixed c = d/d eps at fixed zone length d = c - eps (a step on the scale of eps: the states
+        # are smooth there, however thin the zone) less d/dc (a step on the scale of d, on the same LU)
+        he, hc = FD_REL * min(eps, math.pi - c), FD_REL * min(c - eps, math.pi - c)
+        de = [affine(law, eps + s * he, c + s * he) for s in (1, -1)]
         dc = [affine(law, eps, c + s * hc) for s in (1, -1)]
         k_c, p_c, g_c = dv(0, dc, hc), dv(1, dc, hc), dv(3, dc, hc)
-        g_e, g_d = dv(3, de, he), aff[3][1]
+        k_e, p_e, g_e = dv(0, de, he) - k_c, dv(1, de, he) - p_c, dv(3, de, he) - g_c
+        g_d = aff[3][1]
         T = np.cross([k_e, k_d, k_c], [g_e, g_d, g_c])          # (d eps, d delta, d c)
         sigma = 1.0 if T[0] * direction[0] + T[2] * direction[1] >= 0 else -1.0
         D_p, D_dn = sigma * (k_e * p_d - k_d * p_e), sigma * k_e
         rate = math.hypot(T[0] / eps, (T[2] - T[0]) / (c - eps))   # dt/dT: t is arclength in x
         dp_dt, ddn_dt = sigma * (p_e * T[0] + p_d * T[1] + p_c * T[2]) / rate, sigma * T[1] / rate
     else:
+        he = FD_REL * eps
+        de = [affine(law, eps + s * he, c) for s in (1, -1)]
+        k_e, p_e = dv(0, de, he), dv(1, de, he)
         D_p, D_dn = p_d / k_d, 1.0 / k_d
         ddn_deps = -k_e / k_d                                    # t = log eps
         dp_dt, ddn_dt = eps * (p_e + p_d * ddn_deps), eps * ddn_deps
@@ -224,7 +229,7 @@ def point(law, eps, c, direction):
     delta, dp_dt, ddn_dt, D_p, D_dn = _slopes(law, eps, c, direction)
     fc = law.fixed(eps)
     zones = _co.zones_of(min(c, math.pi))
-    u = fc.fx[3] + delta * fc.fx[4] + law.s0 * _zone_solution(law, fc, zones)
+    u = fc.fx[3] + delta * fc.fx[4] + law.s0 * fc.zone_unit(zones)
     st = _co._state(eps, c, fc, delta, u, zones, law.m, law.s0, law.kernel, law.gb, fc.sys.n)
     return Point(eps, st.c, delta, st.p, st.B, dp_dt, ddn_dt, D_p, D_dn, st.h_pi_over_Delta, potential(st),
                  _co.gap_check(st, 120).feasible, st.zones, st.fields)

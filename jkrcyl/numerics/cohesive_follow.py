@@ -1,4 +1,4 @@
-"""Continuation of the Maugis-Dugdale contact branch (issue 19): the curve k = 0, h(c) = h0 in the plane
+"""Continuation of the Maugis-Dugdale contact branch: the curve k = 0, h(c) = h0 in the plane
 x = (log eps, log(c - eps)) (notation of jkrcyl.numerics.cohesive and jkrcyl.numerics.cohesive_branch).
 
 Every point of the plane with a new eps costs a new collocation matrix and its LU (jkrcyl.numerics.cohesive
@@ -10,14 +10,27 @@ LUs than Newton on both coordinates.  Used for the branch table of the model cor
 the stand-alone pull-off (cohesive_pull_off).
 """
 import math
+from collections import namedtuple
 
 import numpy as np
 
 from . import cohesive_kernels as _ck
+from . import cohesive_roots as _cr
+
+LOG_PI = math.log(math.pi)
+Followed = namedtuple("Followed", ["points", "reason"])
+Followed.__doc__ = """The traced points (n, 2) in (log eps, log(c - eps)) and why the trace ended early ('' when it
+left the domain, as it should: the caller's inside(x) said so)."""
+
 
 def residual(law, x):
-    """h(c) - h0 at x = (log eps, log(c - eps)) with k = 0 (delta eliminated)."""
+    """h(c) - h0 at x = (log eps, log(c - eps)) with k = 0 (delta eliminated); NaN off the plane's physical part
+    (eps or eps + d not in (0, pi), a non-finite x): the correctors treat it as no point."""
+    if not (x[0] < LOG_PI and x[1] < LOG_PI):       # NaN fails too
+        return math.nan
     eps, d = math.exp(x[0]), math.exp(x[1])
+    if not (0.0 < eps and eps + d < math.pi):
+        return math.nan
     return _ck._residual(d, (law.fixed(eps).fx, eps, law.s0, law.h0, 0.0))
 
 
@@ -30,7 +43,9 @@ FD_STEP = 1e-6          # follow: finite-difference step of the tangent in (log 
 
 def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None):
     """The branch k = 0, h(c) = h0 through x0 = (log eps, log(c - eps)) (on it), towards growing eps, up to
-    where it leaves the domain inside(x): the points (n, 2).
+    where it leaves the domain inside(x): a Followed (the points (n, 2) and '' -- or the reason it stopped
+    before: no tangent (the residual flat or not finite), the step below H_MIN without a point on the branch,
+    or max_steps).
 
     Natural-parameter continuation with a switching parameter: predict along the tangent and correct on the
     line of fixed eps (the zone end at a fixed contact, one LU) unless the branch runs almost along the zone
@@ -45,6 +60,8 @@ def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None):
     needs a new LU at every iterate and every finite difference in eps: 3-4 times the LUs.)"""
     pts = [np.asarray(x0, dtype=float)]
     t, side = _tangent(law, pts[0], np.array([1.0, 0.0]))
+    if t is None:
+        return Followed(np.array(pts), _stopped("no tangent at the start", pts[0]))
     h, edge = h0, False
     for _ in range(max_steps):
         x = pts[-1]
@@ -57,24 +74,48 @@ def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None):
             y = normal_line(law, pred, t, h)
         ok = near(y)
         if ok and not inside(y):
-            if h <= 64 * H_MIN or (done is not None and done(y) and _tangent(law, y, t)[0] @ t >= TURN):
-                break
+            if h <= 64 * H_MIN or (done is not None and done(y) and _turn_ok(law, y, t)):
+                return Followed(np.array(pts), "")
             h, edge = h / 4, True
             continue
         t_new, side_new = _tangent(law, y, t) if ok else (None, None)
-        if t_new is None or t_new @ t < TURN:
+        if t_new is None or not t_new @ t >= TURN:
             h /= 2
             if h < H_MIN:
-                break
+                return Followed(np.array(pts), _stopped("the step fell below H_MIN without a point on the branch",
+                                                        x))
             continue
         pts.append(y)
         t, side, h, edge = t_new, side_new, (h if edge else min(1.5 * h, h_max)), False
-    return np.array(pts)
+    return Followed(np.array(pts), _stopped(f"{max_steps} steps taken", pts[-1]))
+
+
+def _stopped(why, x):
+    return (f"the cohesive branch could not be followed beyond eps = {math.exp(x[0]):.6g} rad (zone length "
+            f"{math.exp(x[1]):.3g} rad): {why}")
+
+
+def _turn_ok(law, y, t):
+    t_new = _tangent(law, y, t)[0]
+    return t_new is not None and t_new @ t >= TURN
+
+
+def _step_log_d(x):
+    """The finite-difference step in log(c - eps): 0.1 FD_STEP, at least ~1e-9 c/(c - eps) (c = eps + d holds d
+    only to ulp(c): a thin zone's d to ulp(c)/d relative)."""
+    d = math.exp(x[1])
+    return max(0.1 * FD_STEP, 1e-9 * (math.exp(x[0]) + d) / d)
+
+
+def log_d_resolution(x):
+    """How finely log(c - eps) is resolved at x: a few ulp(c)/(c - eps) (stop a secant there)."""
+    d = math.exp(x[1])
+    return 4e-16 * (math.exp(x[0]) + d) / d
 
 
 def _side(law, x):
     """The sign of the residual's slope in c at fixed eps (no new LU): opposite on a fold's two sides."""
-    e = 0.1 * FD_STEP
+    e = _step_log_d(x)
     return math.copysign(1.0, residual(law, x + np.array([0.0, e])) - residual(law, x - np.array([0.0, e])))
 
 
@@ -82,19 +123,25 @@ def _tangent(law, x, prev):
     """(unit tangent of the branch at x, oriented along prev; the sign of the residual's slope in c at fixed
     eps, opposite on a fold's two sides): one LU for the slope in eps (forward difference), none in c."""
     f = lambda dx: residual(law, x + np.asarray(dx))
-    e, ec = FD_STEP, 0.1 * FD_STEP
+    e, ec = FD_STEP, _step_log_d(x)
     g = np.array([(f((e, 0.0)) - f((0.0, 0.0))) / e, (f((0.0, ec)) - f((0.0, -ec))) / (2 * ec)])
-    t = np.array([-g[1], g[0]]) / math.hypot(*g)
+    norm = math.hypot(*g)
+    if not (np.all(np.isfinite(g)) and norm > 0):     # off the plane, or a residual flat to round-off: no tangent
+        return None, None
+    t = np.array([-g[1], g[0]]) / norm
     return (-t if t @ prev < 0 else t), math.copysign(1.0, g[1])
 
 
 def fixed_eps(law, pred, h):
     """The branch's point at the predicted eps with log(c - eps) within h of the predicted one (secant from
     it: the branch through the prediction, also next to a fold), or None."""
+    if not (pred[0] < LOG_PI and pred[1] < LOG_PI):
+        return None
     eps = math.exp(pred[0])
     if eps + math.exp(pred[1]) >= math.pi:
         return None
-    d = _ck.zone_end_secant(law.fixed(eps).fx, eps, law.s0, law.h0, float(pred[1]), float(h), 0.0)
+    d = _cr.zone_end_secant(law.fixed(eps).fx, eps, law.s0, law.h0, float(pred[1]), float(h), 0.0,
+                            log_d_resolution(pred))
     return None if d < 0 else np.array([pred[0], math.log(d)])
 
 
@@ -104,13 +151,16 @@ def normal_line(law, pred, t, h):
     f = lambda tau: residual(law, pred + tau * n)
     a, b = 0.0, 1e-3 * h
     fa, fb = f(a), f(b)
+    tol = max(1e-13 * max(1.0, np.abs(pred).max()), log_d_resolution(pred))
     for _ in range(SECANT_STEPS):
-        if not (np.isfinite(fa) and np.isfinite(fb)) or fb == fa:
+        if not (np.isfinite(fa) and np.isfinite(fb)):
             return None
+        if fb == fa:                          # flat: converged at the resolution of d, else stalled
+            return pred + b * n if abs(b - a) <= 4 * tol else None
         a, fa, b = b, fb, b - fb * (b - a) / (fb - fa)
         if abs(b) > 0.5 * h:
             return None
-        if abs(b - a) <= 1e-13 * max(1.0, np.abs(pred).max()):
+        if abs(b - a) <= tol:
             return pred + b * n
         fb = f(b)
     return None
@@ -118,6 +168,8 @@ def normal_line(law, pred, t, h):
 
 def fixed_zone(law, pred, h):
     """The branch's point at the predicted zone length with log eps within h of the predicted one, or None."""
+    if not (pred[0] < LOG_PI and pred[1] < LOG_PI):
+        return None
     top = math.log(math.pi - math.exp(pred[1])) - 1e-9
     f = lambda le: residual(law, np.array([le, pred[1]])) if le < top else math.nan
     a, b = pred[0], pred[0] + 1e-3 * h              # secant in log eps (each iterate one LU)

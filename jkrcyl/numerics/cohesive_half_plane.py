@@ -9,10 +9,10 @@ eps -> 0 limit (the zone alone) when p falls all the way there (small lambda).
 """
 import math
 
-from scipy.optimize import brentq, minimize_scalar
 
 from ..generated import cohesive as _gc
 from .._validate import finite_scalar
+from . import roots as _roots
 
 EPS_SMALL = 1e-7            # the 'zone alone' end of the scan (abar = 5e-8)
 
@@ -27,7 +27,7 @@ def half_plane_load(eps, lam):
     hi = 2.0
     while closure(hi) < 0:
         hi *= 2
-    ratio = brentq(closure, 1 + 1e-15, hi, xtol=1e-15, rtol=1e-15)
+    ratio = _roots.root(closure, 1 + 1e-15, hi)
     return _gc.half_plane_state(c=ratio * eps, eps=eps, s0=s0).p
 
 
@@ -41,6 +41,4 @@ def half_plane_pull_off(lam):
     i = min(range(len(vals)), key=vals.__getitem__)
     if i == 0:
         return vals[0]
-    res = minimize_scalar(f, bracket=(xs[i - 1], xs[i], xs[min(i + 1, 60)]), method="brent",
-                          options=dict(xtol=1e-12))
-    return min(res.fun, vals[0])
+    return min(_roots.minimum(f, xs[i - 1], xs[i], xs[min(i + 1, 60)], 1e-12)[1], vals[0])

@@ -6,9 +6,13 @@ Notation as jkrcyl.numerics.cohesive: a fixed contact |phi| < eps with the collo
 jkrcyl.numerics.arcs (unknowns u: node values, then the alpha* enrichment), the contact unknown v = nu + s0,
 zones (lo, hi) rows in [-pi, pi].  A fixed contact is the tuple
 fx = (lu, perm, phi_nodes, U0, U1, k_unit0, k_unit1, k_adjoint, k0, k1, ar, ac, ae, s, D, Lam, Sig, omega, gcs, gss,
-      s_fine, g_fine)
+      s_fine, g_fine, layered, eps, x_table, gc, gs, qmax, smooth)
 (its LU, collocation angles, the clearance and approach solutions, their edge coefficients, the adjoint of the
-edge coefficient, the kernel constants and the tables of jkrcyl.numerics.arcs).
+edge coefficient, the kernel constants and the tables of jkrcyl.numerics.arcs; then whether the Dugdale end layer
+of the bottom zone is subtracted (jkrcyl.numerics.cohesive_layer), the half-width, the table points phi/eps, the
+Chebyshev coefficients of cos(eps s), sin(eps s), their last index and the layer's smooth-moment table).
+Every array of fx is built by jkrcyl.numerics.cohesive.FixedContact, which checks their sizes against each other
+before any kernel runs; arrays from a caller (angles, zones, u) are checked there too.
 """
 import math
 
@@ -17,8 +21,8 @@ from numba import njit
 
 from ..generated import cohesive as _gc
 from . import arcs_kernels as _ak
+from . import cohesive_layer as _cl
 from . import enrichment_kernels as _ek
-from . import roots
 
 PI = math.pi
 
@@ -125,10 +129,35 @@ def zones_of(c, c_top=0.0):
 
 
 @njit(cache=True)
-def solve_zone(fx, zones, s0):
-    """(delta/Delta, u) of the fixed contact fx with the zones: k = 0 eliminates delta (module docstring)."""
-    (lu, perm, phin, U0, U1, ku0, ku1, kadj, k0, k1, ar) = fx[:11]
+def layer_end(fx, zones):
+    """The bottom zone end c > eps whose end layer the fixed contact subtracts, or -1 (none: not layered, no zone,
+    or zones 'all')."""
+    if not fx[22] or zones.shape[0] == 0:
+        return -1.0
+    lo, hi = zones[0, 0], zones[0, 1]
+    if lo == -hi and fx[23] < hi < PI:
+        return hi
+    return -1.0
+
+
+@njit(cache=True)
+def zone_rhs(fx, zones):
+    """The right-hand side of a unit zone traction at the table points: -Z, plus the potential of the end layer
+    v_s when it is subtracted (then the solution is w = v - v_s)."""
+    phin, k0, k1, ar = fx[2], fx[8], fx[9], fx[10]
     rz = -zone_sum(phin, zones, k0, k1, ar)
+    c = layer_end(fx, zones)
+    if c > 0:
+        rz += _cl.potential(fx[24], fx[23], c, k0, k1, ar, fx[25], fx[26], fx[27], fx[28], fx[13].size)
+    return rz
+
+
+@njit(cache=True)
+def solve_zone(fx, zones, s0):
+    """(delta/Delta, u) of the fixed contact fx with the zones: k = 0 eliminates delta (module docstring); u
+    without the end layer when it is subtracted (layer_end)."""
+    (lu, perm, phin, U0, U1, ku0, ku1, kadj, k0, k1, ar) = fx[:11]
+    rz = zone_rhs(fx, zones)
     kz = 0.0
     for i in range(rz.size):
         kz += kadj[i] * rz[i]
@@ -139,7 +168,8 @@ def solve_zone(fx, zones, s0):
 
 @njit(cache=True)
 def gap_rows(fx, phi):
-    """Rows u -> -int_contact v K(phi - psi) dpsi at exterior angles phi (arcs.Arcs.operator, .enrichment)."""
+    """Rows u -> -int_contact v K(phi - psi) dpsi at exterior angles phi (arcs.Arcs.operator, .enrichment; the
+    enrichment columns within END_NEAR eps of a contact end by end_enrichment)."""
     (k0, k1, ar, ac, ae, s, D, Lam, Sig, omega, gcs, gss, sfine, gfine) = fx[8:22]
     n, m = s.size, omega.shape[0]
     rows = np.empty((phi.size, n + m))
@@ -147,12 +177,65 @@ def gap_rows(fx, phi):
     _ak.operator(cen, phi, ac, ae, s, D, k0, k1, ar, rows, 0)
     if m:
         _ek.enrichment(cen, phi, ac, ae, s, k0, k1, ar, False, Lam, Sig, omega, gcs, gss, sfine, gfine, rows, n)
+        e = ae[0]
+        for i in range(phi.size):
+            x = abs(phi[i]) / e
+            if 1.0 < x < 1.0 + END_NEAR:
+                end_enrichment(x, e, k0, k1, ar, rows[i, n:n + m])
     return rows
+
+
+END_NEAR = 0.6           # gap_rows: the enrichment columns by end_enrichment up to x = 1.6 (the engine's NEAR_ARC)
+_GX, _GW = np.polynomial.legendre.leggauss(12)
+
+
+@njit(cache=True)
+def end_enrichment(x, e, k0, k1, ar, out):
+    """out[j] = -int_0^pi K(e (x - cos theta)) g_j(cos theta) dtheta at 1 < x (a point off the contact end; the
+    enrichment functions g_j of jkrcyl.numerics.arcs_enrich), by Gauss-Legendre on panels graded geometrically
+    toward theta = 0 at the scale theta_s = sqrt(2 (x - 1)) of the kernel's near log singularity (the 4096-point
+    fine grid of the engine loses digits there: ~1e-8 at x - 1 = 3e-6, ~1e-4 at 1e-7; tests/test_cohesive_layer.py)."""
+    m = out.size
+    for j in range(m):
+        out[j] = 0.0
+    ths = math.sqrt(2.0 * (x - 1.0))
+    # panels: geometric toward 0 from min(ths/16, 1e-4) to pi/2 (g_j ~ theta^2 log(theta) at 0), and toward pi
+    # from pi/2 to pi - 1e-5 (g_j ~ (pi - theta)^2 log(pi - theta) there), each with 12 Gauss-Legendre points
+    a = min(ths / 16, 1e-4)
+    k = 0
+    while True:
+        if k == 0:
+            lo, hi = 0.0, a
+        elif lo < PI / 2:
+            lo, hi = hi, min(2 * hi, PI / 2)
+        else:
+            lo = hi
+            hi = PI if PI - lo <= 2e-5 else PI - 0.5 * (PI - lo)
+        k += 1
+        for q in range(_GX.size):
+            th = lo + (hi - lo) * 0.5 * (_GX[q] + 1)
+            wq = (hi - lo) * 0.5 * _GW[q]
+            sv = math.cos(th)
+            t = e * (x - sv)
+            ct, st = math.cos(t), math.sin(t)
+            f = 2 * ct * math.log(abs(2 * math.sin(0.5 * t))) + k1 * ct + k0 + ar * (PI * st - t * st)
+            rp, rm = 1 - sv, 1 + sv
+            xp = rp * math.log(rp) if rp > 0 else 0.0
+            xm = rm * math.log(rm) if rm > 0 else 0.0
+            g0, g1, g2 = xp + xm, rp * xp + rm * xm, xp * xp + xm * xm
+            out[0] -= wq * f * g0
+            if m > 1:
+                out[1] -= wq * f * g1
+            if m > 2:
+                out[2] -= wq * f * g2
+        if hi >= PI:
+            break
 
 
 @njit(cache=True)
 def gap(fx, phi, dn, u, zones, s0):
-    """h/Delta at exterior angles phi: (1 - cos) - (delta/Delta) cos - int v K + s0 Z."""
+    """h/Delta at exterior angles phi: (1 - cos) - (delta/Delta) cos - int v K + s0 Z (v = w + v_s: u is w and
+    -s0 Q(phi/eps) adds the end layer's part when it is subtracted)."""
     k0, k1, ar = fx[8], fx[9], fx[10]
     rows = gap_rows(fx, phi)
     zs = zone_sum(phi, zones, k0, k1, ar)
@@ -162,6 +245,48 @@ def gap(fx, phi, dn, u, zones, s0):
         for j in range(u.size):
             acc += rows[i, j] * u[j]
         out[i] = 2 * math.sin(phi[i] / 2) ** 2 - dn * math.cos(phi[i]) + acc + s0 * zs[i]
+    c = layer_end(fx, zones)
+    if c > 0 and s0 != 0.0:
+        e = fx[23]
+        q = _cl.potential(phi / e, e, c, k0, k1, ar, fx[25], fx[26], fx[27], np.zeros((0, _cl.N_SMOOTH)))
+        for i in range(phi.size):
+            out[i] -= s0 * q[i]
+    return out
+
+
+@njit(cache=True)
+def zone_totals(fx, zones, s0):
+    """(load, width) of the zone traction -s0 with the end layer's v_s (int cos, int 1): what p and B add to
+    ep.u and eb.u."""
+    load = width = 0.0
+    for j in range(zones.shape[0]):
+        z = _gc.zone_load(hi=zones[j, 1], lo=zones[j, 0])
+        load += z.load
+        width += z.width
+    c = layer_end(fx, zones)
+    lp = lb = 0.0
+    if c > 0:
+        lp, lb = _cl.loads(fx[23], c, fx[25])
+    return s0 * (lp - load), s0 * (lb - width)
+
+
+@njit(cache=True)
+def affine(fx, ek, ep, eb, c, s0, h0):
+    """k, p, B and g = h(c) - h0 at the zone end c (c >= pi: zones 'all', g = NaN), each as the value at
+    delta = 0 and its slope in delta/Delta (all linear in delta): one zone solve and one gap row."""
+    lu, perm, U0, U1 = fx[0], fx[1], fx[3], fx[4]
+    zones = zones_of(min(c, PI), 0.0)
+    ua = U0 + s0 * lu_solve(lu, perm, zone_rhs(fx, zones))
+    pz, bz = zone_totals(fx, zones, s0)
+    out = np.empty(8)
+    out[0], out[1] = np.dot(ek, ua), np.dot(ek, U1)
+    out[2], out[3] = np.dot(ep, ua) + pz, np.dot(ep, U1)
+    out[4], out[5] = np.dot(eb, ua) + bz, np.dot(eb, U1)
+    out[6] = out[7] = math.nan
+    if c < PI:
+        row = gap_rows(fx, np.array([c]))[0]
+        out[6] = gap(fx, np.array([c]), 0.0, ua, zones, s0)[0] - h0
+        out[7] = np.dot(row, U1) - math.cos(c)
     return out
 
 
@@ -175,38 +300,6 @@ def _residual(d, args):
     zones = zones_of(c, c_top)
     dn, u = solve_zone(fx, zones, s0)
     return gap(fx, np.array([c]), dn, u, zones, s0)[0] - h0
-
-
-_brent = roots.brent_solver(_residual)
-
-
-@njit(cache=True)
-def zone_end(fx, eps, s0, h0, d_start, factor, step, c_top):
-    """Zone length d with h(eps + d) = h0 (a top zone |phi - pi| < c_top given): the first sign change upward
-    from d_start (steps x factor, at most step rad), then Brent; -1 when h < h0 up to c = pi - c_top (the zone
-    reaches round, or meets the top zone).  Below d_start the zone may be unresolved by the nodes, so a root
-    below is bracketed with F(0) = -h0."""
-    args = (fx, eps, s0, h0, c_top)
-    d_max = PI - c_top - eps
-    d = min(d_start, d_max / 2)
-    f = _residual(d, args)
-    if f < 0:
-        lo, flo = d, f
-        while f < 0:
-            if d >= d_max:
-                return -1.0
-            lo, flo = d, f
-            d = min(d * factor, d + step, d_max)
-            f = _residual(d, args)
-        return _brent(lo, d, flo, f, args)
-    hi, fhi = d, f
-    for _ in range(6):
-        d /= 2
-        f = _residual(d, args)
-        if f < 0:
-            return _brent(d, hi, f, fhi, args)
-        hi, fhi = d, f
-    return _brent(0.0, hi, -h0, fhi, args)
 
 
 @njit(cache=True)
@@ -230,65 +323,3 @@ def unit_solutions(lu, perm, phin, ek):
         r1[i] = math.cos(phin[i])
     U0, U1 = lu_solve(lu, perm, r0), lu_solve(lu, perm, r1)
     return U0, U1, lu_solve_transposed(lu, perm, ek), np.dot(ek, U0), np.dot(ek, U1)
-
-
-@njit(cache=True)
-def state(fx, eps, s0, h0, d_start, factor, step, c_top):
-    """One call for a state: the zone length d (-1: the zone reaches round), delta/Delta, u and h(pi)/Delta."""
-    d = zone_end(fx, eps, s0, h0, d_start, factor, step, c_top)
-    zones = zones_of(PI if d < 0 else eps + d, c_top)
-    dn, u = solve_zone(fx, zones, s0)
-    return d, dn, u, gap(fx, np.array([PI]), dn, u, zones, s0)[0]
-
-
-@njit(cache=True)
-def zone_end_near(fx, eps, s0, h0, d_near, c_top):
-    """The zone length nearest to d_near (in log d) with h(eps + d) = h0: brackets grown by 5 % a side around
-    d_near until a sign change, then Brent; -1 if none within a factor 100 (the branch through d_near has
-    turned: a fold of the zone end in eps)."""
-    args = (fx, eps, s0, h0, c_top)
-    d_max = PI - c_top - eps
-    lo = hi = min(d_near, d_max)
-    flo = fhi = _residual(lo, args)
-    if flo == 0.0:
-        return lo
-    for _ in range(95):
-        lo2, hi2 = lo / 1.05, min(hi * 1.05, d_max)
-        flo2 = _residual(lo2, args)
-        if flo2 * flo <= 0.0:
-            return _brent(lo2, lo, flo2, flo, args)
-        if hi2 > hi:
-            fhi2 = _residual(hi2, args)
-            if fhi2 * fhi <= 0.0:
-                return _brent(hi, hi2, fhi, fhi2, args)
-            hi, fhi = hi2, fhi2
-        lo, flo = lo2, flo2
-    return -1.0
-
-
-@njit(cache=True)
-def zone_end_secant(fx, eps, s0, h0, log_d, span, c_top):
-    """The zone length d with h(eps + d) = h0 by the secant method in log d from log_d (and log_d + span/1000),
-    within span of log_d: the root of the branch through a predicted point, also where a fold of the zone end in
-    eps puts a second root close by (which a bracket search can step over); -1 when the iteration leaves that
-    interval or (pi - c_top - eps), stalls, or takes more than 30 steps."""
-    args = (fx, eps, s0, h0, c_top)
-    top = math.log(PI - c_top - eps)
-    a, b = log_d, log_d + 1e-3 * span
-    if b >= top:
-        return -1.0
-    fa, fb = _residual(math.exp(a), args), _residual(math.exp(b), args)
-    for _ in range(30):
-        if fb == 0.0:
-            return math.exp(b)
-        if fb == fa or not (math.isfinite(fa) and math.isfinite(fb)):
-            return -1.0
-        c = b - fb * (b - a) / (fb - fa)
-        if not abs(c - log_d) <= span or c >= top:
-            return -1.0
-        a, fa, b = b, fb, c
-        if abs(b - a) <= 1e-13 * max(1.0, abs(b)):
-            return math.exp(b)
-        fb = _residual(math.exp(b), args)
-    return -1.0
-

@@ -1,4 +1,4 @@
-"""Load-control pull-off of the Maugis-Dugdale contact (issue 19, normalised; the model core wires it in).
+"""Load-control pull-off of the Maugis-Dugdale contact (normalised; the model core wires it in).
 
 The states with one contact and one zone form curves in the plane (eps, d), d = c - eps the zone length: the
 zone end can turn back in eps (at lambda ~ 1-10 the first root of h(c) = h0 disappears at a fold and the curve
@@ -19,9 +19,9 @@ import math
 from collections import namedtuple
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
 
 from . import cohesive as _co
+from . import roots as _roots
 from . import cohesive_branch as _cb
 from . import cohesive_follow as _fo
 from . import cohesive_zones as _cz
@@ -58,16 +58,19 @@ def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=
         return none("no adhesion (m = 0)")
     law = _cb.Law(m, s0, theta, gb, ar)
     eps_lo, eps_hi = min(start * 2 * m ** (2 / 3), 1e-3), law.eps_hi
-    nodes = law.nodes
-
     def load(x):
         eps, d = math.exp(x[0]), math.exp(x[1])
         fc = law.fixed(eps)
         zones = _co.zones_of(eps + d)
         dn, u = fc.solve(zones, s0)
-        return fc.ep @ u - s0 * _co.zone_load(zones)[0]
+        return fc.load_width(u, zones, s0)[0]
 
-    start = _co.cohesive_state(eps_lo, m, s0, theta, gb, ar, n=nodes(eps_lo))
+    def along(e_ref, d_near):
+        """States near the zone length d_near with the contact (nodes, layer) of e_ref: smooth in eps."""
+        n, layered = law.contact(e_ref)
+        return lambda e: _co.cohesive_state(e, m, s0, theta, gb, ar, n=n, near=d_near, layered=layered)
+
+    start = law.state(eps_lo)
     if start.zones == "all":
         # h0 >= 2 Delta: the range alone reaches round and no state pulls (a jump there changes no answer)
         opens = _cb.top_opens(law) if law.h0 < 2.0 else None
@@ -86,8 +89,10 @@ def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=
 
     x0 = np.array([math.log(eps_lo), math.log(start.c - eps_lo)])
     # without the zero-load state the trace need not creep up to p = 0: a step out of it ends the trace
-    pts = _fo.follow(law, x0, inside, h0=steps[0], h_max=steps[1],
-                     done=None if zero_load else lambda y: left_by_load[0])
+    pts, stopped = _fo.follow(law, x0, inside, h0=steps[0], h_max=steps[1],
+                              done=None if zero_load else lambda y: left_by_load[0])
+    if stopped:                         # the branch was not followed to where it leaves the domain
+        return none(stopped)
     eps_end, d_end = np.exp(pts[-1])
     if left_by_load[0]:                 # the branch's point past p = 0 closes the search for a minimum of p
         pts = np.vstack([pts, left_by_load[1]])
@@ -96,7 +101,7 @@ def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=
             eps_end < eps_hi * 0.999 and eps_end + d_end < math.pi * (1 - 1e-6)))):
         return none("no zero-load contact on the branch: p < 0 all along it (it ends at the receding limit, "
                     "turns back to eps -> 0 or its zone reaches round)")
-    state = lambda e: _co.cohesive_state(e, m, s0, theta, gb, ar, n=nodes(eps_end), near=d_end)
+    state = along(eps_end, d_end)
     zero = _zero_load(state, eps_end) if zero_load else None
     # the walk starts at the zero-load contact only if it is feasible (the model core's rule); without the refined
     # state the branch's point just past p = 0 stands in for it
@@ -110,15 +115,12 @@ def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=
             return PullOff(st.p, st.eps, "fold", st, zero, "")
         if p[j - 1] > p[j] < p[j + 1]:
             eps_j, d_j = np.exp(pts[j])
-            on_branch = lambda e: _co.cohesive_state(e, m, s0, theta, gb, ar, n=nodes(eps_j), near=d_j)
+            on_branch = along(eps_j, d_j)
             f = lambda e: (lambda st: math.inf if st is None else st.p)(on_branch(e))
             lo, hi = sorted((math.exp(pts[j - 1][0]), math.exp(pts[j + 1][0])))
-            try:
-                res = minimize_scalar(f, bracket=(lo, eps_j, hi), method="brent", options=dict(xtol=xtol))
-            except ValueError:           # the traced point is not below its neighbours on the re-solved branch
-                res = minimize_scalar(f, bounds=(lo, hi), method="bounded", options=dict(xatol=xtol * 1e-2))
-            st = on_branch(res.x)
-            return PullOff(st.p, res.x, "fold", st, zero, "")
+            x, _ = _roots.minimum(f, lo, eps_j, hi, xtol)     # bounded where the re-solved point is not lowest
+            st = on_branch(x)
+            return PullOff(st.p, x, "fold", st, zero, "")
     touch = _cz.contactless_touch(m, s0, theta, gb, ar, eps_small=min(1e-6, eps_lo * 1e-3))
     if touch is None:
         return none("the branch ends in a zone reaching round (p -> 0)", zero)
@@ -132,11 +134,7 @@ def _fold_past_eps_fold(law, pts, j, load, xtol):
     on = lambda ld: _fo.fixed_zone(law, np.array([pts[j, 0], ld]), span)
     f = lambda ld: (lambda y: math.inf if y is None else load(y))(on(ld))
     lo, hi = sorted((pts[j - 1, 1], pts[j + 1, 1]))
-    try:
-        res = minimize_scalar(f, bracket=(lo, pts[j, 1], hi), method="brent", options=dict(xtol=xtol))
-    except ValueError:
-        res = minimize_scalar(f, bounds=(lo, hi), method="bounded", options=dict(xatol=xtol * 1e-2))
-    y = on(res.x)
+    y = on(_roots.minimum(f, lo, pts[j, 1], hi, xtol)[0])
     if y is None:
         y = pts[j]
     eps, c = math.exp(y[0]), math.exp(y[0]) + math.exp(y[1])
@@ -155,4 +153,4 @@ def _zero_load(state, eps_end):
             break
     if s is None:
         return state(eps_end)
-    return state(brentq(lambda e: state(e).p, eps_end, hi, xtol=1e-13, rtol=1e-13))
+    return state(_roots.root(lambda e: state(e).p, eps_end, hi, xtol=1e-13 * eps_end))

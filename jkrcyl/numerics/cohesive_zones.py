@@ -1,4 +1,4 @@
-"""Maugis-Dugdale states beyond a contact with one zone (issue 19): the pin without contact, held by a zone at
+"""Maugis-Dugdale states beyond a contact with one zone: the pin without contact, held by a zone at
 the bottom and/or a zone at the top (closed form up to the zone ends), the free pin inside a range that reaches
 round, and contacts with a second zone at the top of the hole.  Normalisation and notation as
 jkrcyl.numerics.cohesive (zones: the bottom one |phi| < c, the top one |phi - pi| < c_top).
@@ -12,9 +12,9 @@ on a scan of c_top is returned.
 import math
 
 import numpy as np
-from scipy.optimize import brentq
 
 from . import cohesive as _co
+from . import roots as _roots
 
 TOP_SCAN = np.concatenate([np.geomspace(1e-6, 0.05, 12)[:-1], np.arange(0.05, math.pi, 0.05)])
 
@@ -55,7 +55,7 @@ def contactless_states(c, m, s0, theta, gb, ar=0.0):
     vals = [top_residual(ct) for ct in grid]
     for i in range(len(grid) - 1):
         if vals[i] * vals[i + 1] < 0:
-            ct = brentq(top_residual, grid[i], grid[i + 1], xtol=1e-15, rtol=1e-15)
+            ct = _roots.root(top_residual, grid[i], grid[i + 1])
             states.append(contactless_state(c, m, s0, theta, gb, ar, ct))
     return states
 
@@ -92,7 +92,7 @@ def top_zone_states(eps, m, s0, theta, gb, ar=0.0, n=None):
             break
         val = top_residual(ct)
         if prev is not None and prev[1] * val < 0:
-            ct_root = brentq(top_residual, prev[0], ct, xtol=1e-15, rtol=1e-15)
+            ct_root = _roots.root(top_residual, prev[0], ct)
             c, zones, dn, u = solve(ct_root)
             out.append(_co._state(eps, c, fc, dn, u, zones, base.m, s0, kernel, gb, base.n, ct_root))
         prev = (ct, val)
@@ -118,7 +118,7 @@ def contactless_touch(m, s0, theta, gb, ar=0.0, eps_small=1e-6):
     for width in 1e-6 * 4.0 ** np.arange(12):
         lo, hi = max(c0 * (1 - width), lo_end + 1e-9), min(c0 * (1 + width), hi_end - 1e-9)
         if h_bottom(lo) * h_bottom(hi) < 0:
-            c = brentq(h_bottom, lo, hi, xtol=1e-15, rtol=1e-15)
+            c = _roots.root(h_bottom, lo, hi)
             return contactless_state(c, m, s0, theta, gb, ar)
     return None
 

@@ -1,7 +1,7 @@
-"""Pseudo-arclength continuation of the zero set of a scalar function on the plane (issue 12).
+"""Pseudo-arclength continuation of the zero set of a scalar function on the plane.
 
 The two-patch equilibria at fixed (M, vartheta) are the curves F(eps, eps_top) = 0 of one scalar residual
-in the half-angles (jkrcyl.twopatch); this module follows such a curve from a point on it until it leaves a
+in the half-angles (jkrcyl.analysis.tracing); this module follows such a curve from a point on it until it leaves a
 domain or closes on itself.  Predictor: a step h along the unit tangent t (perpendicular to grad F);
 corrector: Newton on [F(y) = 0, t . (y - x) = h] (Keller's pseudo-arclength).  Gradients by central
 differences, so F need only be a callable.  No plane grid: cost is proportional to the curve length.

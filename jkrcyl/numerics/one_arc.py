@@ -5,7 +5,7 @@ The fixed-arc system of numerics.arcs (bottom arc |phi| < eps, unknown nu = N R 
 clearance Delta, or R for the neat fit) is A v = c b0 + d b1 with b0 = -(1 - cos phi), b1 = cos phi, c = Delta/L
 and d = delta/L.  Eliminating d through the unit cases u0 = A^-1 b0, u1 = A^-1 b1 (as numerics.arcs.Linear does)
 cancels where A is singular -- the unit cases pass a pole (det A = 0) at arcs where the physical state is smooth
-(issue 18: a rubber roller in a rigid cradle).  Here (v, d) solve the bordered system
+(a rubber roller in a rigid cradle once got a wrong pull-off there).  Here (v, d) solve the bordered system
 
     [ A      -b1 ] [v]   [c b0]
     [ e_k^T   0  ] [d] = [ k  ]          (e_k: the edge coefficient k of nu ~ -k/sqrt(eps - |phi|))
@@ -133,7 +133,9 @@ def resolved_a_max(ar):
 def _half_tables(n, enriched):
     """The tables of numerics.arcs._tables restricted to the table points x >= 0 (the even half of one arc)."""
     _, _, xt, _, Lam, Sig, omega, _, LD0, SD0 = _arcs._tables(n, enriched)
-    keep = np.nonzero(xt >= 0)[0]
+    # the first (n + 1)//2 nodes (descending: x >= 0), then the end points; not xt >= 0, which drops the middle
+    # node of an odd n when cos(pi/2) rounds below 0 (the kernel then read past its right-hand side)
+    keep = np.concatenate([np.arange((n + 1) // 2), np.arange(n, xt.size)])
     cut = lambda T: np.ascontiguousarray(T[:, keep, :]) if T.shape[0] else T
     return (np.ascontiguousarray(xt[keep]), np.ascontiguousarray(LD0[keep]), np.ascontiguousarray(SD0[keep]),
             cut(Lam), cut(Sig), omega)

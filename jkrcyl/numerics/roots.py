@@ -13,10 +13,11 @@ from numba import njit
 EPS = 2.220446049250313e-16
 
 
-def _make_brent(f):
+def _make_brent(f, xtol=0.0):
     def brent(lo, hi, flo, fhi, args):
         """Root of f in [lo, hi] with f(lo) f(hi) < 0: Brent's method (inverse quadratic / secant steps
-        safeguarded by bisection), then bisection of the last bracket to adjacent doubles."""
+        safeguarded by bisection), then bisection of the last bracket to adjacent doubles (xtol = 0), or to xtol
+        (an absolute tolerance in x, for a noisy f whose last digits a bisection cannot use)."""
         a, b, fa, fb = lo, hi, flo, fhi
         c, fc = a, fa
         d = b - a
@@ -30,7 +31,7 @@ def _make_brent(f):
                 a, fa = b, fb
                 b, fb = c, fc
                 c, fc = a, fa
-            tol = 2.0 * EPS * abs(b) + 1e-300
+            tol = 2.0 * EPS * abs(b) + 1e-300 + 0.5 * xtol
             xm = 0.5 * (c - b)
             if abs(xm) <= tol or fb == 0.0:
                 break
@@ -59,7 +60,7 @@ def _make_brent(f):
             a, fa = b, fb
             b = b + d if abs(d) > tol else b + (tol if xm > 0.0 else -tol)
             fb = f(b, args)
-        if fb == 0.0 or (fb > 0.0) == (fc > 0.0):
+        if fb == 0.0 or (fb > 0.0) == (fc > 0.0) or xtol > 0.0:
             return b
         lo, hi, flo, fhi = (b, c, fb, fc) if b < c else (c, b, fc, fb)
         for _ in range(64):
@@ -103,8 +104,9 @@ def newton_solver(f_df):
     return njit(cache=True)(_make_newton(f_df))
 
 
-def brent(f, lo, hi, args=(), flo=None, fhi=None):
-    """Root of a Python callable ``f(x, args)`` in [lo, hi] (sign change), to adjacent doubles."""
+def brent(f, lo, hi, args=(), flo=None, fhi=None, xtol=0.0):
+    """Root of a Python callable ``f(x, args)`` in [lo, hi] (sign change), to adjacent doubles (or to the
+    absolute tolerance xtol > 0: an f with noise above rounding)."""
     flo = f(lo, args) if flo is None else flo
     fhi = f(hi, args) if fhi is None else fhi
     if flo == 0.0:
@@ -113,7 +115,23 @@ def brent(f, lo, hi, args=(), flo=None, fhi=None):
         return hi
     if (flo > 0.0) == (fhi > 0.0):
         raise ValueError(f"brent: no sign change in [{lo!r}, {hi!r}]")
-    return _make_brent(f)(float(lo), float(hi), float(flo), float(fhi), args)
+    return _make_brent(f, float(xtol))(float(lo), float(hi), float(flo), float(fhi), args)
+
+
+def root(f, lo, hi, xtol=0.0):
+    """Root of a one-argument callable f(x) in [lo, hi] (a sign change): :func:`brent`."""
+    return brent(lambda x, _: f(x), lo, hi, (), None, None, xtol)
+
+
+def minimum(f, lo, mid, hi, xtol):
+    """The minimiser and minimum (x, f(x)) of f near the bracket lo < mid < hi (f(mid) below both ends; Brent's
+    parabolic search, scipy), or over [lo, hi] (bounded search) where f is not below its ends at mid."""
+    from scipy.optimize import minimize_scalar          # scipy.optimize loads in ~0.3 s: only where a minimum is asked
+    try:
+        res = minimize_scalar(f, bracket=(lo, mid, hi), method="brent", options=dict(xtol=xtol))
+    except ValueError:
+        res = minimize_scalar(f, bounds=(lo, hi), method="bounded", options=dict(xatol=xtol * 1e-2))
+    return float(res.x), float(res.fun)
 
 
 def is_pole(fx, flo, fhi):
@@ -122,12 +140,12 @@ def is_pole(fx, flo, fhi):
     return not abs(fx) <= max(abs(flo), abs(fhi))
 
 
-def brent_or_pole(f, lo, hi, args=(), flo=None, fhi=None):
+def brent_or_pole(f, lo, hi, args=(), flo=None, fhi=None, xtol=0.0):
     """:func:`brent`, but None where the sign change is a pole of f (:func:`is_pole`)."""
     flo = f(lo, args) if flo is None else flo
     fhi = f(hi, args) if fhi is None else fhi
     try:
-        x = brent(f, lo, hi, args, flo, fhi)
+        x = brent(f, lo, hi, args, flo, fhi, xtol)
         return None if is_pole(f(x, args), flo, fhi) else x
     except ZeroDivisionError:                  # the bracket closed exactly on the pole
         return None

@@ -11,10 +11,10 @@
 from .confined import confined_figure, draw_confined
 from .cycle import cycle_figure, plot as plot_cycle
 from .paper_pressure import FIG04_CASES, FIG12_CASES, PRESSURE_STYLES, figure_contact, pressure_limits
-from .paper_stability import detachment_limit, neat_fit_stable
+from .paper_stability import detachment_limit
 from .registry import FIGURES, FigureSpec, draw_all, write_csv
 from .style import CSV_COLUMNS, FIGURE_GB, Style, styles
 
 __all__ = ["CSV_COLUMNS", "FIG04_CASES", "FIG12_CASES", "FIGURES", "FIGURE_GB", "FigureSpec", "PRESSURE_STYLES",
            "Style", "confined_figure", "cycle_figure", "detachment_limit", "draw_all", "draw_confined",
-           "figure_contact", "neat_fit_stable", "plot_cycle", "pressure_limits", "styles", "write_csv"]
+           "figure_contact", "plot_cycle", "pressure_limits", "styles", "write_csv"]

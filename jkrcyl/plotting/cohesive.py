@@ -1,4 +1,4 @@
-"""Figures of the Maugis-Dugdale pin (issue 19): the load-control pull-off against lambda for several M with its
+"""Figures of the Maugis-Dugdale pin: the load-control pull-off against lambda for several M with its
 JKR and Baney-Hui asymptotes, and the map of the pull-off over (lambda, M) showing where it vanishes
 (``jkrcyl cohesive``).
 

@@ -12,6 +12,7 @@ from first touch), its first event (fold or h(pi) = 0) and the jump at fixed loa
 from __future__ import annotations
 
 import textwrap
+from typing import Sequence
 
 import numpy as np
 
@@ -102,9 +103,36 @@ def _legend_handles(series):
     return handles
 
 
-def confined_figure(Ms=FIGURE_MS, theta=1.0, gb=None):
-    """The figure (matplotlib Figure) at the given M values, vartheta and gb (default: the figures' pair,
-    jkrcyl.plotting.style.figure_gb: identical nu = 0.3 bodies at vartheta = 1, the README pin); alpha* = 0."""
+def confined_figure(Ms: "Sequence[float]" = FIGURE_MS, theta: float = 1.0,
+                    gb: "float | None" = None) -> "matplotlib.figure.Figure":
+    """The load-approach paths through the confined regime, one panel per M (alpha* = 0).
+
+    Parameters
+    ----------
+    Ms : sequence of float
+        The adhesions M > 0 (section 6), one panel each.
+    theta : float
+        vartheta >= 1/2, finite (section 4).
+    gb : float, optional
+        (1/G_I)/beta* in [0, 1] (default: the figures' pair, jkrcyl.plotting.style.figure_gb: identical nu = 0.3
+        bodies at vartheta = 1, the README pin).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Raises
+    ------
+    ValueError
+        Naming M (none given, or one <= 0), theta or gb outside its range.
+
+    Examples
+    --------
+    >>> fig = confined_figure(Ms=(0.3,))
+    >>> fig.axes[0].get_title()                              # M and the regime of jkrcyl.equilibria.confined_events
+    '$M = 0.3$: detachment'
+    >>> st.mpl().close(fig)
+    """
     plt = st.mpl()
     th = _check_theta(theta)
     pair = st.figure_pair(th) if gb is None else None
@@ -134,8 +162,34 @@ def confined_figure(Ms=FIGURE_MS, theta=1.0, gb=None):
     return fig
 
 
-def draw_confined(path, Ms=FIGURE_MS, theta=1.0, gb=None):
-    """Write :func:`confined_figure` to ``path`` (PNG or PDF by the extension); returns the path."""
+def draw_confined(path: str, Ms: "Sequence[float]" = FIGURE_MS, theta: float = 1.0,
+                  gb: "float | None" = None) -> str:
+    """Write :func:`confined_figure` to ``path`` (PNG or PDF by the extension; ``jkrcyl two-patch --figure``).
+
+    Parameters
+    ----------
+    path : str
+        The file.
+    Ms, theta, gb
+        As :func:`confined_figure`.
+
+    Returns
+    -------
+    str
+        ``path``.
+
+    Raises
+    ------
+    ValueError
+        As :func:`confined_figure`.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     os.path.basename(draw_confined(os.path.join(folder, "confined.png"), Ms=(0.3,)))
+    'confined.png'
+    """
     fig = confined_figure(Ms, theta, gb)
     fig.savefig(path, dpi=110)
     st.mpl().close(fig)

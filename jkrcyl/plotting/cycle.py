@@ -9,6 +9,7 @@ import math
 
 import numpy as np
 
+from ..results import Cycle
 from . import style as st
 
 # branch of the path -> (words, colour, marker); colours from viridis at ordered luminance, black for the free pin
@@ -91,8 +92,32 @@ def _direction(ax, x, y, color):
                 arrowprops=dict(arrowstyle="-|>", color=color, lw=0, mutation_scale=18), annotation_clip=False)
 
 
-def cycle_figure(cy, contact, title: str = ""):
-    """The figure of a cycle ``cy`` of ``contact`` (the jkrcyl.Contact it was computed for)."""
+def cycle_figure(cy: "Cycle", contact: "jkrcyl.Contact", title: str = "") -> "matplotlib.figure.Figure":
+    """The figure of a quasi-static cycle: P [N/m] against delta_work, branches in words, jumps as arrows.
+
+    Parameters
+    ----------
+    cy : jkrcyl.results.Cycle
+        The cycle (:meth:`jkrcyl.Contact.cycle`).
+    contact : jkrcyl.Contact
+        The contact it was computed for (its parameters go in the title).
+    title : str
+        A first line for the title.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m)
+    >>> fig = cycle_figure(pin.cycle(P_max=2000.0, P_min=-2000.0, n=100), pin)
+    >>> fig.axes[0].get_title().splitlines()[0]
+    'Quasi-static cycle; dissipated 0.007998 J/m per cycle'
+    >>> st.mpl().close(fig)
+    """
     plt = st.mpl()
     from matplotlib.lines import Line2D
     cmap = plt.get_cmap("viridis")
@@ -138,8 +163,30 @@ def cycle_figure(cy, contact, title: str = ""):
     return fig
 
 
-def plot(cy, path, contact, title: str = ""):
-    """Write :func:`cycle_figure` to ``path`` (PNG or PDF by the extension); returns the path."""
+def plot(cy: "Cycle", path: str, contact: "jkrcyl.Contact", title: str = "") -> str:
+    """Write :func:`cycle_figure` to ``path`` (PNG or PDF by the extension; ``jkrcyl cycle --plot``).
+
+    Parameters
+    ----------
+    cy, contact, title
+        As :func:`cycle_figure`.
+    path : str
+        The file.
+
+    Returns
+    -------
+    str
+        ``path``.
+
+    Examples
+    --------
+    >>> import os, tempfile, jkrcyl
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m)
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     os.path.basename(plot(pin.cycle(P_max=2000.0, P_min=-2000.0, n=100), os.path.join(folder, "c.png"), pin))
+    'c.png'
+    """
     fig = cycle_figure(cy, contact, title)
     fig.savefig(path, dpi=120)
     st.mpl().close(fig)

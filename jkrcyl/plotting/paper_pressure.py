@@ -3,12 +3,14 @@ into its bounded and unbounded (edge-singular) parts, through :meth:`jkrcyl.Cont
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 
 from .. import equilibria as eq
 from ..contact import Contact
 from ..materials import Materials
+from ..notices import ValidityWarning
 from . import style as st
 
 FIG04_CASES = [(0.2, 4.0, "(a)"), (0.2, 2.0, "(b)"), (0.2, 0.1, "(c)"), (0.2, -0.15, "(d)")]
@@ -18,13 +20,37 @@ PRESSURE_STYLES = {"bounded": dict(color="0.55", ls="--", lw=1.4),
                    "total": dict(color="k", ls="-", lw=1.6)}
 
 
-def figure_contact(M, theta=1.0, alpha_ratio=0.0):
-    """The Contact behind the pressure figures: R = 2, Delta = 1 (pin radius R - Delta > 0; N R/P depends on
-    neither), G = 1, kappa = 1.8 (nu = 0.3) at vartheta = 1.
+def figure_contact(M: float, theta: float = 1.0, alpha_ratio: float = 0.0) -> Contact:
+    """The Contact behind the pressure figures (Figs. 4, 12) at adhesion M.
 
-    alpha_ratio = 0: identical bodies (kappa_I = 1.8, G_I = 1).  Otherwise kappa_I, G_I keep vartheta = 1,
-    i.e. (kappa_I + 1)/G_I = kappa + 1, and give (kappa_I - 1)/(kappa_I + 1) = (kappa - 1)/(kappa + 1) - 2
-    alpha*/beta*.  w is chosen to give M.
+    R = 2, Delta = 1 (pin radius R - Delta > 0; N R/P depends on neither), G = 1, kappa = 1.8 (nu = 0.3) at
+    vartheta = 1.  alpha_ratio = 0: identical bodies (kappa_I = 1.8, G_I = 1).  Otherwise kappa_I, G_I keep
+    vartheta = 1, i.e. (kappa_I + 1)/G_I = kappa + 1, and give (kappa_I - 1)/(kappa_I + 1) = (kappa - 1)/(kappa + 1)
+    - 2 alpha*/beta*.  w is chosen to give M.
+
+    Parameters
+    ----------
+    M : float
+        The adhesion (section 6).
+    theta : float
+        vartheta: 1 only.
+    alpha_ratio : float
+        alpha*/beta* in (-0.36, 0.143].
+
+    Returns
+    -------
+    jkrcyl.Contact
+
+    Raises
+    ------
+    ValueError
+        Naming theta (not 1) or alpha_ratio outside its range (or w, from the Contact).
+
+    Examples
+    --------
+    >>> c = figure_contact(0.2)
+    >>> round(c.M, 12), c.theta, round(c.materials.alpha_ratio, 12)
+    (0.2, 1.0, 0.0)
     """
     if theta != 1.0:
         raise ValueError("theta: the pressure figures are drawn at vartheta = 1")
@@ -34,15 +60,41 @@ def figure_contact(M, theta=1.0, alpha_ratio=0.0):
         raise ValueError(f"alpha_ratio: the pressure figures need alpha*/beta* in (-0.36, 0.143], got {alpha_ratio}")
     kappa_I = (1 + q) / (1 - q)
     mat = Materials(G=1.0, kappa=kappa, G_I=(kappa_I + 1) / (kappa + 1), kappa_I=kappa_I)
-    probe = Contact(R=2.0, Delta=1.0, w=1.0, materials=mat)
-    w = (M / probe.M) ** 2          # M is proportional to sqrt(w)
-    return Contact(R=2.0, Delta=1.0, w=w, materials=mat)
+    with warnings.catch_warnings():         # the figures are normalised: R = 2, Delta = 1 only fix the units
+        warnings.simplefilter("ignore", ValidityWarning)
+        probe = Contact(R=2.0, Delta=1.0, w=1.0, materials=mat)
+        w = (M / probe.M) ** 2          # M is proportional to sqrt(w)
+        return Contact(R=2.0, Delta=1.0, w=w, materials=mat)
 
 
-def pressure_limits(series, phi, eps, edge=0.97):
-    """y-limits from the data: everything on |phi| <= edge * eps plus the whole bounded part, 8 % margin.
+def pressure_limits(series: "dict[str, np.ndarray]", phi: np.ndarray, eps: float,
+                    edge: float = 0.97) -> "tuple[float, float]":
+    """y-limits of a pressure panel from the data: everything on |phi| <= edge * eps plus the whole bounded part.
 
     The unbounded part is singular at phi = +-eps; beyond ``edge`` it is clipped (and marked on the plot).
+
+    Parameters
+    ----------
+    series : dict of ndarray
+        'bounded', 'unbounded' and 'total' over phi (the keys of :data:`PRESSURE_STYLES`).
+    phi : ndarray
+        The angles [rad].
+    eps : float
+        The contact half-angle [rad].
+    edge : float
+        The fraction of eps inside which every series counts.
+
+    Returns
+    -------
+    (float, float)
+        The limits, with 0 included and an 8 % margin.
+
+    Examples
+    --------
+    >>> phi = np.linspace(-1.0, 1.0, 5)
+    >>> series = {"bounded": np.ones(5), "unbounded": np.array([-10.0, 0, 0, 0, -10.0]), "total": np.ones(5)}
+    >>> [round(y, 12) for y in pressure_limits(series, phi, eps=1.0)]          # the ends at +-eps are clipped
+    [-0.08, 1.08]
     """
     core = np.abs(phi) <= edge * eps
     vals = np.concatenate([np.concatenate([y[core] for y in series.values()]), series["bounded"]])

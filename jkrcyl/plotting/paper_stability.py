@@ -15,6 +15,7 @@ import numpy as np
 from .. import equilibria as eq
 from .. import special
 from ..critical import a_crit
+from ..results import Point
 from . import style as st
 
 ERRATUM_FIG10 = ("erratum (DERIVATION.md 'Fig. 10'): the curves cross only where the cylinder's lowest\n"
@@ -29,11 +30,6 @@ CUT_TOL = 1e-6            # bisection tolerance in M of the detachment limit
 DETACH_LW, FOLD_LW = 1.6, 0.7
 
 
-def neat_fit_stable(c):
-    """Fixed-load stability of the (super-critical) neat fit: dQ*/da < 0 above a_crit (erratum 'Fig. 11b')."""
-    return np.gradient(c["Q_star"], c["a"]) < 0
-
-
 def fig08(n=600, alpha_ratio=0.0):
     """The neat fit (Delta = 0, section 7.3) exists in closed form only: drawn at alpha* = 0 for any
     ``alpha_ratio`` (the title says so)."""
@@ -45,7 +41,7 @@ def fig08(n=600, alpha_ratio=0.0):
     for th, sty in zip(ths, styles):
         c = special.neat_fit_curve(th, n)
         lab = f"vartheta = {th:g}"
-        stable = neat_fit_stable(c)
+        stable = c["stable_load"]             # Q* dQ*/da < 0: dQ*/da < 0 above a_crit (erratum 'Fig. 11b')
         st.line(axs[0], c["Q_star"], c["eps"], c["feasible"], sty)
         st.band(axs[0], c["Q_star"], c["eps"], stable, sty.color)
         rows.add("a", lab, "Q_star", c["Q_star"], "eps", c["eps"], c["feasible"])
@@ -71,8 +67,8 @@ def fig08(n=600, alpha_ratio=0.0):
     return fig, rows
 
 
-def lowest_minimum(M, theta, alpha_ratio=0.0):
-    """The lowest fixed-load P* minimum over both branches (a jkrcyl.results.Point), or None."""
+def lowest_minimum(M: float, theta: float, alpha_ratio: float = 0.0) -> "Point | None":
+    """The lowest fixed-load P* minimum over both branches (a jkrcyl.results.Point, the figures' pair), or None."""
     pts = eq.adherence(M, theta, "load", gb=st.figure_gb(theta), alpha_ratio=alpha_ratio, confined=False)
     return min(pts, key=lambda q: q.P_star) if pts else None
 
@@ -81,10 +77,41 @@ def _is_sub(p):
     return p is not None and p.regime == "sub-critical"
 
 
-def detachment_limit(theta, M_lo, M_hi, alpha_ratio=0.0, tol=CUT_TOL):
-    """(M, below, above): the M in [M_lo, M_hi] where the lowest fixed-load minimum turns from sub- to
-    super-critical (bisection; the lowest minimum must be sub-critical at M_lo and not at M_hi), and the minima
-    just below and above it."""
+def detachment_limit(theta: float, M_lo: float, M_hi: float, alpha_ratio: float = 0.0,
+                     tol: float = CUT_TOL) -> "tuple[float, Point | None, Point | None]":
+    """Where Fig. 10's detachment ends: the M at which the lowest fixed-load P* minimum turns super-critical.
+
+    Below it the cylinder detaches at its sub-critical minimum; above it the lowest minimum is a super-critical
+    fold that zips into full contact (generated/DERIVATION.md, erratum 'Sections 6 and 8.3').  Bisection in M
+    over :func:`lowest_minimum` (the figures' pair, :func:`jkrcyl.plotting.style.figure_gb`).
+
+    Parameters
+    ----------
+    theta : float
+        vartheta >= 1/2 (section 4).
+    M_lo, M_hi : float
+        A bracket: the lowest minimum sub-critical at M_lo and not at M_hi.
+    alpha_ratio : float
+        alpha*/beta* in (-1, 1).
+    tol : float
+        Bisection tolerance in M.
+
+    Returns
+    -------
+    (float, jkrcyl.results.Point, jkrcyl.results.Point)
+        The limit M and the lowest minima just below and just above it.
+
+    Raises
+    ------
+    ValueError
+        Naming theta, M or alpha_ratio outside its range (jkrcyl.equilibria.adherence).
+
+    Examples
+    --------
+    >>> M, below, above = detachment_limit(1.0, 0.3, 0.6)
+    >>> round(M, 4), below.regime, above.regime, above.P_star < below.P_star
+    (0.3915, 'sub-critical', 'super-critical', True)
+    """
     below, above = lowest_minimum(M_lo, theta, alpha_ratio), lowest_minimum(M_hi, theta, alpha_ratio)
     while M_hi - M_lo > tol:
         mid = 0.5 * (M_lo + M_hi)

@@ -10,7 +10,7 @@ import csv
 import math
 import pathlib
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import Callable, Collection
 
 from . import paper, paper_pressure, paper_stability
 from . import style as st
@@ -18,7 +18,25 @@ from . import style as st
 
 @dataclass(frozen=True)
 class FigureSpec:
-    """One registered figure: paper number, builder ``(n, alpha_ratio) -> (Figure, rows)``, stated parameters."""
+    """One registered figure of the paper (:data:`FIGURES`).
+
+    Attributes
+    ----------
+    number : int
+        The paper's figure number.
+    builder : callable
+        ``(n, alpha_ratio) -> (Figure, rows)`` (jkrcyl.plotting.paper, paper_pressure, paper_stability).
+    params : dict
+        The parameters the figure states (vartheta, gb, regime, M values, ...).
+    closed_form_only : bool
+        Drawn at alpha* = 0 whatever alpha_ratio (Fig. 8, the neat fit).
+
+    Examples
+    --------
+    >>> spec = FIGURES["fig10"]
+    >>> spec.number, spec.name, spec.params["theta"]
+    (10, 'fig10', (0.5, 1.0))
+    """
 
     number: int
     builder: Callable
@@ -26,10 +44,37 @@ class FigureSpec:
     closed_form_only: bool = False     # True: drawn at alpha* = 0 whatever alpha_ratio (Fig. 8, the neat fit)
 
     @property
-    def name(self):
+    def name(self) -> str:
+        """'figNN', the key in :data:`FIGURES` and the stem of the files."""
         return f"fig{self.number:02d}"
 
-    def build(self, n=None, alpha_ratio=0.0):
+    def build(self, n: "int | None" = None, alpha_ratio: float = 0.0) -> tuple:
+        """Compute and draw the figure.
+
+        Parameters
+        ----------
+        n : int, optional
+            Points per curve (default: the builder's).
+        alpha_ratio : float
+            alpha*/beta* in (-1, 1): != 0 draws with the numerical solver (not for Fig. 8).
+
+        Returns
+        -------
+        (matplotlib.figure.Figure, list)
+            The figure and its plotted points as CSV rows (:data:`jkrcyl.plotting.style.CSV_COLUMNS`).
+
+        Raises
+        ------
+        ValueError
+            Naming alpha_ratio or n outside its range (from jkrcyl.equilibria).
+
+        Examples
+        --------
+        >>> fig, rows = FIGURES["fig09"].build(n=20)
+        >>> len(fig.axes) > 0, rows[0][:3]
+        (True, ('a', 'cylinder M = 0', 'a/a_crit'))
+        >>> st.mpl().close(fig)
+        """
         return self.builder(alpha_ratio=alpha_ratio) if n is None else self.builder(n, alpha_ratio=alpha_ratio)
 
 
@@ -51,19 +96,74 @@ _REGISTRY = [
 FIGURES = {spec.name: spec for spec in _REGISTRY}
 
 
-def write_csv(path, rows):
+def write_csv(path: "str | pathlib.Path", rows: list) -> None:
+    """Write a figure's rows as CSV under the header :data:`jkrcyl.plotting.style.CSV_COLUMNS`.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The file.
+    rows : list of tuple
+        (panel, series, x_name, x, y_name, y, feasible), as the builders return them.
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    OSError
+        Where the file cannot be written.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     write_csv(os.path.join(folder, "f.csv"), [("a", "M = 0", "a", "0.1", "P_star", "0.2", 1)])
+    ...     open(os.path.join(folder, "f.csv")).read().splitlines()
+    ['panel,series,x_name,x,y_name,y,feasible', 'a,M = 0,a,0.1,P_star,0.2,1']
+    """
     with open(path, "w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(st.CSV_COLUMNS)
         w.writerows(rows)
 
 
-def draw_all(out, n=None, only=None, progress=None, alpha_ratio=0.0):
-    """Write figNN.png, figNN.pdf, figNN.csv into ``out``; returns the list of paths written.
+def draw_all(out: "str | pathlib.Path", n: "int | None" = None, only: "Collection[str] | None" = None,
+             progress: "Callable[[int, int, str], object] | None" = None,
+             alpha_ratio: float = 0.0) -> "list[pathlib.Path]":
+    """Write figNN.png, figNN.pdf and figNN.csv into ``out`` for the paper's figures (``jkrcyl figures``).
 
-    alpha_ratio = alpha*/beta* != 0 draws the figures with the numerical solver (Fig. 8, the neat fit, is a closed
-    form: drawn at alpha* = 0, as its title says).  progress(done, total, next name) is called before each figure
-    and at the end.
+    Parameters
+    ----------
+    out : str or pathlib.Path
+        The folder (made if missing).
+    n : int, optional
+        Points per curve (default: each builder's).
+    only : collection of str, optional
+        The names of :data:`FIGURES` to draw (default: all).
+    progress : callable, optional
+        progress(done, total, next name), called before each figure and at the end.
+    alpha_ratio : float
+        alpha*/beta* != 0 draws the figures with the numerical solver (Fig. 8, the neat fit, is a closed form:
+        drawn at alpha* = 0, as its title says).
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written.
+
+    Raises
+    ------
+    ValueError
+        Naming alpha_ratio or n outside its range.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     [p.name for p in draw_all(folder, n=20, only=["fig09"])]
+    ['fig09.png', 'fig09.pdf', 'fig09.csv']
     """
     plt = st.mpl()
     out = pathlib.Path(out)

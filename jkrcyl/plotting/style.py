@@ -82,15 +82,48 @@ class Rows(list):
 
 @dataclass(frozen=True)
 class Style:
-    """How one series is drawn: colour (luminance-ordered) and marker; line style encodes feasibility."""
+    """How one series is drawn: colour (luminance-ordered) and marker; the line style encodes feasibility.
+
+    Attributes
+    ----------
+    color : tuple
+        An RGBA colour.
+    marker : str
+        A matplotlib marker.
+
+    Examples
+    --------
+    >>> Style(color=(0.0, 0.0, 0.0, 1.0), marker="o").marker
+    'o'
+    """
 
     color: tuple
     marker: str
 
 
-def styles(n: int, top: float = 0.85):
-    """n styles whose greyscale luminance is strictly ordered (viridis up to ``top``, yellow end cut) + distinct
-    markers."""
+def styles(n: int, top: float = 0.85) -> "list[Style]":
+    """n styles whose greyscale luminance is strictly ordered (viridis up to ``top``, yellow end cut), with distinct
+    markers.
+
+    Parameters
+    ----------
+    n : int
+        The number of series.
+    top : float
+        The viridis position of the last series, in (0, 1].
+
+    Returns
+    -------
+    list of Style
+
+    Examples
+    --------
+    >>> [s.marker for s in styles(3)]
+    ['o', 's', '^']
+    >>> lum = [0.299 * r + 0.587 * g + 0.114 * b for r, g, b, _ in (s.color for s in styles(5))]
+    >>> all(x < y for x, y in zip(lum, lum[1:]))                  # greyscale order
+    True
+    """
     cmap = mpl().get_cmap("viridis")
     return [Style(cmap(top * i / max(n - 1, 1)), MARKERS[i % len(MARKERS)]) for i in range(n)]
 

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import Dict, Optional
 
 import numpy as np
 
@@ -16,17 +17,42 @@ def _with_units(obj, load_scale, Delta):
 class Curve:
     """One single-patch branch of equilibria (numpy arrays over the contact parameter a, increasing).
 
-    eps [rad] = 2 atan(a); eps_star = 2 atan(a/a_crit)/pi (eps/pi where a_crit = inf); P_star (P_R* when
-    vartheta = inf); delta_over_Delta (5.8); h_pi_over_Delta = h(pi)/Delta (5.10); feasible = gap inequality
-    (h(pi) >= 0); stable_load, stable_grip, stable_grip_work: stable at fixed P, delta, delta_work
-    (jkrcyl.model.stability); dP_star_da, ddelta_da, ddelta_work_da: slopes along the branch; dG_da_P,
-    dG_da_delta, dG_da_delta_work: (1/w) dG/da at fixed P, delta, delta_work (section 8.3; NaN without adhesion,
-    M = 0, where w = 0).  delta_work = delta + P/(8 pi G_I) is the work-conjugate approach (derive/green.py:
-    the pin's centroid, load spread over the pin; the paper's delta is the rims' approach).  P [N/m], delta,
-    delta_work [m]: set when the curve comes from a Contact.  gb = (1/G_I)/beta*, alpha_ratio = alpha*/beta*.
-    Cohesive (Maugis-Dugdale) law (jkrcyl.model.cohesive): a is the branch parameter (the arclength of the
-    traced branch, not tan(eps/2)), eps the contact half-angle (0 for zone-only states), c and c_top the zone
-    ends [rad] (None for JKR), feasible the gap inequality and the law, dG_da_* NaN (no Griffith edge).
+    What :func:`jkrcyl.equilibria.curve` and :meth:`jkrcyl.Contact.curve` return.
+
+    Attributes
+    ----------
+    M, theta, gb, alpha_ratio : float
+        The problem (section 6; gb = (1/G_I)/beta*, alpha_ratio = alpha*/beta*).
+    regime : str
+        'sub-critical' or 'super-critical' (the cohesive law: 'sub-critical', 'contactless').
+    a, eps, eps_star : ndarray
+        a = tan(eps/2); eps [rad]; eps* = 2 atan(a/a_crit)/pi (eps/pi where a_crit = inf).  Cohesive law
+        (jkrcyl.model.cohesive): a is the branch parameter (the arclength of the traced branch), eps the contact
+        half-angle (0 for zone-only states).
+    P_star, delta_over_Delta, delta_work_over_Delta, h_pi_over_Delta : ndarray
+        P* (P_R* when vartheta = inf), delta/Delta (5.8), delta_work/Delta, h(pi)/Delta (5.10).  delta_work =
+        delta + P/(8 pi G_I) is the work-conjugate approach (derive/green.py: the pin's centroid, load spread
+        over the pin; the paper's delta is the rims' approach).
+    feasible, stable_load, stable_grip, stable_grip_work : ndarray of bool
+        The gap inequality h(pi) >= 0 (and the law's); stable at fixed P, delta, delta_work
+        (jkrcyl.model.stability).
+    dP_star_da, ddelta_da, ddelta_work_da : ndarray
+        Slopes along the branch.
+    dG_da_P, dG_da_delta, dG_da_delta_work : ndarray
+        (1/w) dG/da at fixed P, delta, delta_work (section 8.3; NaN where w = 0 and for the cohesive law).
+    P, delta, delta_work : ndarray or None
+        [N/m], [m], [m] when the curve comes from a Contact (:meth:`with_units`).
+    c, c_top : ndarray or None
+        The cohesive zone ends [rad]; None for JKR.
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> c = jkrcyl.equilibria.curve(0.3, 1.0, n=5, gb=1 / 2.8)
+    >>> c
+    Curve(sub-critical, M=0.3, theta=1, 5 points)
+    >>> [round(float(x), 4) for x in c.eps_star]
+    [0.05, 0.15, 0.25, 0.35, 0.45]
     """
 
     M: float
@@ -50,41 +76,94 @@ class Curve:
     ddelta_work_da: np.ndarray
     dG_da_delta_work: np.ndarray
     stable_grip_work: np.ndarray
-    P: np.ndarray = None
-    delta: np.ndarray = None
-    delta_work: np.ndarray = None
+    P: Optional[np.ndarray] = None
+    delta: Optional[np.ndarray] = None
+    delta_work: Optional[np.ndarray] = None
     alpha_ratio: float = 0.0
-    c: np.ndarray = None
-    c_top: np.ndarray = None
+    c: Optional[np.ndarray] = None
+    c_top: Optional[np.ndarray] = None
 
     COLUMNS = ("a", "eps", "eps_star", "P_star", "delta_over_Delta", "delta_work_over_Delta", "h_pi_over_Delta",
                "feasible", "stable_load", "stable_grip", "stable_grip_work")
 
-    def with_units(self, load_scale, Delta):
-        """This curve with P [N/m], delta and delta_work [m] (load_scale = P/P*, Delta [m])."""
+    def with_units(self, load_scale: float, Delta: float) -> "Curve":
+        """This curve with the dimensional fields P [N/m], delta and delta_work [m].
+
+        Parameters
+        ----------
+        load_scale : float
+            P/P* [N/m]: 4 pi Delta vartheta/beta* (section 6; :attr:`jkrcyl.Contact.load_scale`).
+        Delta : float
+            The clearance [m].
+
+        Returns
+        -------
+        Curve
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> c = jkrcyl.equilibria.curve(0.3, 1.0, n=5, gb=1 / 2.8).with_units(1000.0, 1e-6)
+        >>> bool((c.P == 1000.0 * c.P_star).all()), bool((c.delta == 1e-6 * c.delta_over_Delta).all())
+        (True, True)
+        """
         return _with_units(self, load_scale, Delta)
 
-    def table(self):
-        """Columns of :attr:`COLUMNS` (plus P [N/m], delta, delta_work [m] when dimensional) as a dict of arrays
-        (booleans as 0/1)."""
+    def table(self) -> Dict[str, np.ndarray]:
+        """Columns of :attr:`COLUMNS` (plus P [N/m], delta, delta_work [m] when dimensional, c, c_top for the
+        cohesive law) as a dict of float arrays (booleans as 0/1), for CSV output.
+
+        Returns
+        -------
+        dict of ndarray
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> t = jkrcyl.equilibria.curve(0.3, 1.0, n=5, gb=1 / 2.8).table()
+        >>> list(t)[:4], t["stable_load"].tolist()
+        (['a', 'eps', 'eps_star', 'P_star'], [0.0, 0.0, 0.0, 1.0, 1.0])
+        """
         cols = self.COLUMNS + (("P", "delta", "delta_work") if self.P is not None else ())
         cols += tuple(k for k in ("c", "c_top") if getattr(self, k) is not None)
         return {k: np.asarray(getattr(self, k), dtype=float) for k in cols}
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return (f"Curve({self.regime}, M={self.M:.6g}, theta={self.theta:.6g}, {np.size(self.a)} points"
                 f"{', dimensional' if self.P is not None else ''})")
 
 
 @dataclass(frozen=True)
 class Point:
-    """A stationary point on a branch: P* minimum or maximum (control = load) or of delta/Delta (grip).
+    """A stationary point on a branch: a minimum or maximum of P* (control 'load') or of the approach (grip).
 
-    kind: 'min' or 'max'.  outcome (control = load, from adherence): what a further pull does there --
-    'detachment' (a feasible sub-critical minimum: the contact shrinks away), 'zip-full' (a feasible
-    super-critical minimum: the contact grows round into full contact), for an infeasible point (h(pi) < 0:
-    the gap at the top closes first) the regime of the confined analysis (jkrcyl.analysis.confined.REGIMES),
-    or 'gap-closes-first' where that analysis does not apply (vartheta = inf).
+    What :func:`jkrcyl.equilibria.stationary_points` and :func:`jkrcyl.equilibria.adherence` return.
+
+    Attributes
+    ----------
+    control, regime, kind : str
+        'load', 'grip' or 'grip-work'; the branch; 'min' or 'max'.
+    M, theta, gb, alpha_ratio : float
+        The problem (section 6).
+    a, eps, eps_star, P_star, delta_over_Delta, delta_work_over_Delta, h_pi_over_Delta : float
+        The state, normalised as in :class:`Curve`.
+    feasible : bool
+        The gap inequality h(pi) >= 0.
+    P, delta, delta_work : float or None
+        [N/m], [m], [m] when made from a Contact.
+    outcome : str or None
+        Control 'load', from adherence: what a further pull does -- 'detachment' (a feasible sub-critical
+        minimum: the contact shrinks away), 'zip-full' (a feasible super-critical minimum: the contact grows round
+        into full contact), for an infeasible point (h(pi) < 0: the gap at the top closes first) the regime of the
+        confined analysis (jkrcyl.results.paths.REGIMES), or 'gap-closes-first' where that analysis does not apply
+        (vartheta = inf).
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> p = jkrcyl.equilibria.adherence(0.3, 1.0, gb=1 / 2.8)[0]
+    >>> p.kind, round(p.P_star, 4), p.outcome
+    ('min', -0.2856, 'detachment')
     """
 
     control: str
@@ -99,15 +178,33 @@ class Point:
     delta_over_Delta: float
     h_pi_over_Delta: float
     feasible: bool
-    delta_work_over_Delta: float = None
-    P: float = None
-    delta: float = None
-    delta_work: float = None
-    outcome: str = None
-    gb: float = None
+    delta_work_over_Delta: Optional[float] = None
+    P: Optional[float] = None
+    delta: Optional[float] = None
+    delta_work: Optional[float] = None
+    outcome: Optional[str] = None
+    gb: Optional[float] = None
     alpha_ratio: float = 0.0
 
-    def with_units(self, load_scale, Delta):
+    def with_units(self, load_scale: float, Delta: float) -> "Point":
+        """This point with P [N/m], delta and delta_work [m]: :meth:`Curve.with_units`.
+
+        Parameters
+        ----------
+        load_scale, Delta : float
+            P/P* [N/m] and the clearance [m].
+
+        Returns
+        -------
+        Point
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> p = jkrcyl.equilibria.adherence(0.3, 1.0, gb=1 / 2.8)[0].with_units(1000.0, 1e-6)
+        >>> round(p.P, 1), round(p.delta * 1e9, 1)
+        (-285.6, -307.6)
+        """
         return _with_units(self, load_scale, Delta)
 
 
@@ -115,11 +212,30 @@ class Point:
 class TwoPatchCurve:
     """One branch of two-patch equilibria (contact at the bottom and the top at once), ordered along the curve.
 
-    Fields as :class:`Curve` plus a_top, eps_top, eps_top_star, gap_min (min h/Delta outside both arcs), G_bot,
-    G_top (G/w, = 1 on the branch) and ``ends``: how each end finishes -- 'single' (a_top -> 0: the
-    single-patch state with h(pi) = 0), 'mirror' (a -> 0: the upside-down single patch), 'full'
-    (eps + eps_top -> pi: runs into full contact) or 'loop' (a closed curve).  P [N/m], delta, delta_work [m]
-    when made from a Contact.
+    What :func:`jkrcyl.equilibria.two_patch` and :meth:`jkrcyl.Contact.two_patch` return.
+
+    Attributes
+    ----------
+    M, theta, gb, alpha_ratio, a, eps, eps_star, P_star, delta_over_Delta, delta_work_over_Delta
+        As :class:`Curve`.
+    feasible, stable_load, stable_grip, stable_grip_work, P, delta, delta_work
+        As :class:`Curve` (P, delta, delta_work when made from a Contact).
+    a_top, eps_top, eps_top_star : ndarray
+        The top contact, as a, eps, eps_star.
+    gap_min : ndarray
+        min h/Delta outside both arcs.
+    G_bot, G_top : ndarray
+        G/w at the bottom and top edges (1 on the branch).
+    ends : tuple of str
+        How each end finishes: 'single' (a_top -> 0: the single-patch state with h(pi) = 0), 'mirror' (a -> 0:
+        the upside-down single patch), 'full' (eps + eps_top -> pi: into full contact) or 'loop' (a closed curve).
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> b, = jkrcyl.equilibria.two_patch(0.5, 1.0, n=20, gb=1 / 2.8)
+    >>> b
+    TwoPatchCurve(M=0.5, theta=1, 20 points, ends single -> mirror, 0 stable under load)
     """
 
     M: float
@@ -143,22 +259,56 @@ class TwoPatchCurve:
     G_top: np.ndarray
     ends: tuple
     alpha_ratio: float = 0.0
-    P: np.ndarray = None
-    delta: np.ndarray = None
-    delta_work: np.ndarray = None
+    P: Optional[np.ndarray] = None
+    delta: Optional[np.ndarray] = None
+    delta_work: Optional[np.ndarray] = None
 
     COLUMNS = ("a", "a_top", "eps", "eps_top", "eps_star", "eps_top_star", "P_star", "delta_over_Delta",
                "delta_work_over_Delta", "gap_min", "feasible", "stable_load", "stable_grip", "stable_grip_work")
 
-    def with_units(self, load_scale, Delta):
+    def with_units(self, load_scale: float, Delta: float) -> "TwoPatchCurve":
+        """This branch with P [N/m], delta and delta_work [m]: :meth:`Curve.with_units`.
+
+        Parameters
+        ----------
+        load_scale, Delta : float
+            P/P* [N/m] and the clearance [m].
+
+        Returns
+        -------
+        TwoPatchCurve
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> b, = jkrcyl.equilibria.two_patch(0.5, 1.0, n=20, gb=1 / 2.8)
+        >>> bool((b.with_units(1000.0, 1e-6).P == 1000.0 * b.P_star).all())
+        True
+        """
         return _with_units(self, load_scale, Delta)
 
-    def table(self, raw=False):
-        """Columns of :attr:`COLUMNS` (plus P [N/m], delta, delta_work [m] when dimensional) as a dict of arrays
-        (booleans as 0/1; raw=True keeps them boolean)."""
+    def table(self, raw: bool = False) -> Dict[str, np.ndarray]:
+        """Columns of :attr:`COLUMNS` (plus P [N/m], delta, delta_work [m] when dimensional) as a dict of arrays.
+
+        Parameters
+        ----------
+        raw : bool
+            False: float arrays (booleans as 0/1, for CSV); True: the booleans kept.
+
+        Returns
+        -------
+        dict of ndarray
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> b, = jkrcyl.equilibria.two_patch(0.5, 1.0, n=20, gb=1 / 2.8)
+        >>> b.table()["feasible"].dtype, b.table(raw=True)["feasible"].dtype
+        (dtype('float64'), dtype('bool'))
+        """
         cols = self.COLUMNS + (("P", "delta", "delta_work") if self.P is not None else ())
         return {k: np.asarray(getattr(self, k)) if raw else np.asarray(getattr(self, k), dtype=float) for k in cols}
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return (f"TwoPatchCurve(M={self.M:.6g}, theta={self.theta:.6g}, {np.size(self.a)} points, ends "
                 f"{self.ends[0]} -> {self.ends[1]}, {int(np.sum(self.stable_load))} stable under load)")

@@ -29,11 +29,31 @@ REGIMES = {
 
 @dataclass(frozen=True, repr=False)
 class PullOff:
-    """Detachment along the path a user follows, or why there is none.
+    """Detachment along the path a user follows from first contact, or why there is none.
 
-    control: 'load', 'grip' or 'grip-work'; P [N/m] (negative: pulling), contact_width [m] (2 R eps just
-    before detachment) and delta [m] at detachment, None if the pin does not detach; state: the last stable
-    equilibrium (the fold), also without detachment; reason: what happens at the end of the path.
+    What :meth:`jkrcyl.Contact.pull_off` returns; true when the pin detaches.
+
+    Attributes
+    ----------
+    control : str
+        'load', 'grip' (the paper's delta held) or 'grip-work' (delta_work held).
+    P, contact_width, delta : float or None
+        At detachment: the load [N/m] (negative: pulling), 2 R eps just before [m] and the approach [m]; None
+        if the pin does not detach.
+    state : jkrcyl.results.Equilibrium or None
+        The last stable equilibrium (the fold), also without detachment.
+    reason : str
+        What happens at the end of the path.
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> po = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m).pull_off()
+    >>> po
+    PullOff(load: P=-1555.1 N/m, contact_width=0.01766 m, delta=-3.095e-07 m)
+    >>> bool(po), po.reason
+    (True, 'detachment: the contact shrinks away (G > w)')
     """
 
     control: str
@@ -45,6 +65,7 @@ class PullOff:
 
     @property
     def detached(self) -> bool:
+        """Whether the pin detaches (P is not None)."""
         return self.P is not None
 
     @property
@@ -66,8 +87,22 @@ class PullOff:
 class Jump:
     """A jump of the quasi-static path at fixed load (load control) or fixed approach (grip controls).
 
-    kind: 'snap-in', 'pull-off', 'zip' or 'top-contact' (jkrcyl.analysis.cycle); leg: 0 for the first loading,
-    then alternately down and up; before, after: the states it joins (same held quantity).
+    Attributes
+    ----------
+    kind : str
+        'snap-in', 'pull-off', 'zip' or 'top-contact' (jkrcyl.analysis.cycle).
+    leg : int
+        0 for the first loading, then alternately down and up.
+    before, after : jkrcyl.results.Equilibrium
+        The states it joins (the same held quantity).
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> cy = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m).cycle(P_max=2000.0, P_min=-2000.0, n=100)
+    >>> [(j.kind, j.leg, j.after.branch) for j in cy.jumps]
+    [('snap-in', 0, 'sub-critical'), ('pull-off', 1, 'sub-critical-top'), ('pull-off', 2, 'sub-critical')]
     """
 
     kind: str
@@ -82,10 +117,38 @@ class Jump:
 
 @dataclass(frozen=True, repr=False)
 class Cycle:
-    """A quasi-static cycle: the path P [N/m], delta, delta_work [m] (jumps are straight segments between two
-    points), branch, a, stable and leg per point, the jumps, the energy dissipated per cycle [J/m] (the area of
-    the closed steady loop, int P d(delta); None if it did not close), the first leg of that loop, the driven
-    limits and why the path stopped early, if it did.
+    """A quasi-static cycle from first contact: up to the maximum, down to the minimum and up again.
+
+    What :meth:`jkrcyl.Contact.cycle` returns (jkrcyl.analysis.cycle).
+
+    Attributes
+    ----------
+    control : str
+        'load', 'grip' or 'grip-work'.
+    P, delta, delta_work : ndarray
+        The path [N/m], [m], [m]; a jump is the straight segment between two consecutive points.
+    branch, a, stable, leg : ndarray
+        Per point: the branch, the contact parameter, stable under ``control``, the leg (0: first loading).
+    jumps : list of Jump
+    dissipated : float or None
+        The energy dissipated per cycle [J/m]: the area of the closed steady loop, int P d(delta); None if the
+        loop did not close.
+    closed_from_leg : int or None
+        The first leg of that loop.
+    note : str
+        Why the path stopped early, if it did.
+    limits : tuple
+        The driven limits (minimum, maximum) of the held quantity.
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> cy = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m).cycle(P_max=2000.0, P_min=-2000.0, n=100)
+    >>> cy
+    Cycle(load: 101 points, 3 jumps, dissipated 0.00799783 J/m)
+    >>> cy.limits, cy.closed_from_leg
+    ((-2000.0, 2000.0), 1)
     """
 
     control: str
@@ -98,33 +161,66 @@ class Cycle:
     jumps: List[Jump]
     dissipated: Optional[float]
     closed_from_leg: Optional[int]
-    delta_work: np.ndarray = None
+    delta_work: Optional[np.ndarray] = None
     note: str = ""
-    limits: tuple = None
+    limits: Optional[tuple] = None
 
     def __repr__(self) -> str:
         e = "n/a" if self.dissipated is None else f"{self.dissipated:.6g} J/m"
         return f"Cycle({self.control}: {len(self.P)} points, {len(self.jumps)} jumps, dissipated {e})"
 
     def table(self) -> dict:
-        """Columns for CSV output (physical units)."""
+        """Columns for CSV output (physical units): leg, branch, a, P, delta, delta_work, stable.
+
+        Returns
+        -------
+        dict of ndarray
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+        >>> cy = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m).cycle(P_max=2000.0, P_min=-2000.0, n=100)
+        >>> list(cy.table())
+        ['leg', 'branch', 'a', 'P', 'delta', 'delta_work', 'stable']
+        """
         return {"leg": self.leg, "branch": self.branch, "a": self.a, "P": self.P, "delta": self.delta,
                 "delta_work": self.delta_work, "stable": self.stable}
 
 
 @dataclass(frozen=True)
 class ConfinedEvents:
-    """What happens to the pin under slow upward loading (load control) at (M, vartheta).
+    """What happens to the pin under slow pulling (load control) at (M, vartheta): jkrcyl.analysis.confined.
 
-    regime: a key of :data:`REGIMES`; start: (a, P*) where the load path starts (the stable zero-load contact;
-    (inf, nan) when the pin is bonded from first touch); P_fold: P* at the fixed-load adherence point met first
-    (nan if the gap closes first); P_top_contact: P* at which the top contact forms on that path (nan if the
-    fold comes first); onsets: every single-patch state with h(pi) = 0 as (eps, P*, delta/Delta, stable under
-    load); grip_detachment: a feasible fixed-grip stationary point (min of delta) before the gap closes, i.e.
-    the pin can be held free in the hole; two_patch_stable_load / _grip: any two-patch state stable under load /
-    grip; full_contact: some two-patch branch runs into full contact; branches: the TwoPatchCurve list; gb,
-    alpha_ratio of the analysis; fold_in_tension: at a zip-full fold, full contact at that load is entirely in
-    tension (None otherwise).
+    What :func:`jkrcyl.equilibria.confined_events` and :meth:`jkrcyl.Contact.confined_events` return.
+
+    Attributes
+    ----------
+    M, theta, gb, alpha_ratio : float
+        The problem (section 6).
+    regime : str
+        A key of :data:`REGIMES`.
+    start : tuple
+        (a, P*) where the load path starts: the stable zero-load contact; (inf, nan) when bonded from first touch.
+    P_fold, P_top_contact : float
+        P* at the fixed-load adherence point met first (nan if the gap closes first); P* at which the top
+        contact forms on that path (nan if the fold comes first).
+    onsets : tuple
+        Every single-patch state with h(pi) = 0 as (eps, P*, delta/Delta, stable under load).
+    grip_detachment : bool
+        A feasible fixed-grip stationary point (min of delta) before the gap closes: the pin can be held free.
+    two_patch_stable_load, two_patch_stable_grip, full_contact : bool
+        Some two-patch state is stable under load, under grip; some two-patch branch runs into full contact.
+    branches : tuple of jkrcyl.results.TwoPatchCurve
+    fold_in_tension : bool or None
+        At a zip-full fold: full contact at that load is entirely in tension (None otherwise).
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> ev = jkrcyl.equilibria.confined_events(0.3, 1.0, gb=1 / 2.8)
+    >>> ev.regime, round(ev.P_fold, 4), ev.grip_detachment
+    ('detachment', -0.2856, True)
     """
 
     M: float
@@ -139,21 +235,31 @@ class ConfinedEvents:
     two_patch_stable_grip: bool
     full_contact: bool
     branches: tuple
-    gb: float = None
+    gb: Optional[float] = None
     alpha_ratio: float = 0.0
-    fold_in_tension: bool = None
+    fold_in_tension: Optional[bool] = None
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return (f"ConfinedEvents({self.regime}: M={self.M:.6g}, theta={self.theta:.6g}, P_fold={self.P_fold:.6g}, "
                 f"P_top_contact={self.P_top_contact:.6g}, {len(self.branches)} two-patch branches)")
 
     @property
-    def description(self):
+    def description(self) -> str:
+        """The regime in words (:data:`REGIMES`)."""
         return REGIMES[self.regime]
 
     @property
-    def summary(self):
-        """One line: the event, its load and what follows (no true detachment under load control in a hole)."""
+    def summary(self) -> str:
+        """One line: the event, its load and what follows (no true detachment under load control in a hole).
+
+        Examples
+        --------
+        >>> import jkrcyl
+        >>> ev = jkrcyl.equilibria.confined_events(0.5, 1.0, gb=1 / 2.8)
+        >>> ev.summary.split("; ")                                  # doctest: +NORMALIZE_WHITESPACE
+        ['fold at P* = -0.288025', 'the contact grows into full contact (entirely in tension there)',
+         'no detachment under load']
+        """
         if self.regime == "detachment":
             return (f"fixed-load detachment at P* = {self.P_fold:.6g}; the pin lands on the top of the hole "
                     f"(transfer); held at fixed grip it can be freed: {self.grip_detachment}")
