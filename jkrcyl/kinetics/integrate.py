@@ -28,7 +28,6 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.integrate import LSODA
-from scipy.optimize import minimize_scalar
 
 from ..numerics import roots as _roots
 from .arc import B0, B1, DN0, DN1, DW0, DW1, H0, H1, HELD, P0, P1
@@ -237,8 +236,8 @@ def _root(ode, out, k, lo, hi, f_lo, f_hi):
 
 def peaks(ode: EdgeODE, steps):
     """[('peak-tension', key, Y)] at each local minimum of the load p over the steps, refined on the dense output
-    of the two steps around it (bounded Brent minimisation of p itself: where the contact tracks its
-    equilibrium stiffly, the rate of p is rounding noise, but p is not)."""
+    of the two steps around it (Brent's minimisation of p itself, jkrcyl.numerics.roots.minimum: where the
+    contact tracks its equilibrium stiffly, the rate of p is rounding noise, but p is not)."""
     p = np.array([ode.watch(Y[0], Y[1:])[3] for _, Y, _ in steps])
     out = []
     for i in range(1, len(steps) - 1):
@@ -249,7 +248,7 @@ def peaks(ode: EdgeODE, steps):
         def load(tau):
             Y = (d1 if tau <= k1[1] else d2)(tau)
             return ode.watch(Y[0], Y[1:])[3]
-        res = minimize_scalar(load, bounds=(k0[1], k2[1]), method="bounded", options={"xatol": 1e-14 * k2[1]})
-        tau = res.x if res.fun < p[i] else k1[1]
+        tau, best = _roots.minimum(load, k0[1], k1[1], k2[1], 1e-14 * max(abs(k2[1]), 1e-300))
+        tau = tau if best < p[i] and k0[1] <= tau <= k2[1] else k1[1]
         out.append(("peak-tension", (k1[0], tau), (d1 if tau <= k1[1] else d2)(tau)))
     return out
