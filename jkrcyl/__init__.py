@@ -11,6 +11,7 @@ from . import laws
 from .contact import Contact, State
 from .notices import BranchLimitWarning, ValidityWarning
 from .critical import a_crit
+from .laws import CrackKinetics
 from .equilibria import zero_load_contact, zero_load_max_M
 from .materials import Materials
 
@@ -20,12 +21,13 @@ try:
 except PackageNotFoundError:         # running from a source tree that was never installed
     __version__ = "0.1.0"
 
-__all__ = ["__version__", "Contact", "Materials", "State", "ValidityWarning", "BranchLimitWarning", "a_crit", "laws", "fit", "zero_load_contact", "zero_load_max_M"]
+__all__ = ["__version__", "Contact", "Materials", "State", "ValidityWarning", "BranchLimitWarning", "a_crit", "laws", "fit", "zero_load_contact", "zero_load_max_M", "CrackKinetics", "kinetics"]
 
 
 def __getattr__(name):
-    """jkrcyl.fit (fit w and the moduli to measurements) is imported on first use: it loads scipy.optimize."""
-    if name == "fit":
+    """jkrcyl.fit (fit w and the moduli to measurements) and jkrcyl.kinetics (rate-dependent adhesion in time)
+    are imported on first use: they load scipy.optimize and scipy.integrate."""
+    if name in ("fit", "kinetics"):
         import importlib
-        return importlib.import_module(".fit", __name__)
+        return importlib.import_module("." + name, __name__)
     raise AttributeError(f"module 'jkrcyl' has no attribute {name!r}")

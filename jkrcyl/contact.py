@@ -19,6 +19,7 @@ from .contact_cohesive import CohesiveLaw
 from .contact_fields import AtContactSize, State  # noqa: F401  (State: jkrcyl.State)
 from .materials import Materials
 from .laws import Dugdale, EdgeLaw, Griffith
+from .laws import kinetic as _kinetic
 from .model import two_patch as _two
 from .model.problem import Problem
 from .model.single_patch import solver
@@ -56,6 +57,10 @@ class Contact(CohesiveLaw, AtContactSize):
         The edge law: ``jkrcyl.laws.Griffith()`` (JKR, the default), ``jkrcyl.laws.Dugdale(sigma0)`` or a law of
         one's own (jkrcyl.laws).  Every analysis (solve, pull_off, cycle, curve, adherence, two_patch) uses it;
         a branch family the law does not model is a ValueError naming the law's parameter.
+    kinetics : jkrcyl.laws.Kinetic, optional
+        Crack kinetics at the contact edges, e.g. ``jkrcyl.CrackKinetics(v_star=1e-6, n=0.6)``: shorthand for
+        ``law=`` a :class:`jkrcyl.laws.Kinetic` (JKR at rest, so every quasi-static answer is unchanged); then
+        ``pull_off(..., rate=...)``, ``respond`` and ``cycle(..., rate=...)`` answer in time (jkrcyl.kinetics).
 
     Raises
     ------
@@ -77,6 +82,7 @@ class Contact(CohesiveLaw, AtContactSize):
     materials: Materials
     sigma0: Optional[float] = None
     law: Optional[EdgeLaw] = None
+    kinetics: Optional[EdgeLaw] = None
 
     def __post_init__(self):
         object.__setattr__(self, "R", finite_scalar("R", self.R, low=0.0, low_open=True))
@@ -87,8 +93,9 @@ class Contact(CohesiveLaw, AtContactSize):
         object.__setattr__(self, "w", finite_scalar("w", self.w, low=0.0))
         if not isinstance(self.materials, Materials):
             raise ValueError(f"materials must be a jkrcyl.Materials, got {type(self.materials).__name__}")
-        object.__setattr__(self, "law", _law(self.sigma0, self.law))
+        object.__setattr__(self, "law", _law(self.sigma0, _kinetic.law_with(self.kinetics, self.law, self.sigma0)))
         object.__setattr__(self, "sigma0", getattr(self.law, "sigma0", None))
+        object.__setattr__(self, "kinetics", _kinetic.kinetics_or_none(self.law))
         self.law.check(self)
         if self.Delta > DELTA_OVER_R_WARN * self.R:
             warnings.warn(f"Delta/R = {self.Delta / self.R:.3g}: the theory assumes a clearance small against the "
@@ -184,18 +191,33 @@ class Contact(CohesiveLaw, AtContactSize):
         names = _fw.check_branches(branches, self.problem)
         return _fw.solve_normalised(self.problem, _fw.Units.of(self), control, target, names)
 
-    def pull_off(self, control="load"):
+    def pull_off(self, control="load", rate=None):
         """Detachment along the stable path from first contact (force [N/m], width, approach) or why not, under
         control 'load', 'grip-work' (a machine holding delta_work) or 'grip' (the paper's delta):
-        jkrcyl.analysis.pull_off."""
+        jkrcyl.analysis.pull_off.  With ``rate`` (crack kinetics only): the load ramped down at rate [N/m/s], or
+        the held approach at rate [m/s], from the zero-load contact at rest (jkrcyl.kinetics.RatePullOff)."""
         _fw.check_control(control)
         self._require_clearance("pull_off")
+        if rate is not None:
+            from .kinetics import ramps
+            return ramps.pull_off(self, control, rate)
         return _pull_off.pull_off(self.problem, _fw.Units.of(self), control)
 
-    def cycle(self, P_max=None, P_min=None, control="load", n=2000, delta_max=None, delta_min=None):
+    def respond(self, t, P=None, delta_work=None, delta=None):
+        """The contact under a prescribed history (crack kinetics only): P [N/m], delta_work or delta [m] (one)
+        at the instants t [s], linear in between, from the equilibrium at rest at its first value: a
+        jkrcyl.kinetics.History (t, P, delta, delta_work, eps, contact width, G and speed of the edges, h(pi),
+        work, dissipation, events)."""
+        self._require_clearance("respond")
+        from .kinetics import ramps
+        return ramps.respond(self, t, P=P, delta_work=delta_work, delta=delta)
+
+    def cycle(self, P_max=None, P_min=None, control="load", n=2000, delta_max=None, delta_min=None, rate=None):
         """Quasi-static cycle from first contact up to the maximum, down to the minimum and up again (path, jumps,
         energy dissipated [J/m]): P_max, P_min [N/m] under control='load'; delta_max, delta_min [m] (limits of the
-        held approach: delta for 'grip', delta_work for 'grip-work') otherwise.  jkrcyl.analysis.cycle."""
+        held approach: delta for 'grip', delta_work for 'grip-work') otherwise.  jkrcyl.analysis.cycle.  With
+        ``rate`` (crack kinetics only, N/m/s or m/s): the loop at that rate from the zero-load contact at rest
+        until it repeats (jkrcyl.kinetics.RateCycle)."""
         _fw.check_control(control)
         self._require_clearance("cycle")
         n = count("n", n, low=10)
@@ -209,6 +231,9 @@ class Contact(CohesiveLaw, AtContactSize):
         hi, lo = finite_scalar(names[0], given[names[0]]), finite_scalar(names[1], given[names[1]])
         if not lo < hi:
             raise ValueError(f"{names[1]} must be < {names[0]}, got {names[1]} = {lo!r}, {names[0]} = {hi!r}")
+        if rate is not None:
+            from .kinetics import ramps
+            return ramps.cycle(self, control, hi, lo, rate, n)
         return _cycle.cycle(self.problem, _fw.Units.of(self), control, hi, lo, n, self.approach_work)
 
 def _law(sigma0, law) -> EdgeLaw:

@@ -12,6 +12,8 @@ command line.
     jkrcyl atlas --out atlas                # regime map over (M, vartheta): atlas.npz, atlas.csv, PNG, PDF
     jkrcyl cohesive --out figures           # Maugis-Dugdale: pull-off against lambda, the (lambda, M) map
     jkrcyl explore                          # the interactive explorer in the browser (prints its URL)
+    jkrcyl pull-off ... --v-star 1e-6 --n 0.6 --rate 1e-5 --control grip-work   # crack kinetics: at a rate
+    jkrcyl rate-sweep ... --v-star 1e-6 --n 0.6 --rate-min 1 --rate-max 1e4 --figure sweep.png
 
 Every command taking a problem takes the edge law too: --sigma0 [Pa] (physical inputs) or --lambda.
 
@@ -23,10 +25,12 @@ import argparse
 import re
 import sys
 
-from . import adherence, atlas, cohesive, curve, cycle, explore, figures, fit, pull_off, solve, two_patch
+from . import adherence, atlas, cohesive, curve, cycle, explore, figures, fit, pull_off, rate_sweep, solve, \
+    two_patch
 
 EXIT_USAGE = 2
-COMMANDS = (figures, curve, adherence, two_patch, solve, pull_off, cycle, fit, atlas, cohesive, explore)
+COMMANDS = (figures, curve, adherence, two_patch, solve, pull_off, cycle, fit, atlas, cohesive, explore,
+            rate_sweep)
 
 
 class _Parser(argparse.ArgumentParser):
@@ -48,7 +52,7 @@ def build_parser():
     p.add_argument("--version", action="version", version=f"jkrcyl {__version__}")
     sub = p.add_subparsers(dest="command", metavar="command", parser_class=_Parser,
                            title="commands (figures, curve, adherence, two-patch, solve, pull-off, cycle, fit, atlas, "
-                                 "cohesive, explore)")
+                                 "cohesive, explore, rate-sweep)")
     sub.required = True
     for module in COMMANDS:
         module.register(sub)

@@ -64,6 +64,26 @@ def add_physical(p, title="physical inputs (SI units)"):
                           "half-plane convention, s0 = lambda (M vartheta)^(2/3)/4)")
 
 
+def add_kinetics(p):
+    """--v-star, --n, --shift: crack kinetics at the contact edges (jkrcyl.CrackKinetics; physical inputs)."""
+    g = p.add_argument_group("crack kinetics (rate-dependent adhesion: G = w [1 + (a_T v/v*)^n] at an opening edge)")
+    g.add_argument("--v-star", type=number_arg, default=None, help="reference crack speed v* [m/s] > 0")
+    g.add_argument("--n", dest="kinetic_n", type=number_arg, default=None, help="exponent n, 0 < n <= 2")
+    g.add_argument("--shift", type=number_arg, default=None, help="temperature shift factor a_T > 0 (default 1)")
+
+
+def kinetics_from(args):
+    """The jkrcyl.CrackKinetics of --v-star --n --shift, or None when none is given (ValueError naming a missing
+    one)."""
+    v, n, shift = (getattr(args, k, None) for k in ("v_star", "kinetic_n", "shift"))
+    if v is None and n is None and shift is None:
+        return None
+    if v is None or n is None:
+        raise ValueError(f"{'v_star' if v is None else 'n'}: crack kinetics need --v-star and --n")
+    from ..laws import CrackKinetics
+    return CrackKinetics(v_star=v, n=n, shift=shift)
+
+
 def add_problem(p):
     """The normalised and the physical input sets (exactly one is used)."""
     g = p.add_argument_group("normalised inputs (section 6)")
@@ -129,7 +149,7 @@ def contact_from(args):
         raise ValueError("sigma0: give either --sigma0 or --lambda, not both")
     if lam is not None:
         return Contact.with_lambda(R, Delta, w, mats, lam)
-    return Contact(R=R, Delta=Delta, w=w, materials=mats, sigma0=sigma0)
+    return Contact(R=R, Delta=Delta, w=w, materials=mats, sigma0=sigma0, kinetics=kinetics_from(args))
 
 
 def resolve(args) -> ProblemInput:

@@ -4,7 +4,10 @@
 jkrcyl.model.edge (:class:`EdgeLaw`, dimensional, and :class:`Edge`, normalised).
 
 * :class:`Griffith` -- JKR (the default): the edge a crack with critical energy release rate w (3.5)-(3.6);
-* :class:`Dugdale` -- the Maugis-Dugdale cohesive zone of strength sigma0 and range h0 = w/sigma0.
+* :class:`Dugdale` -- the Maugis-Dugdale cohesive zone of strength sigma0 and range h0 = w/sigma0;
+* :class:`Kinetic` -- JKR with crack kinetics, G = w [1 + (v/v*)^n] at an opening edge (JKR at rest; time
+  histories in jkrcyl.kinetics); :func:`CrackKinetics` its common case, :func:`wlf_shift`, :func:`arrhenius_shift`
+  the temperature shift of v*.
 
 Each has its normalised twin (:class:`GriffithEdge`, the one instance :data:`GRIFFITH_EDGE`; :class:`DugdaleEdge`),
 what the model core asks (jkrcyl.model.edge).
@@ -25,5 +28,7 @@ energy release rate is twice w:
 from ..model.edge import Edge, EdgeLaw
 from .dugdale import Dugdale, DugdaleEdge
 from .griffith import GRIFFITH_EDGE, Griffith, GriffithEdge
+from .kinetic import CrackKinetics, Kinetic, arrhenius_shift, wlf_shift
 
-__all__ = ["Edge", "EdgeLaw", "Griffith", "GriffithEdge", "GRIFFITH_EDGE", "Dugdale", "DugdaleEdge"]
+__all__ = ["Edge", "EdgeLaw", "Griffith", "GriffithEdge", "GRIFFITH_EDGE", "Dugdale", "DugdaleEdge", "Kinetic",
+           "CrackKinetics", "wlf_shift", "arrhenius_shift"]
