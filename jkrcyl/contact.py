@@ -8,6 +8,7 @@ from dataclasses import dataclass
 from typing import Optional
 
 
+from . import equilibria
 from ._validate import count, finite_scalar
 from .analysis import branches as _br
 from .analysis import confined as _confined
@@ -161,7 +162,6 @@ class Contact(CohesiveLaw, AtContactSize):
         """Adherence points (P* minima for control='load', stationary approach for 'grip', 'grip-work') with P
         [N/m], delta and delta_work [m], and (load) what a further pull does, ``outcome``:
         jkrcyl.equilibria.adherence."""
-        from . import equilibria
         pts = equilibria.adherence_of(self.problem, control, confined=confined)
         return [p.with_units(self.load_scale, self.Delta) for p in pts]
 

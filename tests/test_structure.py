@@ -4,6 +4,8 @@ definition in jkrcyl/materials.py) branches on alpha*; only the laws (jkrcyl.law
 branch on the edge law.  Each check is shown to fail on a planted violation."""
 import ast
 import pathlib
+import subprocess
+import sys
 
 import pytest
 
@@ -205,3 +207,64 @@ def test_the_root_check_sees_planted_violations(tmp_path):
                            ("from scipy.optimize import least_squares\n", [])):
         probe.write_text(text)
         assert _forbidden_calls(probe) == expected, text
+
+
+
+def _library_modules():
+    """The dotted names of the library's modules and packages."""
+    out = set()
+    for p in _files():
+        rel = p.relative_to(ROOT).with_suffix("")
+        out.add(".".join(rel.parts[:-1] if rel.name == "__init__" else rel.parts))
+    return out
+
+
+def _deferred_imports(path, package, modules):
+    """(line, module) of each import inside a function of the module file path (package: its dotted package;
+    modules: the library's): the module it loads (``from a import b``: a.b where that is a module, else a)."""
+    out = []
+    for f in ast.walk(ast.parse(path.read_text())):
+        if not isinstance(f, (ast.FunctionDef, ast.AsyncFunctionDef)) or f.name == "__getattr__":
+            continue                                     # a module __getattr__ is the lazy-attribute idiom
+        for s in ast.walk(f):
+            if isinstance(s, ast.Import):
+                out += [(s.lineno, a.name) for a in s.names]
+            elif isinstance(s, ast.ImportFrom):
+                parts = package.split(".")
+                base = ".".join(parts[:len(parts) - s.level + 1] + ([s.module] if s.module else [])) \
+                    if s.level else s.module
+                out += [(s.lineno, f"{base}.{a.name}" if f"{base}.{a.name}" in modules else base) for a in s.names]
+    return out
+
+
+def _loaded_by_import():
+    """The modules ``import jkrcyl`` loads (in a fresh interpreter)."""
+    code = "import sys, jkrcyl; print('\\n'.join(sys.modules))"
+    return set(subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
+                              cwd=ROOT).stdout.split())
+
+
+def _pointless_deferrals(root, loaded):
+    modules = _library_modules() if root == ROOT else set()
+    offenders = {}
+    for p in _files(root):
+        rel = p.relative_to(root).with_suffix("")
+        package = ".".join(rel.parts[:-1])
+        if hits := [line for line, mod in _deferred_imports(p, package, modules) if mod in loaded]:
+            offenders[rel.as_posix()] = hits
+    return offenders
+
+
+def test_imports_inside_functions_defer_something():
+    """An import inside a function must defer a module ``import jkrcyl`` does not load already (an optional or
+    heavy dependency -- matplotlib, bokeh, dask, scipy.optimize -- or a part loaded on first use, as
+    jkrcyl.kinetics); one of a module already loaded only hides the dependency from the reader."""
+    offenders = _pointless_deferrals(ROOT, _loaded_by_import())
+    assert not offenders, f"imports inside functions of modules that import jkrcyl loads already: {offenders}"
+
+
+def test_the_deferral_check_sees_a_planted_violation(tmp_path):
+    pkg = tmp_path / "jkrcyl"
+    pkg.mkdir()
+    (pkg / "one.py").write_text("def f():\n    import math\n    import matplotlib\n    from . import two\n")
+    assert _pointless_deferrals(tmp_path, {"math", "jkrcyl"}) == {"jkrcyl/one": [2, 4]}

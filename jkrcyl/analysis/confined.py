@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import functools
 import math
+from dataclasses import replace
 
 from ..model import full_contact as _full
 from ..model import two_patch as _two
@@ -73,7 +74,6 @@ def outcomes(pb: Problem, points):
     """Point.outcome of fixed-load adherence points: what a further pull does there -- the fold rule where
     feasible (the fixed-arc dp/dk: 'detachment' or 'zip-full'), the confined analysis where the gap closes
     first ('gap-closes-first' where it does not apply: vartheta = inf, M = 0, or a cohesive law)."""
-    from dataclasses import replace
     regime = None
     if any(not p.feasible for p in points):
         regime = ("gap-closes-first" if pb.rigid_cradle or pb.M == 0 or not pb.models("two-patch")

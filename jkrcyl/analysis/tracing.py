@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from .._validate import count, finite_scalar
+from .._validate import count
 from ..model import two_patch as _two
 from ..model.problem import Problem
 from ..model.single_patch import solver

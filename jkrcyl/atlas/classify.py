@@ -45,6 +45,7 @@ import sys
 import numpy as np
 from numba import njit, prange
 
+from .. import equilibria
 from ..numerics import kernels, roots, zero_load
 
 # coarse grid, as fractions: sub-critical a = a_crit * s, super-critical a = a_crit * (1 + d)
@@ -310,7 +311,6 @@ def _refine_top(out, progress):
     """CONF_TOP pairs -> the two-patch analysis' answer (jkrcyl.analysis.confined; gb of an incompressible pin:
     the class depends on the fixed-load path only)."""
     from tqdm import tqdm
-    from .. import equilibria
     rows, cols = np.nonzero(out["confined"] == CONF_TOP)
     for i, j in tqdm(list(zip(rows, cols)), unit="pairs", disable=not progress, file=sys.stderr):
         th, M = out["theta"][i], out["M"][j]

@@ -22,9 +22,11 @@ jkrcyl.cli.inputs.  gb = (1/G_I)/beta* defaults to an incompressible pin, 1 - 1/
 prints the gb it used.  Errors are one line on stderr naming the bad parameter; exit status 2.
 """
 import argparse
+import os
 import re
 import sys
 
+from .. import __version__
 from . import adherence, atlas, cohesive, curve, cycle, explore, figures, fit, pull_off, rate_sweep, solve, \
     two_patch
 
@@ -48,7 +50,6 @@ class _Parser(argparse.ArgumentParser):
 
 def build_parser():
     p = _Parser(prog="jkrcyl", description=__doc__.split("\n\n")[0])
-    from .. import __version__
     p.add_argument("--version", action="version", version=f"jkrcyl {__version__}")
     sub = p.add_subparsers(dest="command", metavar="command", parser_class=_Parser,
                            title="commands (figures, curve, adherence, two-patch, solve, pull-off, cycle, fit, atlas, "
@@ -65,7 +66,6 @@ def main(argv=None):
     try:
         return args.func(args)
     except BrokenPipeError:                       # `jkrcyl curve ... | head`: the reader left; no traceback
-        import os
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
     except (ValueError, ArithmeticError) as exc:  # ArithmeticError: outside the domain the checks know

@@ -15,7 +15,9 @@ from __future__ import annotations
 import json
 import math
 import sys
+import warnings
 
+from ..materials import Materials
 from . import inputs
 from .inputs import json_value, number
 
@@ -42,7 +44,6 @@ def _pairs(items, option, number):
 
 def _setup(args, table, free, number):
     """(R, Delta, materials, w, offset) from the CSV's meta, --fix and --start."""
-    from ..materials import Materials
     setup = {k: v for k, v in table.meta.items() if k in SETUP_KEYS}
     fixed = _pairs(args.fix, "--fix", number)
     start = _pairs(args.start, "--start", number)
@@ -64,7 +65,6 @@ def _setup(args, table, free, number):
 
 
 def cmd_fit(args):
-    import warnings
     from .. import fit as fitting
     try:
         table = fitting.read_csv(args.data)

@@ -30,6 +30,9 @@ from typing import Optional
 import numpy as np
 
 from .. import equilibria as eq
+from ..contact import Contact
+from ..laws import CrackKinetics
+from ..materials import Materials
 
 PHYSICAL = (("E", "Young's modulus of the body with the hole [Pa] (inf: rigid)"), ("nu", "its Poisson ratio"),
             ("E-I", "Young's modulus of the cylinder [Pa] (inf: rigid)"), ("nu-I", "its Poisson ratio"),
@@ -80,7 +83,6 @@ def kinetics_from(args):
         return None
     if v is None or n is None:
         raise ValueError(f"{'v_star' if v is None else 'n'}: crack kinetics need --v-star and --n")
-    from ..laws import CrackKinetics
     return CrackKinetics(v_star=v, n=n, shift=shift)
 
 
@@ -136,8 +138,6 @@ def physical_given(args) -> bool:
 
 def contact_from(args):
     """A jkrcyl.Contact from --E --nu --E-I --nu-I --R --Delta --w (ValueError naming a missing one)."""
-    from ..contact import Contact
-    from ..materials import Materials
     values = _physical_values(args)
     for (name, _), v in zip(PHYSICAL, values):
         if v is None:

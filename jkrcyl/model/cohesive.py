@@ -29,6 +29,7 @@ import functools
 import math
 
 import numpy as np
+from ..numerics import cohesive as _co
 from ..numerics import cohesive_branch as _cb
 from ..numerics import cohesive_pull_off as _cpo
 from ..numerics import cohesive_zones as _cz
@@ -211,7 +212,6 @@ class Cohesive(SinglePatch):
         """(c, p, dn, dw, h) at contact half-angles eps: the zone end's first root above the Dugdale estimate
         (jkrcyl.numerics.cohesive.cohesive_state, ~1e-10), the root that tends to JKR -- on the traced branch below
         its first turn in eps, the first root (off the branch) beyond it."""
-        from ..numerics import cohesive as _co
         law = self.law
         st = [_co.cohesive_state(e, law.m, law.s0, law.theta, law.gb, law.ar) for e in np.asarray(eps).tolist()]
         col = lambda name: np.array([getattr(q, name) for q in st], dtype=float)
