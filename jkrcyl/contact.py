@@ -7,21 +7,13 @@ import warnings
 from dataclasses import dataclass
 from typing import Optional
 
-
-from . import equilibria
-from ._validate import count, finite_scalar
-from .analysis import branches as _br
-from .analysis import confined as _confined
-from .analysis import cycle as _cycle
-from .analysis import forward as _fw
-from .analysis import pull_off as _pull_off
-from .analysis import tracing as _tr
+from ._validate import finite_scalar
+from .contact_analyses import Analyses
 from .contact_cohesive import CohesiveLaw
 from .contact_fields import AtContactSize, State  # noqa: F401  (State: jkrcyl.State)
 from .materials import Materials
 from .laws import Dugdale, EdgeLaw, Griffith
 from .laws import kinetic as _kinetic
-from .model import two_patch as _two
 from .model.problem import Problem
 from .model.single_patch import solver
 from .notices import ValidityWarning
@@ -36,7 +28,7 @@ DELTA_OVER_R_WARN = 0.05
 
 
 @dataclass(frozen=True)
-class Contact(CohesiveLaw, AtContactSize):
+class Contact(Analyses, CohesiveLaw, AtContactSize):
     """A pin of radius R_D = R - Delta in a hole of radius R: the contact of the paper (SI units throughout).
 
     Parameters
@@ -153,88 +145,6 @@ class Contact(CohesiveLaw, AtContactSize):
             raise ValueError(f"{what} is undefined for Delta = 0 (neat fit, section 7.3): "
                              "it normalises by Delta; use the dimensional values")
 
-    # --- sections 6 and 8 ----------------------------------------------------------------------------
-    def curve(self, regime="sub-critical", n=2000):
-        """Equilibrium branch with P [N/m], delta and delta_work [m]: jkrcyl.equilibria.curve."""
-        return _br.curve(self.problem, regime, count("n", n, low=2)).with_units(self.load_scale, self.Delta)
-
-    def adherence(self, control="load", confined=True):
-        """Adherence points (P* minima for control='load', stationary approach for 'grip', 'grip-work') with P
-        [N/m], delta and delta_work [m], and (load) what a further pull does, ``outcome``:
-        jkrcyl.equilibria.adherence."""
-        pts = equilibria.adherence_of(self.problem, control, confined=confined)
-        return [p.with_units(self.load_scale, self.Delta) for p in pts]
-
-    def two_patch(self, n=None):
-        """Two-patch branches (second contact at the top of the hole), with P [N/m], delta, delta_work [m]."""
-        pb = _two.require_finite_theta(self.problem.require("two-patch", "two_patch() is"))
-        return tuple(b.with_units(self.load_scale, self.Delta) for b in _tr.branches(pb, n))
-
-    def confined_events(self):
-        """What follows when the gap closes at phi = pi under slow pulling: jkrcyl.analysis.confined."""
-        pb = self.problem.require("two-patch", "confined_events() is")
-        return _confined.confined_events(_two.require_finite_theta(pb))
-
-    # --- forward problems and paths (jkrcyl.analysis) -----------------------------------------------------
-    def solve(self, P=None, delta=None, branches=None, delta_work=None):
-        """Every equilibrium at load P [N/m], the paper's approach delta [m] or the work-conjugate approach
-        delta_work [m] (exactly one; stability under that control): a list of jkrcyl.results.Equilibrium
-        sorted by contact size.  ``branches``: keys of jkrcyl.analysis.forward.BRANCH_SOLVERS to search (two-patch
-        states are traced by continuation: seconds the first time, cached per contact)."""
-        given = {k: v for k, v in (("P", P), ("delta", delta), ("delta_work", delta_work)) if v is not None}
-        if len(given) != 1:
-            raise ValueError("P: give exactly one of P [N/m], delta [m] and delta_work [m]")
-        self._require_clearance("solve")
-        (name, value), = given.items()
-        control = {"P": "load", "delta": "grip", "delta_work": "grip-work"}[name]
-        target = finite_scalar(name, value) / (self.load_scale if name == "P" else self.Delta)
-        names = _fw.check_branches(branches, self.problem)
-        return _fw.solve_normalised(self.problem, _fw.Units.of(self), control, target, names)
-
-    def pull_off(self, control="load", rate=None):
-        """Detachment along the stable path from first contact (force [N/m], width, approach) or why not, under
-        control 'load', 'grip-work' (a machine holding delta_work) or 'grip' (the paper's delta):
-        jkrcyl.analysis.pull_off.  With ``rate`` (crack kinetics only): the load ramped down at rate [N/m/s], or
-        the held approach at rate [m/s], from the zero-load contact at rest (jkrcyl.kinetics.RatePullOff)."""
-        _fw.check_control(control)
-        self._require_clearance("pull_off")
-        if rate is not None:
-            from .kinetics import ramps
-            return ramps.pull_off(self, control, rate)
-        return _pull_off.pull_off(self.problem, _fw.Units.of(self), control)
-
-    def respond(self, t, P=None, delta_work=None, delta=None):
-        """The contact under a prescribed history (crack kinetics only): P [N/m], delta_work or delta [m] (one)
-        at the instants t [s], linear in between, from the equilibrium at rest at its first value: a
-        jkrcyl.kinetics.History (t, P, delta, delta_work, eps, contact width, G and speed of the edges, h(pi),
-        work, dissipation, events)."""
-        self._require_clearance("respond")
-        from .kinetics import ramps
-        return ramps.respond(self, t, P=P, delta_work=delta_work, delta=delta)
-
-    def cycle(self, P_max=None, P_min=None, control="load", n=2000, delta_max=None, delta_min=None, rate=None):
-        """Quasi-static cycle from first contact up to the maximum, down to the minimum and up again (path, jumps,
-        energy dissipated [J/m]): P_max, P_min [N/m] under control='load'; delta_max, delta_min [m] (limits of the
-        held approach: delta for 'grip', delta_work for 'grip-work') otherwise.  jkrcyl.analysis.cycle.  With
-        ``rate`` (crack kinetics only, N/m/s or m/s): the loop at that rate from the zero-load contact at rest
-        until it repeats (jkrcyl.kinetics.RateCycle)."""
-        _fw.check_control(control)
-        self._require_clearance("cycle")
-        n = count("n", n, low=10)
-        names = ("P_max", "P_min") if control == "load" else ("delta_max", "delta_min")
-        given = dict(P_max=P_max, P_min=P_min, delta_max=delta_max, delta_min=delta_min)
-        other = [k for k, v in given.items() if v is not None and k not in names]
-        if other:
-            raise ValueError(f"{other[0]} does not apply to control={control!r} (give {' and '.join(names)})")
-        if given[names[0]] is None or given[names[1]] is None:
-            raise ValueError(f"{names[0]}: control={control!r} needs {names[0]} and {names[1]}")
-        hi, lo = finite_scalar(names[0], given[names[0]]), finite_scalar(names[1], given[names[1]])
-        if not lo < hi:
-            raise ValueError(f"{names[1]} must be < {names[0]}, got {names[1]} = {lo!r}, {names[0]} = {hi!r}")
-        if rate is not None:
-            from .kinetics import ramps
-            return ramps.cycle(self, control, hi, lo, rate, n)
-        return _cycle.cycle(self.problem, _fw.Units.of(self), control, hi, lo, n, self.approach_work)
 
 def _law(sigma0, law) -> EdgeLaw:
     """The contact's law from the shorthand sigma0 or law= (both: they must agree)."""
