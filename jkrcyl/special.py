@@ -343,7 +343,7 @@ def neat_fit_curve(theta: float, n: int = 400) -> Dict[str, np.ndarray]:
     """
     th = _check_theta(theta)
     if math.isinf(th):
-        raise ValueError("theta: the neat fit has no equilibria for theta = inf (Q* < 0 needs a > a_crit = inf)")
+        raise ValueError("theta: the neat fit has no super-critical side for theta = inf (a > a_crit = inf is empty)")
     s = 0.5 + 0.5 * (np.arange(n) + 0.5) / n
     a = _a_crit(th) * np.tan(np.pi * s / 2)
     return dict(a=a, eps=2 * np.arctan(a), eps_star=s, Q_star=neat_fit_Q(a, th),
