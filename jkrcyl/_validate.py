@@ -88,6 +88,8 @@ def angle(phi):
 
 def contact_parameter(a):
     """a = tan(eps/2): float array, every entry in [A_MIN, A_MAX]."""
+    if isinstance(a, float) and A_MIN <= a <= A_MAX:  # the common scalar (numpy float64 too), no array round trip
+        return np.array(a)
     arr = real_array("a", a)
     bad = ~np.isfinite(arr) | (arr <= 0)
     if bad.any():

@@ -193,6 +193,8 @@ def _broadcast(*arrays):
 
 
 def _shaped(values, shape):
+    if not shape:                                     # one state: its scalar (what out[()] gives), no reshape
+        return np.asarray(values).flat[0]
     out = np.asarray(values).reshape(shape)
     return out[()] if out.ndim == 0 else out
 

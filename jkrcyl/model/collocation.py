@@ -46,6 +46,10 @@ class Collocation(SinglePatch):
         return _one.receding_contact(pb.theta, pb.gb, pb.alpha_ratio)
 
 
+#: the fields of CollocationPhysical.states, in the order of a row
+STATE_KEYS = ("P", "B", "C", "c0", "c1", "r0", "K", "G_release", "delta", "h_pi")
+
+
 class CollocationPhysical:
     """States, pressure and gap of a Contact in SI units from the bordered arc (any Delta >= 0: lengths over
     L = Delta, or over R for the neat fit)."""
@@ -70,19 +74,17 @@ class CollocationPhysical:
         """{field: array}: P [N/m] (2.2), B, C [Pa] (2.13), (2.9), c0 [m], c1 (2.6), r0 [Pa] (2.12), K [Pa m^1/2]
         (3.4), G_release (3.5), delta [m], h_pi [m], all from their integral definitions."""
         c, L, f = self.c, self.L, self.f
-        keys = ("P", "B", "C", "c0", "c1", "r0", "K", "G_release", "delta", "h_pi")
-        out = {k: np.empty(a.size) for k in keys}
+        beta, R = c.beta, c.R
+        to_P, to_c0, sqrt_2piR = 4 * math.pi * L / beta, c.R * beta * c.materials.inv_theta / (8 * math.pi), \
+            math.sqrt(2 * math.pi * R)
+        rows = np.empty((a.size, len(STATE_KEYS)))
         for i, ai in enumerate(a.tolist()):
             s = _one.arc_state(ai, self.k, *self.kernel, self.clearance)
-            P, B = 4 * math.pi * L / c.beta * s.p, f * s.B
-            kN = f * s.k
-            K = math.sqrt(2 * math.pi * c.R) * kN
-            vals = (P, B, f * s.C, -c.Delta - c.R * c.beta * c.materials.inv_theta * B / (8 * math.pi),
-                    c.beta * P / (2 * math.pi), -kN * math.sqrt(ai * (1 + ai * ai)), K, c.A * math.pi / 4 * K ** 2,
-                    s.d * L, s.h_pi * L)
-            for k, val in zip(keys, vals):
-                out[k][i] = val
-        return out
+            P, B, kN = to_P * s.p, f * s.B, f * s.k
+            K = sqrt_2piR * kN
+            rows[i] = (P, B, f * s.C, -c.Delta - to_c0 * B, beta * P / (2 * math.pi),
+                       -kN * math.sqrt(ai * (1 + ai * ai)), K, c.A * math.pi / 4 * K ** 2, s.d * L, s.h_pi * L)
+        return dict(zip(STATE_KEYS, rows.T))
 
     def pressure(self, a, phi):
         """(bounded, unbounded) as for the closed form; unbounded = r0/sqrt(a^2 - x^2), x = tan(phi/2)."""
