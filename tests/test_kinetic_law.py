@@ -159,3 +159,12 @@ def test_bad_history_names_itself(kw, name):
     c = pair("identical", jkrcyl.CrackKinetics(1e-6, 0.6))
     with pytest.raises(ValueError, match=name):
         c.respond(**kw)
+
+
+def test_a_rate_too_slow_to_resolve_is_a_value_error_naming_rate():
+    """At 1e-30 N/m/s the lag G/w - 1 is below rounding from the first step: a ValueError naming rate that says
+    the quasi-static answer holds (not an ArithmeticError from inside the integrator)."""
+    m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    c = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m, kinetics=jkrcyl.CrackKinetics(v_star=1e-6, n=0.6))
+    with pytest.raises(ValueError, match="^rate: too slow"):
+        c.pull_off(rate=1e-30)

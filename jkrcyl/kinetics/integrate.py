@@ -192,9 +192,10 @@ def segment(ode: EdgeODE, drive: Linear, t1: float, Y0, rtol=RTOL, peak=False, d
             if solver.status == "failed":
                 if rtol >= RTOL_MAX:
                     x = ode.local(t_o + solver.t, solver.y[0])[4]
-                    raise ArithmeticError(f"rate: at t = {t_o + solver.t:.6g} s the contact follows its equilibrium "
-                                          f"within rounding (G/w - 1 = {x - 1:.2g}): the quasi-static answer "
-                                          f"(no rate) holds there; the integrator cannot resolve the lag")
+                    raise ValueError(f"rate: too slow to resolve: at t = {t_o + solver.t:.6g} s the contact "
+                                     f"follows its equilibrium within rounding (G/w - 1 = {x - 1:.2g}): the "
+                                     f"quasi-static answer (no rate) holds there; the integrator cannot resolve "
+                                     f"the lag")
                 rtol = min(10.0 * rtol, RTOL_MAX)                  # G/w - 1 below rounding: see RTOL_MAX
                 ode.relaxed = max(ode.relaxed, rtol)
                 Y = steps[-1][1] if steps else np.asarray(Y0, dtype=float)
