@@ -30,7 +30,9 @@ LONG_RUNNING = {"jkrcyl explore"}          # a server: tests/test_explore.py run
 PUBLIC_MODULES = ["jkrcyl", "jkrcyl.laws", "jkrcyl.contact", "jkrcyl.materials", "jkrcyl.critical", "jkrcyl.equilibria",
                   "jkrcyl.special", "jkrcyl.results", "jkrcyl.results.states", "jkrcyl.results.paths",
                   "jkrcyl.results.curves", "jkrcyl.fit.estimate", "jkrcyl.fit.result", "jkrcyl.fit.data",
-                  "jkrcyl.plotting", "jkrcyl.atlas", "jkrcyl.explore.model", "jkrcyl.explore.view"]
+                  "jkrcyl.plotting", "jkrcyl.atlas", "jkrcyl.explore.model", "jkrcyl.explore.view",
+                  "jkrcyl.laws.kinetic", "jkrcyl.kinetics.sweep", "jkrcyl.kinetics.history", "jkrcyl.kinetics.results",
+                  "jkrcyl.plotting.rate"]
 
 
 def _blocks(page, lang):
@@ -41,7 +43,7 @@ def _blocks(page, lang):
 @pytest.mark.parametrize("page", PAGES, ids=lambda p: p.relative_to(DOCS).as_posix())
 def test_python_blocks_run(page, tmp_path, monkeypatch):
     blocks = _blocks(page, "python")
-    if page.name in ("rate.md", "cli.md", "explorer.md"):
+    if page.name in ("cli.md", "explorer.md"):
         assert not blocks
         return
     assert blocks, f"{page.name} has no python block"
@@ -132,7 +134,9 @@ def _documented():
 
 
 @pytest.mark.parametrize("module, extra", [("jkrcyl", ()), ("jkrcyl.laws", ()), ("jkrcyl.results", ()),
-                                           ("jkrcyl.explore", ()),
+                                           ("jkrcyl.explore", ()), ("jkrcyl.kinetics", ()),
+                                           ("jkrcyl.plotting.rate", ("sweep_figure", "loops_figure", "width_figure",
+                                                                     "save", "parameters_text")),
                                            ("jkrcyl.fit", ()), ("jkrcyl.plotting", ("plot_cycle",)),
                                            ("jkrcyl.atlas", ("classify", "default_grid", "draw"))])
 def test_api_reference_names_every_public_object(module, extra):
