@@ -41,8 +41,8 @@ def _widget(name: str, inputs: Inputs):
         return Select(title="edge law", value=inputs.law, options=[(k, v[0]) for k, v in LAWS.items()],
                       width=WIDTH - 10, css_classes=css)
     if name == "control":
-        return Select(title="control (stability shown, cycle driven, rate pull-off)", value=inputs.control, options=list(CONTROLS),
-                      width=WIDTH - 10, css_classes=css)
+        return Select(title="control (stability shown, cycle driven, rate pull-off)", value=inputs.control,
+                      options=list(CONTROLS), width=WIDTH - 10, css_classes=css)
     return TextInput(title=TEXT_FIELDS[name], value=str(getattr(inputs, name)), width=WIDTH - 10, css_classes=css)
 
 

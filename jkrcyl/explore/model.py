@@ -1,9 +1,9 @@
 """What the explorer shows, computed from its inputs without a browser: :func:`compute` turns the text of the input
 fields (:class:`Inputs`) into a :class:`Picture` -- the single-patch branches on the (delta_work, P) plane with
 their stability under the chosen control, first contact, the pull-off under each of the three controls, a load
-cycle, the pull-off at a rate under crack kinetics, and the pressure and gap around the hole at a chosen load.  Every number comes from the public
-:class:`jkrcyl.Contact`; bad input raises the library's own ValueError, which :func:`field_of` attributes to the
-input field it names.
+cycle, the pull-off at a rate under crack kinetics, and the pressure and gap around the hole at a chosen load.
+Every number comes from the public :class:`jkrcyl.Contact`; bad input raises the library's own ValueError, which
+:func:`field_of` attributes to the input field it names.
 """
 from __future__ import annotations
 
