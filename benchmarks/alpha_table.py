@@ -1,4 +1,5 @@
-"""What the paper's alpha* = 0 restriction costs (issue 10, item 5): a Markdown table for the README.
+"""What the paper's alpha* = 0 restriction costs (issue 10, item 5): a Markdown table for the user guide
+(docs/guide/materials.md).
 
 For each material pair: the true alpha* (solver, jkrcyl.numerics.arcs) against the closed form evaluated as if
 alpha* = 0 with the same beta*, vartheta and gb = (1/G_I)/beta*, at M = 0.4 and a = 0.5 (sub-critical), and the

@@ -1,8 +1,8 @@
 """The documentation site (docs/): what `make test` can check without building it (`make docs` builds it with -W
 and runs every gallery example; CI runs both).
 
-* every Python block of the getting-started page and of the user guide runs, in order, one namespace per page;
-  the numbers the text states are what the library returns;
+* (every Python block of the getting-started page and of the user guide runs, and the numbers the text states
+  are what the library returns: tests/test_guide_pages.py)
 * every command line of the guide's sh blocks is a ``jkrcyl`` command that runs (exit status 0, no traceback; the
   README's own lines are run by tests/test_readme.py, the others here) or a make target in :data:`MAKE_TARGETS`;
 * the doctests of the public API's docstrings run;
@@ -25,40 +25,22 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 DOCS = ROOT / "docs"
 PAGES = [DOCS / "getting-started.md"] + sorted((DOCS / "guide").glob("*.md"))
 BLOCK = re.compile(r"^```(\w*)\n(.*?)^```", re.S | re.M)
-MAKE_TARGETS = {"make derive", "make test", "make explore", "make docs", "make figures", "make atlas"}
+MAKE_TARGETS = {"make derive", "make test", "make explore", "make docs", "make figures", "make atlas",
+                "make test-slow", "make test-boundscheck"}
 LONG_RUNNING = {"jkrcyl explore"}          # a server: tests/test_explore.py runs it
 PUBLIC_MODULES = ["jkrcyl", "jkrcyl.laws", "jkrcyl.contact", "jkrcyl.materials", "jkrcyl.critical", "jkrcyl.equilibria",
                   "jkrcyl.special", "jkrcyl.results", "jkrcyl.results.states", "jkrcyl.results.paths",
                   "jkrcyl.results.curves", "jkrcyl.fit.estimate", "jkrcyl.fit.result", "jkrcyl.fit.data",
-                  "jkrcyl.plotting", "jkrcyl.atlas", "jkrcyl.explore.model", "jkrcyl.explore.view"]
+                  "jkrcyl.plotting", "jkrcyl.atlas", "jkrcyl.explore.model", "jkrcyl.explore.view",
+                  "jkrcyl.laws.kinetic", "jkrcyl.kinetics.sweep", "jkrcyl.kinetics.history", "jkrcyl.kinetics.results",
+                  "jkrcyl.plotting.rate"]
 
 
 def _blocks(page, lang):
     return [m.group(2) for m in BLOCK.finditer(page.read_text()) if m.group(1) == lang]
 
 
-# --- the guide's code -------------------------------------------------------------------------------------------
-@pytest.mark.parametrize("page", PAGES, ids=lambda p: p.relative_to(DOCS).as_posix())
-def test_python_blocks_run(page, tmp_path, monkeypatch):
-    blocks = _blocks(page, "python")
-    if page.name in ("rate.md", "cli.md", "explorer.md"):
-        assert not blocks
-        return
-    assert blocks, f"{page.name} has no python block"
-    monkeypatch.chdir(tmp_path)
-    ns = {"__name__": "__docs__"}
-    for i, text in enumerate(blocks):
-        exec(compile(text, f"{page.name} python block {i}", "exec"), ns)
-    if page.name == "getting-started.md":
-        assert "about -1555 N/m" in page.read_text() and round(ns["po"].P) == -1555
-        assert [s.regime for s in ns["states"] if s.stable and s.feasible and "critical" in s.regime] == \
-            ["sub-critical-top"], "the text: the pin rests on the top of the hole at -2000 N/m"
-    if page.name == "cohesive.md":
-        assert "JKR's is -1555 N/m" in page.read_text()
-        pin = ns["jkrcyl"].Contact(R=10e-3, Delta=1e-6, w=0.05, materials=ns["m"])
-        assert round(pin.pull_off("load").P) == -1555
-
-
+# --- the guide's command lines (its Python blocks and numbers: tests/test_guide_pages.py) ---------------------
 def _sh_lines():
     out = []
     for page in PAGES:
@@ -90,15 +72,23 @@ def test_most_sh_lines_are_the_readme_ones():
     assert sum(x in _readme_lines() for x in lines) >= 5
 
 
-@pytest.mark.parametrize("line", [x for x in _sh_lines() if x.startswith("jkrcyl ") and x not in LONG_RUNNING
-                                  and x not in _readme_lines()])
+@pytest.mark.parametrize("line", sorted({x for x in _sh_lines() if x.startswith("jkrcyl ") and x not in LONG_RUNNING
+                                         and x not in _readme_lines()}))
 def test_sh_command_runs(line, tmp_path):
     words = shlex.split(line)[1:]
+    target = None
+    if ">" in words:                      # stdout into a file, as the shell would
+        i = words.index(">")
+        words, target = words[:i], words[i + 1:]
+        assert len(target) == 1, line
     assert not any(w in ("|", "<", ">", ">>", "&&", ";") for w in words), line
     r = subprocess.run([sys.executable, "-m", "jkrcyl", *words], cwd=tmp_path, capture_output=True, text=True,
                        timeout=180, env=dict(os.environ, MPLBACKEND="Agg"))
     assert r.returncode == 0 and "Traceback" not in r.stderr, (line, r.stderr[-2000:])
     assert r.stdout.strip(), line
+    for flag in ("--plot", "--csv", "--figure"):
+        if flag in words:
+            assert (tmp_path / words[words.index(flag) + 1]).stat().st_size > 100, (line, flag)
 
 
 # --- docstrings -------------------------------------------------------------------------------------------------
@@ -132,7 +122,9 @@ def _documented():
 
 
 @pytest.mark.parametrize("module, extra", [("jkrcyl", ()), ("jkrcyl.laws", ()), ("jkrcyl.results", ()),
-                                           ("jkrcyl.explore", ()),
+                                           ("jkrcyl.explore", ()), ("jkrcyl.kinetics", ()),
+                                           ("jkrcyl.plotting.rate", ("sweep_figure", "loops_figure", "width_figure",
+                                                                     "save", "parameters_text")),
                                            ("jkrcyl.fit", ()), ("jkrcyl.plotting", ("plot_cycle",)),
                                            ("jkrcyl.atlas", ("classify", "default_grid", "draw"))])
 def test_api_reference_names_every_public_object(module, extra):

@@ -23,7 +23,8 @@ DOCTEST_MODULES = (
     "jkrcyl.laws", "jkrcyl.laws.griffith", "jkrcyl.laws.dugdale", "jkrcyl.model.edge", "jkrcyl.atlas",
     "jkrcyl.atlas.draw", "jkrcyl.atlas.files", "jkrcyl.plotting.confined", "jkrcyl.plotting.cycle",
     "jkrcyl.plotting.paper_pressure", "jkrcyl.plotting.paper_stability", "jkrcyl.plotting.registry",
-    "jkrcyl.plotting.style",
+    "jkrcyl.plotting.style", "jkrcyl.laws.kinetic", "jkrcyl.kinetics.sweep", "jkrcyl.kinetics.history",
+    "jkrcyl.kinetics.results", "jkrcyl.plotting.rate",
 )
 
 # every library file's docstrings are held to the naming rules below

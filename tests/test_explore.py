@@ -36,11 +36,11 @@ DRAWN = """() => Object.fromEntries(["stable", "unstable", "infeasible", "cycle"
     .map(k => [k, JSON.stringify(Bokeh.documents[0].get_model_by_name(k).data)]))"""
 
 
-def _pin(**changes):
+def _pin(kinetics=None, **changes):
     kw = dict(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3, R=0.01, Delta=1e-6, w=0.05)
     kw.update(changes)
     m = jkrcyl.Materials.from_young(kw["E"], kw["nu"], kw["E_I"], kw["nu_I"])
-    return jkrcyl.Contact(R=kw["R"], Delta=kw["Delta"], w=kw["w"], materials=m)
+    return jkrcyl.Contact(R=kw["R"], Delta=kw["Delta"], w=kw["w"], materials=m, kinetics=kinetics)
 
 
 def _library_message(f):
@@ -71,11 +71,36 @@ def test_bad_field_gives_the_library_message_for_that_field(name, text, library)
 
 
 @pytest.mark.parametrize("law, value, message", [("sigma0", "-5", "sigma0 must be in (0, inf]"),
-                                                 ("lambda", "zero", "lambda must be a real number")])
+                                                 ("lambda", "zero", "lambda must be a real number"),
+                                                 ("kinetic", "-1e-6", "v_star must be in (0, inf]")])
 def test_bad_law_value_is_attributed_to_the_law_field(law, value, message):
     with pytest.raises(ValueError, match=re.escape(message)) as info:
         compute(Inputs(law=law, law_value=value))
     assert field_of(str(info.value)) == "law_value"
+
+
+@pytest.mark.parametrize("changes, name, library", [
+    (dict(law="kinetic", law_value="1e-6", kinetic_n="3"), "kinetic_n",
+     lambda: jkrcyl.CrackKinetics(v_star=1e-6, n=3.0)),
+    (dict(law="kinetic", law_value="1e-6", rate="-5"), "rate",
+     lambda: _pin(kinetics=jkrcyl.CrackKinetics(v_star=1e-6, n=0.6)).pull_off(rate=-5.0)),
+    (dict(rate="1"), "rate", lambda: _pin().pull_off(rate=1.0))])
+def test_bad_kinetic_input_is_attributed_to_its_field(changes, name, library):
+    with pytest.raises(ValueError) as info:
+        compute(Inputs(**changes))
+    assert str(info.value) == _library_message(library) and field_of(str(info.value)) == name
+
+
+def test_printed_rate_pull_off_is_the_library_value():
+    """Crack kinetics: the pull-off at the rate, under the chosen control, is Contact.pull_off(control, rate=...)
+    for those inputs; it is drawn as a point at the largest tension of the ramp."""
+    from jkrcyl.explore.view import picture_data, summary_html
+    picture = compute(Inputs(law="kinetic", law_value="1e-6", kinetic_n="0.6", rate="1e-11", control="grip-work"))
+    ref = _pin(kinetics=jkrcyl.CrackKinetics(v_star=1e-6, n=0.6)).pull_off("grip-work", rate=1e-11)
+    shown = float(re.search(r"jkr-pull-off-rate'>([-\d.e+]+) N/m", summary_html(picture)).group(1))
+    assert ref.kind == "separation" and shown == pytest.approx(ref.P, rel=5e-6)
+    points = picture_data(picture)["points"]
+    assert points["y"][points["label"].index("pull-off at the rate")] == pytest.approx(ref.P, rel=1e-12)
 
 
 def test_field_of_names_general_for_an_unknown_parameter():
@@ -252,6 +277,37 @@ def test_browser_redraws_prints_the_pull_off_and_shows_bad_input(served):
             assert page.locator(".jkr-pull-off-load").inner_text() == printed
             assert page.evaluate(DRAWN) == drawn           # the last good picture: every plotted column as it was
             assert "Traceback" not in page.content()
+        finally:
+            browser.close()
+
+
+def test_browser_prints_the_rate_pull_off_of_the_kinetic_law(served):
+    """The kinetic law chosen in the page, v* and a rate typed, the control switched to grip-work: the printed
+    pull-off at the rate is Contact(..., kinetics=...).pull_off("grip-work", rate=...) to 4 significant digits,
+    beside the quasi-static ones."""
+    sync_playwright = _browser_or_skip()
+    ARTEFACTS.mkdir(exist_ok=True)
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=BROWSER_FLAGS, headless=True)
+        try:
+            page = browser.new_page(viewport={"width": 1400, "height": 1100})
+            page.goto(served)
+            _wait_redraw(page, 1)
+            from jkrcyl.explore.model import LAWS
+            page.locator(".jkr-law select").select_option(label=LAWS["kinetic"][0])   # v* still empty: no redraw
+            _set(page, "law_value", "1e-6")
+            _wait_redraw(page, 2)
+            page.locator(".jkr-control select").select_option("grip-work")
+            _wait_redraw(page, 3)
+            _set(page, "rate", "1e-11")
+            _wait_redraw(page, 4)
+            c = _pin(kinetics=jkrcyl.CrackKinetics(v_star=1e-6, n=0.6))
+            ref = c.pull_off("grip-work", rate=1e-11).P
+            shown = float(page.locator(".jkr-pull-off-rate").inner_text().split()[0])
+            assert f"{shown:.4g}" == f"{ref:.4g}" and shown == pytest.approx(ref, rel=5e-5)
+            quasi_static = float(page.locator(".jkr-pull-off-grip-work").inner_text().split()[0])
+            assert quasi_static == pytest.approx(c.pull_off("grip-work").P, rel=5e-5) and shown < quasi_static
+            page.screenshot(path=str(ARTEFACTS / "explore_kinetic.png"), full_page=True)
         finally:
             browser.close()
 

@@ -182,18 +182,18 @@ def test_cli_sigma0(lambda_one, tmp_path):
 
 @pytest.mark.slow
 def test_readme_cohesive_fit_as_stated():
-    """README "Fitting measurements", the cohesive example: its block run as the README runs it (jkrcyl, np and the
-    starting pair m0 of the earlier blocks), the numbers in its comments are what the fit returns (to the digits
-    stated: the text cannot go stale), and the truth (w = 0.05, the contact's sigma0) lies inside the intervals."""
+    """The user guide's fitting page (docs/guide/fitting.md), the cohesive example: its block run as the page runs it
+    (jkrcyl, np and the starting pair m0 of the earlier block), the numbers in its comments are what the fit
+    returns (to the digits stated: the text cannot go stale), and the truth (w = 0.05, the contact's sigma0) lies
+    inside the intervals."""
     import pathlib
     import re
-    text = (pathlib.Path(__file__).resolve().parents[1] / "README.md").read_text()
-    section = text[text.index("## Fitting measurements"):text.index("## Layout")]
+    section = (pathlib.Path(__file__).resolve().parents[1] / "docs" / "guide" / "fitting.md").read_text()
     block = next(b for b in re.findall(r"```python\n(.*?)```", section, re.S) if "res_md" in b)
     ns = {"jkrcyl": jkrcyl, "np": np, "m0": PAIR}
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        exec(compile(block, "README cohesive fit", "exec"), ns)
+        exec(compile(block, "guide cohesive fit", "exec"), ns)
     res, pin = ns["res_md"], ns["md_pin"]
     assert "sigma0 = 77.87 kPa" in block and pin.sigma0 == pytest.approx(77.87e3, abs=5)
     s0, s_lo, s_hi = map(float, re.search(r"# (\d+) Pa, \((\d+), (\d+)\) Pa at 95 %", block).groups())

@@ -8,14 +8,13 @@
   slip through untested;
 * a block in any other language fails the test.
 
-References for the stated numbers: a_crit(1) is the root of the denominator of (4.4), 2 vartheta - log(1 + a^2)
-- 2 a^4 = 0 (section 4), found here by mpmath at 30 digits; the load of a state is the hand-typed (4.4) of
-reference/paper.py (the top of the hole is the mirror image, P -> -P); the other numbers the README quotes
-(pull-off force, dissipated energy) are claims of the README compared with what the code returns, so that the
-text cannot go stale.
+References for the stated numbers: the load of a state is the hand-typed (4.4) of reference/paper.py (the top of
+the hole is the mirror image, P -> -P); the pull-off forces the README quotes are claims of the README compared
+with what the code returns, so that the text cannot go stale.  The sections that moved to the user guide (cycles,
+the confined regime, states at a contact size, fitting, the cohesive law, crack kinetics) are checked where they
+now live: tests/test_guide_pages.py and tests/test_kinetic_guide.py.
 """
 import importlib
-import math
 import os
 import pathlib
 import re
@@ -51,7 +50,7 @@ def _sh_lines():
 def test_blocks_are_python_or_sh():
     assert BLOCKS, "README.md has no code blocks"
     assert {lang for lang, _ in BLOCKS} <= {"python", "sh"}, [lang for lang, _ in BLOCKS]
-    assert sum(lang == "python" for lang, _ in BLOCKS) >= 3 and sum(lang == "sh" for lang, _ in BLOCKS) >= 2
+    assert sum(lang == "python" for lang, _ in BLOCKS) >= 1 and sum(lang == "sh" for lang, _ in BLOCKS) >= 2
 
 
 # --- python ------------------------------------------------------------------------------------------------
@@ -71,20 +70,8 @@ def namespace(tmp_path_factory):
 
 
 def test_python_blocks_run(namespace):
-    for name in ("pin", "po", "states", "near", "cy", "grip", "bs", "ev", "c", "s", "phi", "cv"):
+    for name in ("pin", "po", "states"):
         assert name in namespace, name
-    assert (namespace["_cwd"] / "cycle.png").stat().st_size > 1000
-
-
-def test_a_crit_as_stated():
-    """README: jkrcyl.a_crit(1.0) = 0.9135727915594...; reference: mpmath root of 2 - log(1 + a^2) - 2 a^4."""
-    import mpmath
-    import jkrcyl
-    stated = re.search(r"jkrcyl\.a_crit\(1\.0\)\s+# (0\.\d+)\.\.\.", README).group(1)
-    mpmath.mp.dps = 30
-    ref = mpmath.findroot(lambda a: 2 - mpmath.log(1 + a * a) - 2 * a**4, 0.9)
-    assert abs(float(ref) - float(stated)) < 10 ** -(len(stated) - 2)       # every digit stated is right
-    assert jkrcyl.a_crit(1.0) == pytest.approx(float(ref), rel=1e-14)
 
 
 def test_pull_at_2000_N_per_m_as_stated(namespace):
@@ -106,20 +93,6 @@ def test_pull_at_2000_N_per_m_as_stated(namespace):
         sign = -1 if s.side == "top" else 1
         printed = sign * paper.P_44(s.a, pin.Delta, pin.beta, pin.theta, pin.zeta)
         assert printed == pytest.approx(-2000.0, rel=1e-9)
-
-
-def test_cycle_as_stated(namespace):
-    cy, po = namespace["cy"], namespace["po"]
-    assert [j.kind for j in cy.jumps] == ["snap-in", "pull-off", "pull-off"]
-    assert cy.jumps[0].before.P == 0 and cy.jumps[1].before.P == pytest.approx(po.P, rel=1e-12)
-    assert cy.jumps[1].after.branch == "sub-critical-top"
-    assert "about 0.0080 J/m per cycle" in README and cy.dissipated == pytest.approx(0.0080, abs=0.00005)
-    assert namespace["grip"].control == "grip-work" and namespace["grip"].jumps
-
-
-def test_confined_regime_as_stated(namespace):
-    assert "'detachment'" in README and namespace["ev"].regime == "detachment"
-    assert namespace["bs"], "two-patch branches exist for the README's pin (the gap at pi can close)"
 
 
 # --- sh ----------------------------------------------------------------------------------------------------
@@ -152,7 +125,7 @@ def test_sh_cli_lines(tmp_path):
             if flag in words:
                 assert (tmp_path / words[words.index(flag) + 1]).stat().st_size > 100, (line, flag)
         ran += 1
-    assert ran >= 8
+    assert ran >= 5
 
 
 # --- names and links ---------------------------------------------------------------------------------------
@@ -190,42 +163,3 @@ def test_links_and_paths_stay_in_the_repository():
             assert (ROOT / target).exists(), target
     for path in re.findall(r"`((?:jkrcyl|tests|derive|reference|benchmarks|docs|generated)/[\w./-]*)`", README):
         assert (ROOT / path).exists(), path
-
-
-def test_fit_example_as_stated(namespace):
-    """README "Fitting measurements": the numbers in the comments are what jkrcyl.fit returns for docs/fit_example.csv
-    (to the digits stated), and the statement about the truth holds; the true contact modulus is E/(2(1 - nu^2))
-    for two equal bodies (beta* = 4(1 - nu^2)/E per body in plane strain, E* = 4/beta*)."""
-    res = namespace["res"]
-    text = README[README.index("## Fitting measurements"):README.index("## Layout")]
-    w, w_lo, w_hi = map(float, re.search(r"# ([\d.]+) J/m\^2, 95 %: \(([\d.]+), ([\d.]+)\)", text).groups())
-    E, E_lo, E_hi = map(float, re.search(r"E\* = 4/beta\*: ([\d.e]+) Pa, \(([\d.e]+), ([\d.e]+)\)", text).groups())
-    assert res.values["w"] == pytest.approx(w, abs=0.5e-5)
-    assert res.intervals["w"] == pytest.approx((w_lo, w_hi), abs=0.5e-5)
-    assert res.values["E"] == pytest.approx(E, abs=0.5e5) and res.intervals["E"] == pytest.approx((E_lo, E_hi), abs=0.5e5)
-    true_E = 2.6e9 / (2 * (1 - 0.3 ** 2))
-    assert f"E* = {true_E:.5g}".replace("e+09", "e9") in text
-    assert res.intervals["w"][0] < 0.05 < res.intervals["w"][1] and true_E < res.intervals["E"][0]
-    assert (namespace["_cwd"] / "fit.png").stat().st_size > 1000
-
-
-def test_cohesive_as_stated(namespace):
-    """README "Cohesive-zone adhesion": the numbers in the comments are what the library returns; the JKR values
-    quoted beside them are the README pin's own (sigma0 = None); lambda is Baney-Hui's definition recomputed here
-    from sigma0, E* = 4/beta* and R_eff = R R_D/Delta."""
-    text = README[README.index("## Cohesive-zone adhesion"):]
-    md, pin = namespace["md"], namespace["pin"]
-    E, R_eff = 4 / md.beta, md.R * (md.R - md.Delta) / md.Delta
-    assert 4 * md.sigma0 / (math.pi ** 2 * E ** 2 * md.w / R_eff) ** (1 / 3) == pytest.approx(3.0, rel=1e-12)
-    assert "about 162 kPa" in text and md.sigma0 == pytest.approx(162e3, rel=2e-3)
-    assert "0.31 um" in text and md.h0 == pytest.approx(0.31e-6, rel=0.02)
-    assert "about -1553 N/m (JKR: -1555)" in text and md.pull_off("load").P == pytest.approx(-1553, abs=0.5)
-    assert pin.pull_off("load").P == pytest.approx(-1555, abs=0.5)
-    po = md.pull_off("grip-work")
-    assert "about -930 N/m (JKR: -839)" in text and po.P == pytest.approx(-930, abs=0.5) and "touch end" in po.reason
-    assert "about 0.00798 J/m" in text and namespace["cy_md"].dissipated == pytest.approx(0.00798, abs=5e-6)
-    weak = namespace["weak"]
-    assert "lambda = 0.37, h0 = 2.5 Delta" in text and weak.lambda_ == pytest.approx(0.37, abs=0.005)
-    assert weak.h0 / weak.Delta == pytest.approx(2.5, rel=1e-12) and "no adherence force" in weak.pull_off().reason
-    f, s = namespace["f"], namespace["near_md"][1]
-    assert f.pressure(s.eps + 1e-3 * (s.extra["c"] - s.eps)) == pytest.approx(-md.sigma0, rel=1e-12)

@@ -21,13 +21,15 @@ ERROR_STYLE = {"color": "#b00020", "font-size": "12px", "max-width": f"{WIDTH - 
 TEXT_FIELDS = {"E": "E of the body with the hole [Pa]", "nu": "nu of the body with the hole",
                "E_I": "E_I of the pin [Pa]", "nu_I": "nu_I of the pin", "R": "hole radius R [m]",
                "Delta": "clearance Delta = R - R_D [m]", "w": "work of adhesion w [J/m^2]",
-               "law_value": "sigma0 [Pa] or lambda (cohesive law)",
+               "law_value": "sigma0 [Pa], lambda or v* [m/s] (the law's)",
+               "kinetic_n": "crack kinetics: exponent n",
+               "rate": "rate [N/m/s or m/s] (kinetics)",
                "cycle_max": "cycle: upper limit (N/m or m; empty: auto)",
                "cycle_min": "cycle: lower limit (N/m or m; empty: auto)",
                "state_P": "fields at P [N/m] (empty: first contact)"}
 CHECKBOXES = {"rigid": "rigid body with the hole", "rigid_I": "rigid pin"}
-ORDER = ("E", "rigid", "nu", "E_I", "rigid_I", "nu_I", "R", "Delta", "w", "law", "law_value", "control", "cycle_max",
-         "cycle_min", "state_P")
+ORDER = ("E", "rigid", "nu", "E_I", "rigid_I", "nu_I", "R", "Delta", "w", "law", "law_value", "kinetic_n", "rate",
+         "control", "cycle_max", "cycle_min", "state_P")
 
 
 def _widget(name: str, inputs: Inputs):
@@ -39,8 +41,8 @@ def _widget(name: str, inputs: Inputs):
         return Select(title="edge law", value=inputs.law, options=[(k, v[0]) for k, v in LAWS.items()],
                       width=WIDTH - 10, css_classes=css)
     if name == "control":
-        return Select(title="control (stability shown, cycle driven)", value=inputs.control, options=list(CONTROLS),
-                      width=WIDTH - 10, css_classes=css)
+        return Select(title="control (stability shown, cycle driven, rate pull-off)", value=inputs.control,
+                      options=list(CONTROLS), width=WIDTH - 10, css_classes=css)
     return TextInput(title=TEXT_FIELDS[name], value=str(getattr(inputs, name)), width=WIDTH - 10, css_classes=css)
 
 
@@ -125,6 +127,7 @@ class Explorer:
         inputs = self.inputs()
         self.widgets["E"].disabled, self.widgets["E_I"].disabled = inputs.rigid, inputs.rigid_I
         self.widgets["law_value"].disabled = LAWS[inputs.law][1] is None
+        self.widgets["kinetic_n"].disabled = inputs.law != "kinetic"
         try:
             picture = compute(inputs)
         except (ValueError, ArithmeticError) as exc:

@@ -1,9 +1,9 @@
 """What the explorer shows, computed from its inputs without a browser: :func:`compute` turns the text of the input
 fields (:class:`Inputs`) into a :class:`Picture` -- the single-patch branches on the (delta_work, P) plane with
 their stability under the chosen control, first contact, the pull-off under each of the three controls, a load
-cycle, and the pressure and gap around the hole at a chosen load.  Every number comes from the public
-:class:`jkrcyl.Contact`; bad input raises the library's own ValueError, which :func:`field_of` attributes to the
-input field it names.
+cycle, the pull-off at a rate under crack kinetics, and the pressure and gap around the hole at a chosen load.
+Every number comes from the public :class:`jkrcyl.Contact`; bad input raises the library's own ValueError, which
+:func:`field_of` attributes to the input field it names.
 """
 from __future__ import annotations
 
@@ -17,6 +17,7 @@ import numpy as np
 
 from ..analysis import branches as _tables
 from ..contact import Contact
+from ..laws import CrackKinetics
 from ..materials import Materials
 from ..model.single_patch import solver
 
@@ -30,22 +31,28 @@ CYCLE_LOAD_FACTOR = 1.3      # automatic load limits: +-1.3 |load-control pull-o
 CYCLE_APPROACH = (0.3, -2.3)  # automatic approach limits / Delta: past the top of the hole (delta = -2 Delta)
 
 
-def _contact_jkr(R, Delta, w, materials, value):
+def _contact_jkr(R, Delta, w, materials, inputs):
     return Contact(R=R, Delta=Delta, w=w, materials=materials)
 
 
-def _contact_sigma0(R, Delta, w, materials, value):
-    return Contact(R=R, Delta=Delta, w=w, materials=materials, sigma0=value)
+def _contact_sigma0(R, Delta, w, materials, inputs):
+    return Contact(R=R, Delta=Delta, w=w, materials=materials, sigma0=number(inputs.law_value))
 
 
-def _contact_lambda(R, Delta, w, materials, value):
-    return Contact.with_lambda(R, Delta, w, materials, value)
+def _contact_lambda(R, Delta, w, materials, inputs):
+    return Contact.with_lambda(R, Delta, w, materials, number(inputs.law_value))
+
+
+def _contact_kinetic(R, Delta, w, materials, inputs):
+    law = CrackKinetics(v_star=number(inputs.law_value), n=number(inputs.kinetic_n))
+    return Contact(R=R, Delta=Delta, w=w, materials=materials, kinetics=law)
 
 
 #: The edge laws offered: key -> (label, field of its value, how the Contact is made).
 LAWS = {"JKR": ("JKR (adhesion of zero range)", None, _contact_jkr),
         "sigma0": ("Maugis-Dugdale, cohesive strength sigma0 [Pa]", "sigma0", _contact_sigma0),
-        "lambda": ("Maugis-Dugdale, transition parameter lambda", "lambda", _contact_lambda)}
+        "lambda": ("Maugis-Dugdale, transition parameter lambda", "lambda", _contact_lambda),
+        "kinetic": ("JKR with crack kinetics, G = w[1 + (v/v*)^n]: v* [m/s]", "v_star", _contact_kinetic)}
 
 
 def number(text):
@@ -64,7 +71,9 @@ def number(text):
 class Inputs:
     """The explorer's fields as typed (strings or numbers).  E, nu: the body with the hole; E_I, nu_I: the pin
     (plane strain); rigid, rigid_I: E = inf; R, Delta [m], w [J/m^2]; law: a key of :data:`LAWS` and its
-    value (sigma0 [Pa] or lambda); control: 'load', 'grip-work' or 'grip' (stability shown, cycle driven);
+    value (sigma0 [Pa], lambda, or v* [m/s] of crack kinetics, whose exponent is kinetic_n); rate: the pulling rate
+    of a pull-off in time under crack kinetics (N/m/s under load, m/s under grip; empty: none); control: 'load',
+    'grip-work' or 'grip' (stability shown, cycle driven, rate pull-off);
     cycle_max, cycle_min: limits of the driven quantity ([N/m] under load, [m] of the held approach under grip;
     empty: automatic); state_P: the load of the state whose pressure and gap are drawn [N/m] (empty: first
     contact)."""
@@ -80,6 +89,8 @@ class Inputs:
     w: object = "0.05"
     law: str = "JKR"
     law_value: object = ""
+    kinetic_n: object = "0.6"
+    rate: object = ""
     control: str = "load"
     cycle_max: object = ""
     cycle_min: object = ""
@@ -93,7 +104,7 @@ class Inputs:
         if self.law not in LAWS:
             raise ValueError(f"law must be one of {', '.join(LAWS)}, got {self.law!r}")
         make = LAWS[self.law][2]
-        return make(number(self.R), number(self.Delta), number(self.w), mats, number(self.law_value))
+        return make(number(self.R), number(self.Delta), number(self.w), mats, self)
 
 
 @dataclass
@@ -122,6 +133,7 @@ class Picture:
     pressure: np.ndarray             # [Pa], compressive positive
     gap: np.ndarray                  # [m]
     timings: dict = field(default_factory=dict)
+    rate_pull_off: Optional[object] = None   # jkrcyl.kinetics.RatePullOff under the control, at inputs.rate
 
     @property
     def regime(self) -> str:
@@ -180,7 +192,7 @@ def _cohesive_fields(c, s, phi):
 
 
 #: The fields of a state by law (JKR: the closed forms at a = tan(eps/2); cohesive: the state's own fields).
-FIELDS = {"JKR": _jkr_fields, "sigma0": _cohesive_fields, "lambda": _cohesive_fields}
+FIELDS = {"JKR": _jkr_fields, "sigma0": _cohesive_fields, "lambda": _cohesive_fields, "kinetic": _jkr_fields}
 
 
 def _timed(timings: dict, name: str, f, *args):
@@ -236,15 +248,19 @@ def compute(inputs: Inputs) -> Picture:
     s = _timed(timings, "state", _state, c, inputs.state_P, first)
     phi = np.linspace(-math.pi, math.pi, FIELD_POINTS)
     pressure, gap = _timed(timings, "fields", _fields, inputs.law, c, s, phi)
+    rate = number(inputs.rate)
+    ramp = None if rate in (None, "") else _timed(timings, "rate", c.pull_off, inputs.control, rate)
     timings["total"] = time.perf_counter() - start
-    return Picture(inputs, c, branches, pull_offs, cy, first, s, phi, np.asarray(pressure), np.asarray(gap), timings)
+    return Picture(inputs, c, branches, pull_offs, cy, first, s, phi, np.asarray(pressure), np.asarray(gap), timings,
+                   ramp)
 
 
 #: The parameter a library message names -> the input field it belongs to.
 FIELD_OF_NAME = {"E": "E", "G": "E", "nu": "nu", "kappa": "nu", "E_I": "E_I", "G_I": "E_I", "nu_I": "nu_I",
                  "kappa_I": "nu_I", "R": "R", "Delta": "Delta", "w": "w", "sigma0": "law_value",
                  "lambda": "law_value", "law": "law", "control": "control", "P_max": "cycle_max",
-                 "delta_max": "cycle_max", "P_min": "cycle_min", "delta_min": "cycle_min", "P": "state_P"}
+                 "delta_max": "cycle_max", "P_min": "cycle_min", "delta_min": "cycle_min", "P": "state_P",
+                 "v_star": "law_value", "n": "kinetic_n", "rate": "rate", "kinetics": "law"}
 
 
 def field_of(message: str) -> str:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import html
 import math
+import types
 
 import numpy as np
 
@@ -13,7 +14,7 @@ LENGTHS = ((1.0, "m"), (1e-3, "mm"), (1e-6, "\u00b5m"), (1e-9, "nm"))
 PRESSURES = ((1e9, "GPa"), (1e6, "MPa"), (1e3, "kPa"), (1.0, "Pa"))
 POINT_STYLE = {"first contact": ("circle", "black"), "pull-off (load)": ("inverted_triangle", "#d62728"),
                "pull-off (grip-work)": ("diamond", "#9467bd"), "pull-off (grip)": ("square", "#8c564b"),
-               "chosen state": ("star", "#2b7a3d")}
+               "chosen state": ("star", "#2b7a3d"), "pull-off at the rate": ("triangle", "#e377c2")}
 
 
 def scale_of(value: float, table) -> tuple:
@@ -58,11 +59,19 @@ def _lines(branches, kind, x_scale):
     return {"xs": xs, "ys": ys}
 
 
+def _rate_peak(po):
+    """The largest tension of a pull-off at a rate, as a point with P [N/m] and delta_work [m] (None: none)."""
+    if po is None or not po.detached:
+        return None
+    i = int(np.argmin(po.history.P))
+    return types.SimpleNamespace(P=float(po.history.P[i]), delta_work=float(po.history.delta_work[i]))
+
+
 def _points(picture, x_scale, x_unit):
     marks = [("first contact", picture.first_contact)]
     marks += [(f"pull-off ({k})", picture.pull_offs[k].state if picture.pull_offs[k].detached else None)
               for k in CONTROLS]
-    marks += [("chosen state", picture.state)]
+    marks += [("chosen state", picture.state), ("pull-off at the rate", _rate_peak(picture.rate_pull_off))]
     cols = {k: [] for k in ("x", "y", "label", "marker", "color", "unit")}
     for label, s in marks:
         if s is None:
@@ -145,6 +154,16 @@ def _pull_off_rows(picture):
         else:
             cells = (f"<span class='jkr-pull-off-{k}'>none</span>", "", html.escape(po.reason))
         rows.append(f"<tr><td>{k}</td>" + "".join(f"<td>{x}</td>" for x in cells) + "</tr>")
+    po = picture.rate_pull_off
+    if po is not None:
+        unit = "N/m/s" if po.control == "load" else "m/s"
+        if po.detached:
+            cells = (f"<span class='jkr-pull-off-rate'>{fmt(po.P, 'N/m')}</span>", fmt(po.contact_width * 1e3, "mm"),
+                     f"{fmt(po.delta_work, 'm', 4)} ({html.escape(po.kind)})")
+        else:
+            cells = ("<span class='jkr-pull-off-rate'>none</span>", "", html.escape(po.reason))
+        rows.append(f"<tr><td>{po.control} at {fmt(po.rate, unit, 4)}</td>" + "".join(f"<td>{x}</td>" for x in cells)
+                    + "</tr>")
     return "".join(rows)
 
 
@@ -163,6 +182,8 @@ def summary_html(picture) -> str:
     c, cy = picture.contact, picture.cycle
     lam = c.lambda_
     law = "JKR" if lam is None else f"Maugis-Dugdale, sigma0 = {fmt(c.sigma0, 'Pa', 4)}, lambda = {fmt(lam, '', 4)}"
+    if c.kinetics is not None:
+        law = f"JKR with crack kinetics, v* = {fmt(c.kinetics.v_star, 'm/s', 4)}, n = {fmt(c.kinetics.n, '', 4)}"
     jumps = ", ".join(f"{j.kind} at P = {fmt(j.before.P, 'N/m', 5)}" for j in cy.jumps) or "none"
     energy = "n/a (the loop did not close)" if cy.dissipated is None else fmt(cy.dissipated, "J/m", 4)
     return (f"<p><b>Regime</b> (slow pulling under load): <span class='jkr-regime'>{html.escape(picture.regime)}"

@@ -1,9 +1,9 @@
 """Measured data for jkrcyl.fit: validation (a ValueError naming the row and the column) and the CSV reader.
 
 Columns (SI units): P [N/m] the load per unit length (positive pushing the pin into the bottom of the hole, section
-6); width [m] the contact width 2 R eps, or delta_work [m] the work-conjugate approach (README, "Which approach");
-optional sigma_P [N/m], sigma_width [m], sigma_delta_work [m] (one standard deviation of each measurement) and
-leg ('loading' or 'unloading', for separate works of adhesion on the two legs).
+6); width [m] the contact width 2 R eps, or delta_work [m] the work-conjugate approach (docs/guide/forward.md,
+"Which approach"); optional sigma_P [N/m], sigma_width [m], sigma_delta_work [m] (one standard deviation of each
+measurement) and leg ('loading' or 'unloading', for separate works of adhesion on the two legs).
 """
 from __future__ import annotations
 

@@ -23,8 +23,30 @@ UNITS = {"t": "s", "P": "N/m", "delta": "m", "delta_work": "m", "eps": "rad", "c
 
 @dataclass(frozen=True)
 class Event:
-    """An event of a history: its kind (:data:`EVENTS`), time t [s], load P [N/m] and held approaches delta,
-    delta_work [m] there, and its row in the History's arrays."""
+    """An event of a :class:`History`.
+
+    Attributes
+    ----------
+    kind : str
+        One of :data:`EVENTS`: 'separation', 'top-contact', 'peak-tension' or 'range-end'.
+    t : float
+        The time [s].
+    P : float
+        The load there [N/m].
+    delta, delta_work : float
+        The paper's and the work-conjugate approach there [m].
+    index : int
+        Its row in the History's arrays.
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m,
+    ...                      kinetics=jkrcyl.CrackKinetics(v_star=1e-6, n=0.6))
+    >>> pin.pull_off("grip-work", rate=1e-11).history.events[-1].kind
+    'separation'
+    """
 
     kind: str
     t: float
@@ -41,15 +63,48 @@ class Event:
 class History:
     """A single bottom patch under a prescribed load or approach, against time (SI units).
 
-    t [s]; P [N/m] (negative: tension), delta and delta_work [m] (the paper's and the work-conjugate approach);
-    eps [rad] the contact half-angle and contact_width = 2 R eps [m]; G [J/m^2] the energy release rate at
-    both edges (the patch is symmetric); v [m/s] the crack speed of each edge, R |d eps/dt|, signed: positive
-    where the crack opens (the contact recedes, G > w), negative where it closes; h_pi [m] the gap at the top
-    of the hole; work [J/m] the work done on the pin since t[0], int P d(delta_work); dissipated [J/m] the energy
-    the edges dissipated since t[0], int (G - w) over the crack advance of both edges (>= 0); potential [J/m] the
-    total potential (elastic energy less w times the contact width; work = change of potential + dissipated).
-    events: the :class:`Event` s in time order (the terminal one, if any, last and its row the last row);
-    control: the held quantity ('load', 'grip', 'grip-work').
+    What :meth:`jkrcyl.Contact.respond` returns, and the record of a pull-off or a cycle at a rate.
+
+    Attributes
+    ----------
+    control : str
+        The held quantity: 'load', 'grip' or 'grip-work'.
+    t : numpy.ndarray
+        Time [s].
+    P : numpy.ndarray
+        Load [N/m] (negative: tension).
+    delta, delta_work : numpy.ndarray
+        The paper's and the work-conjugate approach [m].
+    eps, contact_width : numpy.ndarray
+        The contact half-angle [rad] and the width 2 R eps [m].
+    G : numpy.ndarray
+        The energy release rate at both edges [J/m^2] (the patch is symmetric).
+    v : numpy.ndarray
+        The crack speed of each edge, R abs(d eps/dt) [m/s], signed: positive where the crack opens (the contact
+        recedes, G > w), negative where it closes.
+    h_pi : numpy.ndarray
+        The gap at the top of the hole [m].
+    work : numpy.ndarray
+        The work done on the pin since t[0], int P d(delta_work) [J/m].
+    dissipated : numpy.ndarray
+        The energy the edges dissipated since t[0], int (G - w) over the crack advance of both edges [J/m] (>= 0).
+    potential : numpy.ndarray
+        The total potential [J/m] (elastic energy less w times the contact width): work = change of potential +
+        dissipated.
+    events : tuple of Event
+        In time order; the terminal one (if any) last, its row the last row.
+    note : str
+        What else the integration has to say (a restart past a fold), or ''.
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m,
+    ...                      kinetics=jkrcyl.CrackKinetics(v_star=1e-6, n=0.6))
+    >>> h = pin.respond([0.0, 1.0, 10.0], P=[0.0, -1000.0, -1000.0])   # a load step, then held
+    >>> h.end, round(float(h.contact_width[-1]) * 1e3, 1), bool(h.G[-1] > pin.w)  # receding: G > w
+    ('end', 27.0, True)
     """
 
     control: str
@@ -75,7 +130,7 @@ class History:
         return last if last in TERMINAL else "end"
 
     def first(self, kind: str):
-        """The first event of a kind, or None."""
+        """The first :class:`Event` of a kind (:data:`EVENTS`), or None."""
         return next((e for e in self.events if e.kind == kind), None)
 
     @property

@@ -37,11 +37,27 @@ from .run import rest_start
 
 @dataclass(frozen=True)
 class RateSweep:
-    """Pull-off against rate: rates [N/m/s or m/s], P [N/m] (the largest tension; NaN without an event) and
-    kind (the event: 'separation', 'top-contact' or why none) per rate; P_quasi_static [N/m] (the quasi-static
-    path's largest tension: the fixed-load pull-off where the path passes it); P_frozen [N/m] the infinite-rate
-    ceiling; asymptote [N/m] the high-rate power law per rate (load control; NaN otherwise) and its exponent
-    n/(n + 2)."""
+    """Pull-off against rate, what :func:`rate_sweep` returns.
+
+    Attributes
+    ----------
+    control : str
+        The held quantity: 'load', 'grip' or 'grip-work'.
+    rates : numpy.ndarray
+        The rates [N/m/s under load, m/s under either approach].
+    P : numpy.ndarray
+        The pull-off per rate [N/m]: the largest tension before the event (NaN without one).
+    kind : numpy.ndarray of str
+        The event per rate: 'separation', 'top-contact', or why there is none.
+    P_quasi_static : float or None
+        The quasi-static path's largest tension [N/m] (the fixed-load pull-off where the path passes it).
+    P_frozen : float or None
+        The infinite-rate ceiling [N/m] (:func:`frozen_pull_off`).
+    asymptote : numpy.ndarray
+        The high-rate power law per rate [N/m] (:func:`high_rate_pull_off`; load control, NaN otherwise).
+    exponent : float
+        Its exponent n/(n + 2).
+    """
 
     control: str
     rates: np.ndarray
@@ -53,11 +69,44 @@ class RateSweep:
     exponent: float
 
     def table(self) -> dict:
+        """Columns rate, P, kind, asymptote (one row per rate) for CSV or JSON output."""
         return {"rate": self.rates, "P": self.P, "kind": self.kind, "asymptote": self.asymptote}
 
 
 def rate_sweep(contact, rates, control: str = "load", route: str = "table") -> RateSweep:
-    """The pull-off (jkrcyl.kinetics.ramps.pull_off) at each rate, with the limits of the module docstring."""
+    """The pull-off at each rate, from the zero-load contact at rest, with the limits (module docstring).
+
+    Parameters
+    ----------
+    contact : jkrcyl.Contact
+        A contact with crack kinetics (``kinetics=jkrcyl.CrackKinetics(...)``).
+    rates : array_like
+        Rates > 0: of the load [N/m/s] under ``control='load'``, of the held approach [m/s] otherwise.
+    control : str, optional
+        'load' (default), 'grip-work' (delta_work pulled: a testing machine) or 'grip' (the paper's delta).
+    route : str, optional
+        'table' (default: the fixed-arc states tabulated once per contact) or 'direct' (solved at every step).
+
+    Returns
+    -------
+    RateSweep
+        The pull-off and its event per rate, the quasi-static value, the power law and the ceiling.
+
+    Raises
+    ------
+    ValueError
+        The contact has no crack kinetics; a rate is not finite and > 0; an unknown control or route.
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m,
+    ...                      kinetics=jkrcyl.CrackKinetics(v_star=1e-6, n=0.6))
+    >>> sw = rate_sweep(pin, [1e-12, 1e-11], control="grip-work")    # m/s
+    >>> [str(k) for k in sw.kind], [round(float(p), -1) for p in sw.P], round(sw.P_quasi_static)
+    (['separation', 'separation'], [-1680.0, -2100.0], -1555)
+    """
     law = kinetics_of(contact.law)
     _fw.check_control(control)
     r = real_array("rates", rates).ravel()
@@ -93,8 +142,27 @@ def _arc_and_start(contact):
 
 
 def frozen_pull_off(contact) -> Optional[float]:
-    """The infinite-rate ceiling [N/m]: the zero-load contact frozen, pulled until h(pi) = 0 at that fixed arc
-    (None where the gap at the top never closes so)."""
+    """The infinite-rate ceiling of the pull-off: the zero-load contact frozen, pulled until h(pi) = 0 at that
+    fixed arc.
+
+    Parameters
+    ----------
+    contact : jkrcyl.Contact
+        A contact (its law's kinetics are not used: at infinite rate the edges do not move).
+
+    Returns
+    -------
+    float or None
+        The load [N/m] at which the gap at the top of the hole closes; None where it never closes so (or there
+        is no sub-critical zero-load contact).
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> round(frozen_pull_off(jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m)))
+    -4887
+    """
     arc, start = _arc_and_start(contact)
     if arc is None:
         return None
@@ -106,8 +174,36 @@ def frozen_pull_off(contact) -> Optional[float]:
 
 
 def high_rate_pull_off(contact, rate: float) -> Optional[float]:
-    """The high-rate power law of the load-control pull-off [N/m] at ``rate`` [N/m/s] (module docstring; the
-    power law phi = (v/v_ref)^n only: None for a user phi)."""
+    """The high-rate power law of the load-control pull-off, |P| ~ rate^(n/(n + 2)) (module docstring).
+
+    Parameters
+    ----------
+    contact : jkrcyl.Contact
+        A contact with crack kinetics, phi = (a_T v/v*)^n.
+    rate : float
+        The rate of the load [N/m/s].
+
+    Returns
+    -------
+    float or None
+        The load [N/m] at which the contact is gone on the power law; None for a user phi or without a
+        sub-critical zero-load contact.
+
+    Raises
+    ------
+    ValueError
+        The contact has no crack kinetics.
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m,
+    ...                      kinetics=jkrcyl.CrackKinetics(v_star=1e-6, n=0.6))
+    >>> ratio = high_rate_pull_off(pin, 1e3) / high_rate_pull_off(pin, 1.0)
+    >>> abs(ratio / 1e3 ** (0.6 / 2.6) - 1) < 1e-12                 # the exponent n/(n + 2)
+    True
+    """
     law = kinetics_of(contact.law)
     arc, start = _arc_and_start(contact)
     if arc is None or law.phi is not None:

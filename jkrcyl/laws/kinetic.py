@@ -36,8 +36,24 @@ _GAS_CONSTANT = 8.314462618  # J/(mol K)
 
 
 def wlf_shift(T, T_ref, C1=8.86, C2=101.6):
-    """The WLF shift factor a_T = 10^(-C1 (T - T_ref)/(C2 + T - T_ref)) (T, T_ref in K or degC alike; the
-    defaults are the universal constants at T_ref = T_g + 50 K).  Pass it as ``Kinetic(..., shift=a_T)``.
+    """The WLF shift factor a_T = 10^(-C1 (T - T_ref)/(C2 + T - T_ref)).  Pass it as ``Kinetic(..., shift=a_T)``.
+
+    Parameters
+    ----------
+    T, T_ref : float
+        The test and the reference temperature (K or degC alike).
+    C1, C2 : float, optional
+        The WLF constants [-, K]; the defaults are the universal ones at T_ref = T_g + 50 K.
+
+    Returns
+    -------
+    float
+        a_T (> 1 below T_ref: the crack law's reference speed v*/a_T is slower).
+
+    Raises
+    ------
+    ValueError
+        Naming T: at or below T_ref - C2, where the WLF form diverges; a temperature or constant not finite.
 
     Examples
     --------
@@ -52,7 +68,32 @@ def wlf_shift(T, T_ref, C1=8.86, C2=101.6):
 
 
 def arrhenius_shift(T, T_ref, activation_energy):
-    """The Arrhenius shift a_T = exp[(E_a/R_gas)(1/T - 1/T_ref)], T and T_ref in K, E_a in J/mol."""
+    """The Arrhenius shift a_T = exp[(E_a/R_gas)(1/T - 1/T_ref)].  Pass it as ``Kinetic(..., shift=a_T)``.
+
+    Parameters
+    ----------
+    T, T_ref : float
+        The test and the reference temperature [K], > 0.
+    activation_energy : float
+        E_a [J/mol], >= 0.
+
+    Returns
+    -------
+    float
+        a_T.
+
+    Raises
+    ------
+    ValueError
+        Naming the parameter: a temperature <= 0, a negative activation energy, a value not finite.
+
+    Examples
+    --------
+    >>> arrhenius_shift(293.15, 293.15, 5e4)
+    1.0
+    >>> round(arrhenius_shift(283.15, 293.15, 5e4), 3)             # 10 K colder: cracks 2.06 times slower
+    2.064
+    """
     T = finite_scalar("T", T, low=0.0, low_open=True)
     T_ref = finite_scalar("T_ref", T_ref, low=0.0, low_open=True)
     Ea = finite_scalar("activation_energy", activation_energy, low=0.0)
@@ -193,6 +234,21 @@ class Kinetic(Griffith):
 
 def CrackKinetics(v_star, n, phi=None, shift=None) -> Kinetic:
     """The common case, ``jkrcyl.CrackKinetics(v_star, n)``: :class:`Kinetic` with phi = (a_T v/v*)^n.
+
+    Parameters
+    ----------
+    v_star, n, phi, shift
+        As :class:`Kinetic`.
+
+    Returns
+    -------
+    Kinetic
+        The law, for ``jkrcyl.Contact(..., kinetics=...)``.
+
+    Raises
+    ------
+    ValueError
+        As :class:`Kinetic`.
 
     Examples
     --------

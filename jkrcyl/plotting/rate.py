@@ -20,7 +20,18 @@ CONTROL = {"load": "load ramped down", "grip": "the paper's approach $\\delta$ p
 
 
 def parameters_text(contact) -> str:
-    """The pair, R, Delta, w and the crack law, in words (two lines)."""
+    """The pair, R, Delta, w and the crack law, in words (two lines): what every figure of this module states.
+
+    Parameters
+    ----------
+    contact : jkrcyl.Contact
+        A contact with crack kinetics.
+
+    Returns
+    -------
+    str
+        Two lines of matplotlib mathtext.
+    """
     m, law = contact.materials, contact.law
     phi = f"$(v/v^*)^{{{law.n:g}}}$" if law.phi is None else "a user $\\phi(v)$"
     shift = "" if law.shift == 1 else f", $a_T$ = {law.shift:.4g}"
@@ -31,7 +42,34 @@ def parameters_text(contact) -> str:
 
 
 def sweep_figure(sw, contact, title: str = ""):
-    """Pull-off |P| against rate (a jkrcyl.kinetics.RateSweep of ``contact``)."""
+    """Pull-off against rate on log-log axes, with the quasi-static value, the power law and the ceiling.
+
+    Parameters
+    ----------
+    sw : jkrcyl.kinetics.RateSweep
+        What :func:`jkrcyl.kinetics.rate_sweep` returned for ``contact``.
+    contact : jkrcyl.Contact
+        The contact (its parameters are stated on the figure).
+    title : str, optional
+        A first line of the title.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> from jkrcyl.plotting import rate
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m,
+    ...                      kinetics=jkrcyl.CrackKinetics(v_star=1e-6, n=0.6))
+    >>> sw = jkrcyl.kinetics.rate_sweep(pin, [1e-12, 1e-11, 1e-10], control="grip-work")
+    >>> fig = rate.sweep_figure(sw, pin)
+    >>> fig.axes[0].get_xscale(), fig.axes[0].get_yscale()
+    ('log', 'log')
+    >>> rate.st.mpl().close(fig)
+    """
     plt = st.mpl()
     fig, ax = plt.subplots(figsize=(7.2, 5.4))
     cmap = plt.get_cmap("viridis")
@@ -75,9 +113,36 @@ def _last_loop(cy):
 
 
 def loops_figure(cycles, contact, title: str = ""):
-    """The last loop of each jkrcyl.kinetics.RateCycle (one per frequency), P against delta_work sheared by the
-    chord of the slowest loop (delta_work - P/k: a shear keeps the loop's area, the energy dissipated, and makes
-    a thin loop visible)."""
+    """The last loop of each cycle at a rate (one per frequency): P against delta_work sheared by the chord of the
+    first loop (delta_work - P/k: a shear keeps the loop's area, the energy dissipated, and makes a thin loop
+    visible).
+
+    Parameters
+    ----------
+    cycles : sequence of jkrcyl.kinetics.RateCycle
+        The cycles of ``contact`` (same control and limits), the slowest first.
+    contact : jkrcyl.Contact
+        The contact (its parameters are stated on the figure).
+    title : str, optional
+        A first line of the title.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> from jkrcyl.plotting import rate
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m,
+    ...                      kinetics=jkrcyl.CrackKinetics(v_star=1e-6, n=0.6))
+    >>> cycles = [pin.cycle(P_max=1000.0, P_min=-1000.0, rate=r) for r in (0.04, 0.4)]   # 1e-5, 1e-4 Hz
+    >>> fig = rate.loops_figure(cycles, pin)
+    >>> len(fig.axes[0].get_lines())             # two loops and the axis line P = 0
+    3
+    >>> rate.st.mpl().close(fig)
+    """
     plt = st.mpl()
     fig, ax = plt.subplots(figsize=(7.2, 5.4))
     scale, unit = _unit(contact.Delta)
@@ -105,7 +170,33 @@ def loops_figure(cycles, contact, title: str = ""):
 
 
 def width_figure(po, contact, title: str = ""):
-    """Contact width against time in the ramp of a jkrcyl.kinetics.RatePullOff, the load beside it."""
+    """Contact width against time in the ramp of a pull-off at a rate, the load beside it (a second axis).
+
+    Parameters
+    ----------
+    po : jkrcyl.kinetics.RatePullOff
+        What ``contact.pull_off(control, rate=...)`` returned.
+    contact : jkrcyl.Contact
+        The contact (its parameters are stated on the figure).
+    title : str, optional
+        A first line of the title.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> from jkrcyl.plotting import rate
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m,
+    ...                      kinetics=jkrcyl.CrackKinetics(v_star=1e-6, n=0.6))
+    >>> fig = rate.width_figure(pin.pull_off("grip-work", rate=1e-11), pin)
+    >>> fig.axes[0].get_ylabel()
+    'contact width [mm]'
+    >>> rate.st.mpl().close(fig)
+    """
     plt = st.mpl()
     h = po.history
     fig, ax = plt.subplots(figsize=(7.2, 5.0))
@@ -127,7 +218,28 @@ def width_figure(po, contact, title: str = ""):
 
 
 def save(fig, path):
-    """Write a figure (PNG or PDF by the extension) and close it; returns the path."""
+    """Write a figure (PNG or PDF by the extension) and close it.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        One of this module's figures.
+    path : str or pathlib.Path
+        The file.
+
+    Returns
+    -------
+    str or pathlib.Path
+        ``path``.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from jkrcyl.plotting import rate
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     os.path.basename(rate.save(rate.st.mpl().figure(), os.path.join(folder, "f.png")))
+    'f.png'
+    """
     fig.savefig(path, dpi=120)
     st.mpl().close(fig)
     return path
