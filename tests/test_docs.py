@@ -5,7 +5,7 @@ and runs every gallery example; CI runs both).
   are what the library returns: tests/test_guide_pages.py)
 * every command line of the guide's sh blocks is a ``jkrcyl`` command that runs (exit status 0, no traceback; the
   README's own lines are run by tests/test_readme.py, the others here) or a make target in :data:`MAKE_TARGETS`;
-* the doctests of the public API's docstrings run;
+* (the doctests of the public API's docstrings run: tests/test_doctests.py)
 * the API reference names every public class and function (a new one cannot be left out), and every gallery
   image or page the text refers to belongs to an example that exists;
 * every gallery example is a script with a title (sphinx-gallery's format) that compiles.
@@ -28,12 +28,6 @@ BLOCK = re.compile(r"^```(\w*)\n(.*?)^```", re.S | re.M)
 MAKE_TARGETS = {"make derive", "make test", "make explore", "make docs", "make figures", "make atlas",
                 "make test-slow", "make test-boundscheck"}
 LONG_RUNNING = {"jkrcyl explore"}          # a server: tests/test_explore.py runs it
-PUBLIC_MODULES = ["jkrcyl", "jkrcyl.laws", "jkrcyl.contact", "jkrcyl.materials", "jkrcyl.critical", "jkrcyl.equilibria",
-                  "jkrcyl.special", "jkrcyl.results", "jkrcyl.results.states", "jkrcyl.results.paths",
-                  "jkrcyl.results.curves", "jkrcyl.fit.estimate", "jkrcyl.fit.result", "jkrcyl.fit.data",
-                  "jkrcyl.plotting", "jkrcyl.atlas", "jkrcyl.explore.model", "jkrcyl.explore.view",
-                  "jkrcyl.laws.kinetic", "jkrcyl.kinetics.sweep", "jkrcyl.kinetics.history", "jkrcyl.kinetics.results",
-                  "jkrcyl.plotting.rate"]
 
 
 def _blocks(page, lang):
@@ -92,18 +86,6 @@ def test_sh_command_runs(line, tmp_path):
 
 
 # --- docstrings -------------------------------------------------------------------------------------------------
-@pytest.mark.parametrize("name", PUBLIC_MODULES)
-def test_docstring_examples_run(name):
-    """The Examples of the public API's docstrings, as doctests (numbers compared to the digits printed)."""
-    module = importlib.import_module(name)
-    finder = doctest.DocTestFinder(exclude_empty=True)
-    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
-    for test in finder.find(module, name, globs=dict(vars(module), jkrcyl=importlib.import_module("jkrcyl"))):
-        if test.name.startswith(name) and test.examples:
-            runner.run(test)
-    assert runner.failures == 0, f"{runner.failures} doctest failures in {name} (run pytest -s to see them)"
-
-
 def test_the_explorer_examples_are_collected():
     """The runner above sees docstring examples (it would pass vacuously on a module it cannot read)."""
     import jkrcyl.explore.model as model

@@ -5,6 +5,7 @@ fixed-arc derivatives, so the equilibrium is X0 + X1."""
 import math
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -40,3 +41,22 @@ def test_tabulated_and_direct_arc_states_agree(E, nu, E_I, nu_I, w, Delta, x):
     s = solver(pb).states(np.array([a]))
     for f, (i0, i1) in (("p", (karc.P0, karc.P1)), ("dn", (karc.DN0, karc.DN1)), ("dw", (karc.DW0, karc.DW1))):
         assert abs(yd[i0] + yd[i1] - getattr(s, f)[0]) <= 1e-9 * (abs(yd[i0]) + abs(yd[i1]))
+
+
+@settings(max_examples=10, deadline=None)
+@given(E=moduli, nu=poisson, E_I=moduli, nu_I=poisson, w=st.floats(1e-3, 1.0), Delta=st.floats(1e-7, 1e-4))
+def test_the_quasi_static_limit_is_the_cores_pull_off(E, nu, E_I, nu_I, w, Delta):
+    """Two routes to one pull-off: the load ramped slowly (0.1 |P| per second) against edges that barely lag
+    (v* = 1e12 m/s) reaches the largest tension the core's walker finds (Contact.pull_off, quasi-static) to 1e-6,
+    and has none where the core has none -- over random pairs, rigid bodies included."""
+    if math.isinf(E) and math.isinf(E_I):
+        return
+    m = jkrcyl.Materials.from_young(E=E, nu=nu, E_I=E_I, nu_I=nu_I)
+    c = jkrcyl.Contact(R=1e-2, Delta=Delta, w=w, materials=m, kinetics=jkrcyl.CrackKinetics(v_star=1e12, n=0.6))
+    qs = c.pull_off("load")
+    po = c.pull_off("load", rate=0.1 * abs(qs.P if qs.P is not None else c.load_scale))
+    if qs.P is None:
+        assert po.P is None and po.reason
+    else:
+        assert po.kind in ("separation", "top-contact")
+        assert po.P == pytest.approx(qs.P, rel=1e-6)
