@@ -14,6 +14,7 @@ import sys
 
 import numpy as np
 import pytest
+from cli_run import run
 
 import jkrcyl
 from jkrcyl import equilibria as eq
@@ -157,7 +158,9 @@ def test_state_none_says_none():
 
 
 # --- CLI: one line, exit 2, no traceback --------------------------------------------------------------------
-def run(*args):
+def subprocess_run(*args):
+    """``python -m jkrcyl *args``: the real entry point (the catalogue below runs jkrcyl.cli.main in this process,
+    tests/cli_run.py)."""
     env = dict(os.environ, MPLBACKEND="Agg")
     return subprocess.run([sys.executable, "-m", "jkrcyl", *args], cwd=ROOT, env=env, capture_output=True,
                           text=True, timeout=300)
@@ -204,8 +207,11 @@ def test_cli_one_line_exit_2(args, name):
 
 
 def test_cli_version_and_module_entry():
-    r = run("--version")
+    r = subprocess_run("--version")
     assert r.returncode == 0 and r.stdout.strip() == f"jkrcyl {jkrcyl.__version__}"
+    r = subprocess_run(*CLI_CASES[0][0])            # bad input through the real entry point: one line, exit 2
+    lines = r.stderr.strip().splitlines()
+    assert r.returncode == 2 and len(lines) == 1 and "Traceback" not in r.stderr and CLI_CASES[0][1] in lines[0]
 
 
 def test_cli_broken_pipe_is_quiet():

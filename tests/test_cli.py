@@ -1,20 +1,11 @@
-"""Issue 5: the `jkrcyl` command line, end to end in a subprocess."""
+"""Issue 5: the `jkrcyl` command line, end to end: jkrcyl.cli.main in this process (tests/cli_run.py; the
+entry points in a subprocess: `python -m jkrcyl` in tests/test_bad_input.py, `python -m jkrcyl.cli` in
+tests/test_atlas.py and tests/test_kinetic_cli.py)."""
 import csv
 import json
-import os
-import pathlib
-import subprocess
-import sys
 
 import pytest
-
-ROOT = pathlib.Path(__file__).resolve().parents[1]
-
-
-def run(*args):
-    env = dict(os.environ, MPLBACKEND="Agg")
-    return subprocess.run([sys.executable, "-m", "jkrcyl.cli", *args], cwd=ROOT, env=env,
-                          capture_output=True, text=True, timeout=120)
+from cli_run import run
 
 
 @pytest.mark.parametrize("sub", [[], ["figures"], ["curve"], ["adherence"]])
@@ -126,3 +117,4 @@ def test_gb_printed_by_adherence_two_patch_and_physical_inputs():
 def test_help_documents_the_gb_default():
     r = run("curve", "--help")
     assert "Default: an incompressible pin, 1 - 1/(2 vartheta)" in " ".join(r.stdout.split())
+

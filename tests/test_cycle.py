@@ -175,16 +175,10 @@ def test_cycle_bad_input():
 
 def test_cli_cycle_plot_and_csv(tmp_path):
     import csv
-    import os
-    import pathlib
-    import subprocess
-    import sys
-    root = pathlib.Path(__file__).resolve().parents[1]
+    from cli_run import run                    # jkrcyl.cli.main in this process
     png, out = tmp_path / "c.png", tmp_path / "c.csv"
-    r = subprocess.run([sys.executable, "-m", "jkrcyl.cli", "cycle", "--E", "2.6e9", "--nu", "0.3", "--E-I", "2.6e9",
-                        "--nu-I", "0.3", "--R", "0.01", "--Delta", "1e-5", "--w", "0.05", "--P-max", "2000",
-                        "--P-min", "-2000", "--plot", str(png), "--csv", str(out)], cwd=root,
-                       env=dict(os.environ, MPLBACKEND="Agg"), capture_output=True, text=True, timeout=300)
+    r = run("cycle", "--E", "2.6e9", "--nu", "0.3", "--E-I", "2.6e9", "--nu-I", "0.3", "--R", "0.01", "--Delta",
+            "1e-5", "--w", "0.05", "--P-max", "2000", "--P-min", "-2000", "--plot", png, "--csv", out)
     assert r.returncode == 0, r.stderr
     assert "pull-off" in r.stdout and "J/m" in r.stdout
     assert png.stat().st_size > 1000

@@ -12,14 +12,12 @@ and runs every gallery example; CI runs both).
 """
 import doctest
 import importlib
-import os
 import pathlib
 import re
 import shlex
-import subprocess
-import sys
 
 import pytest
+from cli_run import run
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 DOCS = ROOT / "docs"
@@ -76,8 +74,7 @@ def test_sh_command_runs(line, tmp_path):
         words, target = words[:i], words[i + 1:]
         assert len(target) == 1, line
     assert not any(w in ("|", "<", ">", ">>", "&&", ";") for w in words), line
-    r = subprocess.run([sys.executable, "-m", "jkrcyl", *words], cwd=tmp_path, capture_output=True, text=True,
-                       timeout=180, env=dict(os.environ, MPLBACKEND="Agg"))
+    r = run(*words, cwd=tmp_path)               # jkrcyl.cli.main in this process (tests/cli_run.py)
     assert r.returncode == 0 and "Traceback" not in r.stderr, (line, r.stderr[-2000:])
     assert r.stdout.strip(), line
     for flag in ("--plot", "--csv", "--figure"):

@@ -190,8 +190,8 @@ def test_cli_refuses_a_bad_port(port, capsys):
 
 
 def test_cli_explore_help_runs():
-    r = subprocess.run([sys.executable, "-m", "jkrcyl", "explore", "--help"], capture_output=True, text=True,
-                       timeout=120)
+    from cli_run import run                    # jkrcyl.cli.main in this process
+    r = run("explore", "--help")
     assert r.returncode == 0 and "--port" in r.stdout
 
 

@@ -8,12 +8,11 @@ rate: the states differ from JKR's by C/lambda^2 (tests/test_cohesive_api.py), s
 fixed sigma0 must approach the JKR fit's like lambda^-2.
 """
 import math
-import subprocess
-import sys
 import warnings
 
 import numpy as np
 import pytest
+from cli_run import run
 
 import jkrcyl
 from jkrcyl.fit import cohesive as fit_cohesive
@@ -163,7 +162,7 @@ def test_window_edges_are_the_stated_lambdas():
 
 
 def _cli(*args):
-    return subprocess.run([sys.executable, "-m", "jkrcyl", "fit", *args], capture_output=True, text=True)
+    return run("fit", *args)            # jkrcyl.cli.main in this process (tests/cli_run.py)
 
 
 def test_cli_sigma0(lambda_one, tmp_path):

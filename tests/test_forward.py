@@ -5,13 +5,10 @@ evaluation of Contact.state (the full-state kernel, not the slope kernel the sol
 count of states per branch; the mirror symmetry phi -> phi + pi for the top branches.
 """
 import math
-import os
-import pathlib
-import subprocess
-import sys
 
 import numpy as np
 import pytest
+from cli_run import run
 
 import jkrcyl
 from jkrcyl.analysis import forward
@@ -19,7 +16,6 @@ from reference import paper
 
 MAT = jkrcyl.Materials(G=1.0, kappa=2.0, G_I=1.0, kappa_I=2.0)           # vartheta = 1, alpha* = 0
 SINGLE = [b for b in forward.BRANCH_SOLVERS if b not in ("two-patch", "full-contact", "separated")]
-ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 
 def contact(M, theta_mat=MAT, Delta=0.01, R=1.0):
@@ -163,10 +159,8 @@ def test_alpha_nonzero_solve():
 
 
 def test_cli_solve_physical_columns():
-    env = dict(os.environ, MPLBACKEND="Agg")
-    r = subprocess.run([sys.executable, "-m", "jkrcyl.cli", "solve", "--E", "2.6e9", "--nu", "0.3", "--E-I",
-                        "2.6e9", "--nu-I", "0.3", "--R", "0.01", "--Delta", "1e-5", "--w", "0.05", "--P", "-500",
-                        "--no-two-patch"], cwd=ROOT, env=env, capture_output=True, text=True, timeout=120)
+    r = run("solve", "--E", "2.6e9", "--nu", "0.3", "--E-I", "2.6e9", "--nu-I", "0.3", "--R", "0.01", "--Delta",
+            "1e-5", "--w", "0.05", "--P", "-500", "--no-two-patch")      # jkrcyl.cli.main in this process
     assert r.returncode == 0, r.stderr
     lines = r.stdout.splitlines()
     head = lines[1].split(",")

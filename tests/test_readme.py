@@ -1,7 +1,8 @@
 """Issue 11: every code block of README.md is executed, and the numbers the README states are checked.
 
 * ``python`` blocks run in order in one namespace (exec), in a temporary directory;
-* ``sh`` blocks: each ``.venv/bin/jkrcyl ...`` line runs as ``python -m jkrcyl ...`` in a temporary directory
+* ``sh`` blocks: each ``.venv/bin/jkrcyl ...`` line runs as ``jkrcyl.cli.main([...])`` in this process
+  (tests/cli_run.py; the entry point itself runs in tests/test_bad_input.py) in a temporary directory
   (exit status 0, no traceback, output or written files non-empty); every other line must be one of
   :data:`SKIPPED` (``make test``, ``make test-slow`` and ``make test-boundscheck`` run this suite, ``make derive``
   is tests/test_generated_up_to_date.py, figures and the atlas have their own tests), so a new command line cannot
@@ -19,10 +20,9 @@ import os
 import pathlib
 import re
 import shlex
-import subprocess
-import sys
 
 import pytest
+from cli_run import run
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 README = (ROOT / "README.md").read_text()
@@ -30,7 +30,6 @@ BLOCK = re.compile(r"^```(\w*)\n(.*?)^```", re.S | re.M)
 BLOCKS = [(m.group(1), m.group(2)) for m in BLOCK.finditer(README)]
 SKIPPED = {"make derive", "make test", "make test-slow", "make test-boundscheck", "make figures", "make atlas"}
 CLI_PREFIX = ".venv/bin/jkrcyl"
-TIMEOUT = 120
 
 
 def _sh_lines():
@@ -104,7 +103,6 @@ def test_sh_lines_are_run_or_allowed():
 
 
 def test_sh_cli_lines(tmp_path):
-    env = dict(os.environ, MPLBACKEND="Agg")
     ran = 0
     for line in _sh_lines():
         if not line.startswith(CLI_PREFIX + " "):
@@ -115,8 +113,7 @@ def test_sh_cli_lines(tmp_path):
             i = words.index(">")
             words, target = words[:i], words[i + 1]
         assert not any(w in ("|", "<", ">>", "&&", ";") for w in words), line
-        r = subprocess.run([sys.executable, "-m", "jkrcyl", *words], cwd=tmp_path, env=env, capture_output=True,
-                           text=True, timeout=TIMEOUT)
+        r = run(*words, cwd=tmp_path)
         assert r.returncode == 0 and "Traceback" not in r.stderr, (line, r.stderr)
         assert r.stdout.strip(), line
         if target:
