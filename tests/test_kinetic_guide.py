@@ -35,7 +35,9 @@ def test_roller_as_stated():
     assert [round(p.P / qs, 1) for p in pulled.values()] == [3.8, 7.0, 12.8]
     assert round(pulled[10].history.contact_width[0] * 1e3) == 18
     held = c.respond([0.0, 2.0, 3600.0], P=[0.0, -30.0, -30.0])
-    eq = next(s for s in c.solve(P=-30.0) if s.branch == "sub-critical" and s.stable)
+    # the equilibrium is a single-patch state: the two-patch branches (traced for 20 s on this alpha* != 0 pair)
+    # are not searched
+    eq = next(s for s in c.solve(P=-30.0, branches=["sub-critical"]) if s.branch == "sub-critical" and s.stable)
     assert round(held.contact_width[-1] * 1e3, 2) == 13.03 and round(eq.contact_width * 1e3, 2) == 13.00
     assert round(held.G[-1], 4) == 0.0501
 
