@@ -146,8 +146,8 @@ def test_cli_atlas_end_to_end(tmp_path):
     lines = (tmp_path / "atlas.csv").read_text().splitlines()
     assert lines[0].startswith("#") and lines[1].split(",") == list(A.CSV_COLUMNS)
     assert len(lines) == 2 + 16 * 20 and all(len(x.split(",")) == len(A.CSV_COLUMNS) for x in lines[2:])
-    bad = subprocess.run([sys.executable, "-m", "jkrcyl.cli", "atlas", "--out", str(tmp_path), "--n-M", "1"],
-                         cwd=ROOT, env=env, capture_output=True, text=True, timeout=60)
+    from cli_run import run                    # the bad input: jkrcyl.cli.main in this process
+    bad = run("atlas", "--out", tmp_path, "--n-M", "1")
     assert bad.returncode == 2 and len(bad.stderr.strip().splitlines()) == 1
 
 

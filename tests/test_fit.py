@@ -435,10 +435,12 @@ def test_cli_errors_are_one_line_exit_2(args, name, capsys, monkeypatch):
 
 
 def test_cli_nan_row_names_it(tmp_path):
-    """Through the installed entry point (python -m jkrcyl): one line on stderr, exit status 2, no traceback."""
+    """One line on stderr, exit status 2, no traceback (jkrcyl.cli.main in this process, tests/cli_run.py; a bad fit
+    through the entry point itself: tests/test_fit_converge.py::test_cli_diverging_fit_exits_2)."""
+    from cli_run import run
     f = tmp_path / "nan.csv"
     f.write_text("# R=0.01 Delta=1e-5 E=2.6e9 nu=0.3 E_I=2.6e9 nu_I=0.3\nP,width\n1,0.003\n,0.004\n2,0.005\n3,0.006\n")
-    r = _cli(str(f))
+    r = run("fit", f)
     lines = r.stderr.strip().splitlines()
     assert r.returncode == 2 and len(lines) == 1 and "P: row 1 is NaN" in lines[0] and "Traceback" not in r.stderr
 
