@@ -44,6 +44,7 @@ ATOL_ENERGY = 1e-4     # of rtol times the adhesion energy of the reference cont
 #                        equilibrium stiffly that control costs many steps, so pull-offs go without)
 CRAWL_STEPS = 500      # LSODA steps in a row below CRAWL_STEP of the segment: it is stuck at its explicit (Adams)
 CRAWL_STEP = 1e-8      # stability limit on a stiff path whose rates are rounding noise; Radau takes over there
+MAX_STEPS = 200_000    # steps of one segment (a few thousand in the hardest cases measured): beyond, a ValueError
 EVENT_KINDS = ("separation", "top-contact", "range-end", "peak-tension", "runaway")
 
 
@@ -179,7 +180,7 @@ def segment(ode: EdgeODE, drive: Linear, t1: float, Y0, rtol=RTOL, peak=False, d
     t0 = float(Y0[0])
     ode.start(drive, t1 - t0)
     steps, events, restart, armed, Y = [], [], 0, True, np.asarray(Y0, dtype=float)
-    method, crawl = LSODA, 0
+    method, crawl, taken = LSODA, 0, 0
     while True:
         ode.t_origin = t_o = float(Y[0])
         e = rtol * ATOL_ENERGY * ode.energy_atol if energy else 1e300
@@ -204,6 +205,11 @@ def segment(ode: EdgeODE, drive: Linear, t1: float, Y0, rtol=RTOL, peak=False, d
                 Y = steps[-1][1] if steps else np.asarray(Y0, dtype=float)
                 restart += 1
                 break
+            taken += 1
+            if taken > MAX_STEPS:
+                raise ValueError(f"rate: the history at this rate needs more than {MAX_STEPS} integrator steps "
+                                 f"(t = {t_o + solver.t:.6g} s of {t1:.6g} s); a rate or v* nearer the "
+                                 f"quasi-static limit is resolved faster by pull_off() without rate")
             crawl = crawl + 1 if solver.step_size < CRAWL_STEP * (t1 - t0) else 0
             if crawl > CRAWL_STEPS and method is LSODA:      # stuck at the Adams stability limit: Radau from here
                 method, Y = Radau, (steps[-1][1] if steps else np.asarray(Y0, dtype=float))
