@@ -32,6 +32,7 @@ from typing import Callable, Dict, List
 
 import numpy as np
 
+from .._validate import control as _check_control
 from ..model import full_contact as _full
 from ..model import stability as _stab
 from ..model import two_patch as _two
@@ -66,9 +67,8 @@ class Units:
 
 
 def check_control(control) -> str:
-    if not isinstance(control, str) or control not in CONTROLS:
-        raise ValueError(f"control must be one of {', '.join(repr(c) for c in CONTROLS)}, got {control!r}")
-    return control
+    """The control, validated (jkrcyl._validate.control: the one check)."""
+    return _check_control(control)
 
 
 def _state(pb, un, branch, control, side, a, eps, P_star, dn, h, flags, U, a_top=0.0, eps_top=0.0, K=None,
