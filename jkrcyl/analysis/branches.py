@@ -30,8 +30,9 @@ def check_regime(pb: Problem, regime: str) -> str:
         raise ValueError(f"regime must be one of {', '.join(REGIMES + (ZONE_ONLY,))}, got {regime!r}")
     if regime not in solver(pb).regimes():
         raise ValueError(f"regime: no {regime} equilibria for this problem (its branches: "
-                         f"{', '.join(solver(pb).regimes())}; super-critical needs a finite a_crit, section 7.2, "
-                         "and a Griffith edge; contactless a cohesive law)")
+                         f"{', '.join(solver(pb).regimes())}; super-critical needs a finite a_crit, section 7.2 -- "
+                         "with a cohesive law below pi - 0.05 and a state past it below the load cap; contactless "
+                         "a cohesive law)")
     return regime
 
 
