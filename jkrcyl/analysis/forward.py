@@ -126,8 +126,7 @@ def _warn_past_table(pb, un, regime, field, target, side):
     """BranchLimitWarning where the target lies beyond the held quantity's range on a branch's table, on the side
     of the table's last value, and the table stops short of the branch's end there (the solver's extent, e.g. the
     cohesive law's traced load cap); the closed forms' tables reach a_crit, where the load is unbounded."""
-    name, scaled = _br.SLICE_OF_CURVE[field]
-    values = np.asarray(getattr(_br.table(pb, regime), name)) * (pb.scale if scaled else 1.0)
+    values = _br.table_values(pb, regime, field)[1]
     if not values.size:
         return
     last = values[-1]

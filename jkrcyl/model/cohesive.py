@@ -182,6 +182,14 @@ class Cohesive(SinglePatch):
                      p_k=col("D_p"), dn_k=col("D_dn"), B=col("B"), eps=col("eps"), c=col("c"),
                      c_top=np.zeros(a.size), total=col("potential"), feasible=col("feasible").astype(bool))
 
+    def table_values(self, regime, field):
+        """(a, values) of p, dn, dw or h on a contact branch's table grid without slopes, flags and energy (the
+        trace's cached fixed contacts: a search for a held value needs no more); None otherwise."""
+        if regime == "contactless" or field not in ("p", "dn", "dw", "h"):
+            return None
+        a = self.grid(regime, self.dense_points)
+        return a, np.array([self.value(field, x) for x in a.tolist()])
+
     def value(self, field, a):
         """p, dn, dw or h at one branch parameter without the slopes, feasibility and energy, or a slope of p, dn
         or dw without the feasibility and energy (root refinement)."""
@@ -297,29 +305,31 @@ class Cohesive(SinglePatch):
         h0 = self.law.h0
         return -2.0 + h0, -h0
 
-    def _contact_tables(self):
-        """(p, feasible) of the contact branches' tables, sub- and super-critical."""
-        regs = [r for r in ("sub-critical", "super-critical") if r in self.regimes()]
-        tables = [self.states(self._branch(r).grid(0, True)) for r in regs]
-        return np.concatenate([s.p for s in tables]), np.concatenate([s.feasible for s in tables])
+    def _super_pulls(self):
+        """Branch parameters of the super-critical table's states that pull (p < 0, without their feasibility)."""
+        if "super-critical" not in self.regimes():
+            return np.zeros(0)
+        a, p = self.table_values("super-critical", "p")
+        return a[p < 0]
 
     @functools.cached_property
     def adheres(self):
         """Whether some feasible contact state pulls (p < 0) on either side of a_crit; not when the range reaches
         round (h0 > 2 Delta)."""
-        p, feasible = self._contact_tables()
-        return bool(np.any((p < 0) & feasible))
+        s = self.states(self.grid("sub-critical", self.dense_points))
+        return bool(np.any((s.p < 0) & s.feasible)) or any(self.point(x).feasible for x in self._super_pulls())
 
     @property
     def no_adherence_reason(self):
         if self.law.h0 >= 2.0:
             return (f"no adherence force: every state of the cohesive law pushes (P >= 0) -- its range h0 = "
                     f"{self.law.h0:.6g} Delta reaches round the hole (a uniform traction has no resultant)")
-        p, _ = self._contact_tables()
+        s = self.states(self.grid("sub-critical", self.dense_points))
+        pulls = bool(np.any(s.p < 0)) or self._super_pulls().size > 0
         return ("no adherence force on one patch: every feasible single-patch state pushes (P >= 0)" +
                 ("; those that pull overlap the top of the hole (h(pi) < 0), where two patches or full contact take "
                  "over -- " + self.problem.not_modelled("two-patch", "a contact at the bottom and the top (two "
-                                                        "patches) is") if np.any(p < 0) else ""))
+                                                        "patches) is") if pulls else ""))
 
     @functools.cached_property
     def unmodelled(self):

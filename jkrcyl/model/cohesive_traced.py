@@ -49,6 +49,8 @@ class Traced:
         j = int(np.clip(np.searchsorted(tt, t) - 1, 0, len(tt) - 2))
         f = (t - tt[j]) / (tt[j + 1] - tt[j])
         chord = x[j + 1] - x[j]
+        snap = 1e-12 * (abs(self.offset) + tt[-1]) / (tt[j + 1] - tt[j])      # a - offset rounds t at a table point
+        f = 0.0 if abs(f) <= snap else (1.0 if abs(f - 1) <= snap else f)
         if self.kind == "all":
             eps = math.exp(x[0, 0] + t)
             s = self.law.state(eps)

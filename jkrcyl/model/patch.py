@@ -133,6 +133,11 @@ class SinglePatch:
             raise ValueError(f"a must be {side} a_crit = {ac!r} on the {regime} branch, got {a[off].flat[0]!r}")
         return a
 
+    def table_values(self, regime: str, field: str):
+        """(a, values) of a field on the branch's table grid by a route cheaper than the full table, or None (the
+        analyses then read the table: jkrcyl.analysis.branches.table_values)."""
+        return None
+
     def value(self, field: str, a: float) -> float:
         """One field of :data:`FIELDS` at one contact parameter."""
         return float(getattr(self.states(np.array([a])), field)[0])
