@@ -106,7 +106,7 @@ def _short(pb, s) -> str:
     """Why the branch of s ended at s short of its end ('' where it really ends: a_crit, round, a continuation)."""
     regime = s.branch.replace("-top", "")
     sv = _fw.solver(pb)
-    return sv.stops_short(regime, s.a) if regime in sv.regimes() and sv.continues(regime, s.a) is None else ""
+    return sv.stops_short(regime, s.a) if sv.has(regime) and sv.continues(regime, s.a) is None else ""
 
 
 def _same(s1, s2, rel=1e-6):

@@ -110,7 +110,7 @@ def single_patch_states(pb: Problem, un: Units, regime: str, a, control: str, si
 
 def _single(regime: str, side: str = "bottom"):
     def solver(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
-        if regime not in _br.solver(pb).regimes():
+        if not _br.solver(pb).has(regime):
             return []
         if side == "top":                        # mirror: P* -> -P*, either approach -> -2 - itself
             target = -target if key == "P_star" else -2.0 - target

@@ -85,13 +85,9 @@ class Cohesive(SinglePatch):
             return self._super
         return self._sub
 
-    def _traced_at(self, a):
-        """The traced branch of the parameter a > 1."""
-        return self._branch("super-critical" if a >= _ct.SUPER_OFFSET else "sub-critical")
-
     def _where(self, a):
         """(eps, c, direction) at the branch parameter a > 1 (jkrcyl.model.cohesive_traced.Traced.where)."""
-        br = self._traced_at(a)
+        br = self._branch(self.regime_of(a))
         return br.where(a - br.offset)
 
     @functools.cached_property
@@ -121,14 +117,16 @@ class Cohesive(SinglePatch):
         """The contactless pin where its zone touches, the sub-critical branch, and the super-critical one where
         the pair has a receding contact below pi - 0.05 and a state past it below the load cap
         (jkrcyl.numerics.cohesive_super; traced here, once)."""
-        out = ("contactless",) if self._contactless is not None else ()
-        out += ("sub-critical",)
-        return out + (("super-critical",) if self._super is not None else ())
+        return tuple(r for r in ("contactless", "sub-critical", "super-critical") if self.has(r))
+
+    def has(self, regime):
+        """Whether the branch exists: the super-critical one is traced only when asked about."""
+        if regime == "super-critical":
+            return self._super is not None
+        return regime == "sub-critical" or (regime == "contactless" and self._contactless is not None)
 
     def regime_of(self, a: float) -> str:
-        if a <= 1:
-            return "contactless"
-        return "super-critical" if a >= _ct.SUPER_OFFSET else "sub-critical"
+        return "contactless" if a <= 1 else ("super-critical" if a >= _ct.SUPER_OFFSET else "sub-critical")
 
     def eps_star_of(self, s: Slice):
         """eps/pi (no receding contact on this parametrisation)."""
@@ -145,10 +143,10 @@ class Cohesive(SinglePatch):
         if regime == "contactless":
             lo, hi = 0.0, 1.0
         else:
-            br = self._branch(regime) if regime in self.regimes() else self._sub
+            br = self._branch(regime) if self.has(regime) else self._sub
             lo, hi = br.offset, br.a_end
         bad = (a <= lo) | (a > hi) if regime == "contactless" else (a < lo) | (a > hi)
-        if regime not in self.regimes() or np.any(bad):
+        if not self.has(regime) or np.any(bad):
             raise ValueError(f"a must be in ({lo!r}, {hi!r}) on the {regime} branch of this cohesive law "
                              f"(a: the branch parameter), got {np.ravel(a)[0]!r}")
         return a
@@ -247,7 +245,7 @@ class Cohesive(SinglePatch):
         table's last point.  Sub-critical: traced up to p = P_CAP m^(4/3) (jkrcyl.numerics.cohesive_branch)
         unless it ends first (the receding limit, the zone reaching round).  Super-critical
         (jkrcyl.numerics.cohesive_super): either end (:meth:`_super_short`)."""
-        if regime not in ("sub-critical", "super-critical") or regime not in self.regimes():
+        if regime not in ("sub-critical", "super-critical") or not self.has(regime):
             return ""
         br = self._branch(regime)
         if regime == "super-critical":
@@ -307,7 +305,7 @@ class Cohesive(SinglePatch):
 
     def _super_pulls(self):
         """Branch parameters of the super-critical table's states that pull (p < 0, without their feasibility)."""
-        if "super-critical" not in self.regimes():
+        if not self.has("super-critical"):
             return np.zeros(0)
         a, p = self.table_values("super-critical", "p")
         return a[p < 0]

@@ -165,6 +165,11 @@ class SinglePatch:
         """The branches that exist: a < a_crit, and a > a_crit where a_crit is finite."""
         return ("sub-critical",) if math.isinf(self.a_crit) else ("sub-critical", "super-critical")
 
+    def has(self, regime: str) -> bool:
+        """Whether the branch exists (``regime in regimes()``, which a solver may answer without building the
+        branches it is not asked about)."""
+        return regime in self.regimes()
+
     def regime_of(self, a: float) -> str:
         return "sub-critical" if a < self.a_crit else "super-critical"
 
