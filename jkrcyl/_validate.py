@@ -107,3 +107,14 @@ def theta(value):
     if math.isfinite(v) and v > THETA_MAX:
         raise ValueError(f"theta must be in [0.5, {THETA_MAX:g}] or inf (the supported domain), got {v!r}")
     return v
+
+
+#: the three controls: what is held (the load P, the paper's approach delta, the work-conjugate delta_work)
+CONTROLS = ("load", "grip", "grip-work")
+
+
+def control(value):
+    """One of :data:`CONTROLS` (ValueError naming control, with the value given)."""
+    if not isinstance(value, str) or value not in CONTROLS:
+        raise ValueError(f"control must be one of {', '.join(repr(c) for c in CONTROLS)}, got {value!r}")
+    return value

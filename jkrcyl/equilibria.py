@@ -15,7 +15,7 @@ from typing import List, Optional, Sequence, Tuple
 
 from numpy.typing import ArrayLike
 
-from ._validate import count, finite_scalar, theta as _check_theta
+from ._validate import CONTROLS, control as _check_control, count, finite_scalar, theta as _check_theta
 from .analysis import branches as _br, confined as _confined, tracing as _tr
 from .critical import a_crit
 from .laws.dugdale import edge_of_strength as _law
@@ -32,7 +32,6 @@ __all__ = ["CONTROLS", "REGIMES", "a_crit", "adherence", "adherence_of", "confin
 
 REGIMES = _br.REGIMES
 RUBBERY_A_MAX = _br.RUBBERY_A_MAX      # curve(): a branch without a_crit is drawn over 0 < a < 3 (Fig. 7)
-CONTROLS = ("load", "grip", "grip-work")
 
 
 def incompressible_gb(theta: float) -> float:
@@ -336,11 +335,6 @@ def from_contact(contact: "jkrcyl.Contact") -> Tuple[float, float, float]:
     """
     pb = Problem.of(contact)
     return pb.M, pb.theta, pb.gb
-
-
-def _check_control(control):
-    if not isinstance(control, str) or control not in CONTROLS:
-        raise ValueError(f"control must be one of {', '.join(repr(c) for c in CONTROLS)}, got {control!r}")
 
 
 def _regimes(regimes):

@@ -168,3 +168,14 @@ def test_a_rate_too_slow_to_resolve_is_a_value_error_naming_rate():
     c = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m, kinetics=jkrcyl.CrackKinetics(v_star=1e-6, n=0.6))
     with pytest.raises(ValueError, match="^rate: too slow"):
         c.pull_off(rate=1e-30)
+
+
+def test_a_history_beyond_the_step_budget_is_a_value_error_naming_rate(monkeypatch):
+    """No integration runs for ever: past MAX_STEPS steps of a segment the answer is a ValueError naming rate
+    (the budget lowered here so that an ordinary ramp meets it)."""
+    from jkrcyl.kinetics import integrate
+    monkeypatch.setattr(integrate, "MAX_STEPS", 10)
+    m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    c = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m, kinetics=jkrcyl.CrackKinetics(v_star=1e-6, n=0.6))
+    with pytest.raises(ValueError, match=r"^rate: the history at this rate needs more than 10 integrator steps"):
+        c.pull_off(rate=100.0)

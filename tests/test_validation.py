@@ -99,3 +99,16 @@ def test_material_parameters_of_section_2():
     c = contact()
     assert c.A == pytest.approx(c.beta / (2 * math.pi))
     assert c.M == pytest.approx(math.sqrt(c.w * c.A * c.R) / (math.sqrt(2) * c.Delta * c.theta), rel=1e-14)
+
+
+def test_one_list_of_controls():
+    """The controls the library checks (jkrcyl._validate.CONTROLS) are those the results know (the fields of
+    jkrcyl.results.states.CONTROLS), the explorer offers and the CLI's pull-off table lists."""
+    from jkrcyl import _validate
+    from jkrcyl.cli import pull_off
+    from jkrcyl.explore import model
+    from jkrcyl.results import states
+    assert set(_validate.CONTROLS) == set(states.CONTROLS) == set(model.CONTROLS) == set(pull_off.CONTROLS)
+    for bad in ("Load", None, 1, "grip_work"):
+        with pytest.raises(ValueError, match="^control must be one of 'load', 'grip', 'grip-work', got"):
+            _validate.control(bad)

@@ -30,8 +30,9 @@ def check_regime(pb: Problem, regime: str) -> str:
         raise ValueError(f"regime must be one of {', '.join(REGIMES + (ZONE_ONLY,))}, got {regime!r}")
     if regime not in solver(pb).regimes():
         raise ValueError(f"regime: no {regime} equilibria for this problem (its branches: "
-                         f"{', '.join(solver(pb).regimes())}; super-critical needs a finite a_crit, section 7.2, "
-                         "and a Griffith edge; contactless a cohesive law)")
+                         f"{', '.join(solver(pb).regimes())}; super-critical needs a finite a_crit, section 7.2 -- "
+                         "with a cohesive law below pi - 0.05 and a state past it below the load cap; contactless "
+                         "a cohesive law)")
     return regime
 
 
@@ -84,15 +85,29 @@ SLICE_OF_CURVE = {"p": ("P_star", True), "dp_da": ("dP_star_da", True), "dn": ("
                   "ddw_da": ("ddelta_work_da", False), "h": ("h_pi_over_Delta", False)}
 
 
+def table_values(pb: Problem, regime: str, field: str):
+    """(a, values) of a solver field (single_patch.FIELDS, kernel scale) on the branch's dense table grid: the
+    solver's own where it has a cheaper route than the full table (SinglePatch.table_values), else the table's."""
+    got = solver(pb).table_values(regime, field)
+    if got is not None:
+        return got
+    name, scaled = SLICE_OF_CURVE[field]
+    c = table(pb, regime)
+    return c.a, np.asarray(getattr(c, name)) * (pb.scale if scaled else 1.0)
+
+
 def roots(pb: Problem, regime: str, field: str, target: float = 0.0, n=None):
     """[(a, sign)] where the solver field (single_patch.FIELDS, kernel scale) crosses target on the branch;
     sign: of field - target right of the root.  Sign changes through a pole are not roots.  The search grid is
-    the dense table, or n points (with the small contacts) when n is given."""
+    the dense table (:func:`table_values`), or n points (with the small contacts) when n is given."""
     name, scaled = SLICE_OF_CURVE[field]
-    c = table(pb, regime) if n is None else _curve(pb, regime, grid(pb, regime, n, small=SMALL_A_POINTS))
-    values = np.asarray(getattr(c, name)) * (pb.scale if scaled else 1.0) - target
+    if n is None:
+        a, values = table_values(pb, regime, field)
+    else:
+        c = _curve(pb, regime, grid(pb, regime, n, small=SMALL_A_POINTS))
+        a, values = c.a, np.asarray(getattr(c, name)) * (pb.scale if scaled else 1.0)
     sv = solver(pb)
-    return _roots.roots_on_grid(values, c.a, lambda lo, hi, flo, fhi: sv.root(field, lo, hi, flo, fhi, target))
+    return _roots.roots_on_grid(values - target, a, lambda lo, hi, flo, fhi: sv.root(field, lo, hi, flo, fhi, target))
 
 
 def values_at(pb: Problem, regime: str, a) -> Curve:

@@ -65,7 +65,10 @@ class _Run:
                 self.add(s, leg)
             to, kind = _path.land(self.pb, self.un, s, event, self.control, value, up)
             if to is None:
-                return None, f"leg {leg}: no stable state to jump to after the {kind} at {s!r}"
+                why = self.pb.not_modelled("full-contact", "the contact growing round after a zip (two patches, "
+                                           "full contact) is") if kind == "zip" else ""
+                return None, f"leg {leg}: no stable state to jump to after the {kind} at {s!r}" + (
+                    f" -- {why}" if why else "")
             if kind != "continue":                           # a branch going on as another is no jump
                 self.jumps.append(Jump(kind, leg, s, to))
             s = to
@@ -103,7 +106,7 @@ def _short(pb, s) -> str:
     """Why the branch of s ended at s short of its end ('' where it really ends: a_crit, round, a continuation)."""
     regime = s.branch.replace("-top", "")
     sv = _fw.solver(pb)
-    return sv.stops_short(regime, s.a) if regime in sv.regimes() and sv.continues(regime, s.a) is None else ""
+    return sv.stops_short(regime, s.a) if sv.has(regime) and sv.continues(regime, s.a) is None else ""
 
 
 def _same(s1, s2, rel=1e-6):
@@ -118,7 +121,7 @@ def cycle(pb: Problem, un: _fw.Units, control: str, hi: float, lo: float, n: int
     sep, to, kind = _path.first_contact(pb, un, control)
     run.add(sep, 0)
     if to is None or _path.unmodelled(pb):
-        why = _path.unmodelled(pb) or _path.no_first_contact_reason(pb)
+        why = _path.unmodelled(pb) or _path.no_first_contact_reason(pb, control)
         return _finish(run, n, None, why, delta_work_of, (lo, hi))
     run.jumps.append(Jump(kind, 0, sep, to))
     run.add(to, 0)

@@ -15,8 +15,8 @@
   bottom (top) of the hole (jkrcyl.model.cohesive), a saddle under load, stable under grip where the zone's
   opening grows with it.
 
-With a cohesive (Maugis-Dugdale) edge law the single-patch branches are the solver's (jkrcyl.model.cohesive) and
-two patches and full contact are not modelled: those branches return no state in a search of every branch, and
+With a cohesive (Maugis-Dugdale) edge law the single-patch branches (sub- and super-critical, contactless) are
+the solver's (jkrcyl.model.cohesive) and two patches and full contact are not modelled: those branches return no state in a search of every branch, and
 asking for them by name raises ValueError.
 
 Stability is that of the control (jkrcyl.results.states.CONTROLS): fixed load for P, fixed paper's approach for
@@ -32,6 +32,7 @@ from typing import Callable, Dict, List
 
 import numpy as np
 
+from .._validate import control as _check_control
 from ..model import full_contact as _full
 from ..model import stability as _stab
 from ..model import two_patch as _two
@@ -66,9 +67,8 @@ class Units:
 
 
 def check_control(control) -> str:
-    if not isinstance(control, str) or control not in CONTROLS:
-        raise ValueError(f"control must be one of {', '.join(repr(c) for c in CONTROLS)}, got {control!r}")
-    return control
+    """The control, validated (jkrcyl._validate.control: the one check)."""
+    return _check_control(control)
 
 
 def _state(pb, un, branch, control, side, a, eps, P_star, dn, h, flags, U, a_top=0.0, eps_top=0.0, K=None,
@@ -110,7 +110,7 @@ def single_patch_states(pb: Problem, un: Units, regime: str, a, control: str, si
 
 def _single(regime: str, side: str = "bottom"):
     def solver(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
-        if regime not in _br.solver(pb).regimes():
+        if not _br.solver(pb).has(regime):
             return []
         if side == "top":                        # mirror: P* -> -P*, either approach -> -2 - itself
             target = -target if key == "P_star" else -2.0 - target
@@ -123,15 +123,18 @@ def _single(regime: str, side: str = "bottom"):
 
 
 def _warn_past_table(pb, un, regime, field, target, side):
-    """BranchLimitWarning where the target lies beyond the held quantity's range on a branch's table and the
-    table stops short of the branch's end (the solver's extent, e.g. the cohesive law's traced load cap); the
-    closed forms' tables reach a_crit, where the load is unbounded."""
-    name, scaled = _br.SLICE_OF_CURVE[field]
-    values = np.asarray(getattr(_br.table(pb, regime), name)) * (pb.scale if scaled else 1.0)
-    if values.size and target > values.max() and solver(pb).stops_short(regime):
+    """BranchLimitWarning where the target lies beyond the held quantity's range on a branch's table, on the side
+    of the table's last value, and the table stops short of the branch's end there (the solver's extent, e.g. the
+    cohesive law's traced load cap); the closed forms' tables reach a_crit, where the load is unbounded."""
+    values = _br.table_values(pb, regime, field)[1]
+    if not values.size:
+        return
+    last = values[-1]
+    beyond = (target > values.max() and last >= values.max()) or (target < values.min() and last <= values.min())
+    if beyond and solver(pb).stops_short(regime):
         what, unit = ("P", un.load_scale / pb.scale) if field == "p" else ("the approach", un.Delta)
         sgn = -1.0 if side == "top" else 1.0
-        end = sgn * values.max() * unit
+        end = sgn * last * unit
         warnings.warn(f"{what}: the {regime}{'-top' if side == 'top' else ''} branch of the {pb.edge.name} law is "
                       f"traced up to {what} = {end:.6g} (the solver's table: {solver(pb).stops_short(regime)}); "
                       "states beyond were not searched", BranchLimitWarning, stacklevel=5)

@@ -152,7 +152,7 @@ def continuation(pb: Problem, un: _fw.Units, s, control: str):
     """The state where the branch of s continues past its end (the cohesive contact branch's touch end and the
     zone-only branch, jkrcyl.model.patch.SinglePatch.continues), or None."""
     regime = s.branch.replace("-top", "")
-    nxt = solver(pb).continues(regime, s.a) if regime in solver(pb).regimes() else None
+    nxt = solver(pb).continues(regime, s.a) if solver(pb).has(regime) else None
     if nxt is None:
         return None
     return _fw.single_patch_states(pb, un, nxt[0], [nxt[1]], control, s.side)[0]
@@ -172,11 +172,21 @@ def land(pb: Problem, un: _fw.Units, s, event: str, control: str, value: float, 
     quick = event == "touch" or (event == "fold" and s.branch.startswith("sub-critical"))
     names = [b for b in _fw.BRANCH_SOLVERS if not (quick and b == "two-patch")]
     target = value / (un.load_scale if control == "load" else un.Delta)
-    cands = [x for x in _fw.solve_normalised(pb, un, control, target, names) if x.stable and x.feasible
-             and not (x.branch == s.branch and abs(x.a - s.a) <= 1e-6 * max(s.a, 1e-300))]
+
+    def candidates(branches):
+        return [x for x in _fw.solve_normalised(pb, un, control, target, branches) if x.stable and x.feasible
+                and not (x.branch == s.branch and abs(x.a - s.a) <= 1e-6 * max(s.a, 1e-300))]
+    # a snap-in takes the smallest state on its side, a sub-critical pull-off a smaller one or the smallest on the
+    # other side: a super-critical state (eps > eps_crit) is larger than any sub-critical one, so those branches
+    # (for a traced law, a trace of their own) are searched only where the others leave no candidate
+    small = s.branch == "separated" or (event == "fold" and s.branch.startswith("sub-critical"))
+    first = [b for b in names if not b.startswith("super-critical")] if small else names
+    cands = candidates(first)
     if s.branch == "separated":                          # free pin touching a side: snap-in there
         side = ("bottom" if up else "top") if control == "load" else \
             ("bottom" if value >= -un.Delta else "top")
+        if first != names and not any(x.side == side for x in cands):
+            cands = candidates(names)
         on = [x for x in cands if x.side == side] or [x for x in cands if x.side == "both"]
         return (min(on, key=lambda x: x.size), "snap-in") if on else (None, "snap-in")
     if event in ("fold", "end") and s.branch.startswith("contactless"):    # the zone-only pin (cohesive)
@@ -186,19 +196,28 @@ def land(pb: Problem, un: _fw.Units, s, event: str, control: str, value: float, 
         off = [x for x in cands if x.branch == "separated" or x.side == _other(s.side)]
         return (min(off, key=lambda x: x.size), "pull-off") if off else (None, "pull-off")
     if event == "fold" and s.branch.startswith("sub-critical"):
-        same = [x for x in cands if x.side == s.side and x.size < s.size]
-        if same:
-            return max(same, key=lambda x: x.size), "pull-off"
-        if control != "load":
-            sep = [x for x in cands if x.branch == "separated"]
-            if sep:
-                return sep[0], "pull-off"
-        other = [x for x in cands if x.side == _other(s.side)]
-        return (min(other, key=lambda x: x.size), "pull-off") if other else (None, "pull-off")
+        got = _pull_off_landing(s, cands, control)
+        if got is None and first != names:
+            got = _pull_off_landing(s, candidates(names), control)
+        return got, "pull-off"
     if event == "fold":
         grow = [x for x in cands if x.size > s.size and x.side in (s.side, "both")]
         return (min(grow, key=lambda x: x.size), "zip") if grow else (None, "zip")
     return _land_on_top_contact(pb, s, cands, control, target), "top-contact"
+
+
+def _pull_off_landing(s, cands, control):
+    """Where a sub-critical fold's pull-off lands among cands: the largest smaller state on its side, else (grip)
+    the free pin, else the smallest state on the other side; None."""
+    same = [x for x in cands if x.side == s.side and x.size < s.size]
+    if same:
+        return max(same, key=lambda x: x.size)
+    if control != "load":
+        sep = [x for x in cands if x.branch == "separated"]
+        if sep:
+            return sep[0]
+    other = [x for x in cands if x.side == _other(s.side)]
+    return min(other, key=lambda x: x.size) if other else None
 
 
 def _land_on_top_contact(pb, s, cands, control, target):
@@ -242,16 +261,33 @@ def unmodelled(pb: Problem) -> str:
     return solver(pb).unmodelled
 
 
-def no_first_contact_reason(pb: Problem) -> str:
+def no_first_contact_reason(pb: Problem, control: str = "load") -> str:
     """Why first contact snaps into no state: the reason pull_off and cycle print."""
     why = "no stable, feasible state at first contact"
     if not pb.models("two-patch"):      # e.g. the cohesive law: one patch, traced on its sub-critical branch
-        return why + (f" on the sub-critical branch, the one modelled for the {pb.edge.name} law (its "
-                      "super-critical side, two patches and full contact are not)")
+        return why + (_single_patch_only(pb) if control == "load" else "") + (
+            f" (on the single-patch branches, the ones modelled for the {pb.edge.name} law: two patches and full "
+            "contact are not)")
     if pb.rigid_cradle:      # full contact and two patches need a finite vartheta (model.full_contact)
         why += (" (a rigid cradle, vartheta = inf: a pin that zips round into full contact at first touch is not "
                 "modelled, full contact and two patches needing a finite vartheta)")
     return why
+
+
+def _single_patch_only(pb: Problem) -> str:
+    """What a law with one patch only misses at first contact under load: its zero-load states overlap the top
+    (h(pi) < 0, where JKR's pin forms a second patch), or it has none (M above the largest M with one, where
+    JKR's pin zips round into full contact); '' otherwise -- each with the law's own message (Edge.require)."""
+    sv = solver(pb)
+    h = [sv.value("h", a) for regime in sv.regimes() if regime != _br.ZONE_ONLY for a, _ in _br.roots(pb, regime, "p")]
+    if any(x < 0 for x in h):
+        return (f": the zero-load contact overlaps the top of the hole (h(pi) = {min(h):.6g} Delta < 0), where "
+                "a second patch forms -- " + pb.not_modelled("two-patch", "a contact at the bottom and the top "
+                                                                          "(two patches) is"))
+    if not h:
+        return (": no zero-load contact on one patch (M above the largest M with one: the pin zips round at first "
+                "touch) -- " + pb.not_modelled("full-contact", "the pin bonded all round (full contact) is"))
+    return ""
 
 
 def pull_path(pb: Problem, un: _fw.Units, control: str):

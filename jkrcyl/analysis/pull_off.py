@@ -35,7 +35,7 @@ def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
         return PullOff(control, None, None, None, None, solver(pb).no_adherence_reason)
     start, event, s = _path.pull_path(pb, un, control)
     if event == "none":
-        return PullOff(control, None, None, None, None, _path.no_first_contact_reason(pb) + ": no path to follow")
+        return PullOff(control, None, None, None, None, _path.no_first_contact_reason(pb, control) + ": no path to follow")
     if event == "bonded":
         return PullOff(control, None, None, None, start,
                        "no stable zero-load contact (M above the largest M with one): at first touch the contact "
@@ -56,9 +56,10 @@ def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
     if s.branch == "contactless":
         return _detached(control, s)
     if grows_under_pull(pb, s.a, control):
+        why = pb.not_modelled("full-contact", "the contact growing round (two patches, full contact) is")
         return PullOff(control, None, None, None, s,
                        f"fold at P = {s.P:.6g} N/m on the {s.branch} branch: a further pull lowers G, the contact "
-                       "grows round into full contact (no detachment)")
+                       "grows round into full contact (no detachment)" + (f" -- {why}" if why else ""))
     return PullOff(control, s.P, s.contact_width, s.delta, s, "detachment: the contact shrinks away (G > w)")
 
 

@@ -15,13 +15,14 @@ from typing import Optional
 
 import numpy as np
 
+from .._validate import control as _check_control
 from ..analysis import branches as _tables
 from ..contact import Contact
 from ..laws import CrackKinetics
 from ..materials import Materials
 from ..model.single_patch import solver
 
-CONTROLS = ("load", "grip-work", "grip")
+CONTROLS = ("load", "grip-work", "grip")        # jkrcyl._validate.CONTROLS, in the order the page shows them
 STABLE_FLAG = {"load": "stable_load", "grip-work": "stable_grip_work", "grip": "stable_grip"}
 BRANCHES = ("sub-critical", "super-critical", "contactless")   # one patch at the bottom (a law has two of them)
 CYCLE_POINTS = 400
@@ -236,8 +237,7 @@ def compute(inputs: Inputs) -> Picture:
     >>> picture.regime
     'detachment: the contact shrinks away (G > w)'
     """
-    if inputs.control not in CONTROLS:
-        raise ValueError(f"control must be one of {', '.join(CONTROLS)}, got {inputs.control!r}")
+    _check_control(inputs.control)
     timings = {}
     start = time.perf_counter()
     c = _timed(timings, "contact", inputs.contact)

@@ -27,7 +27,7 @@ import warnings
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import LSODA
+from scipy.integrate import LSODA, Radau
 
 from ..numerics import roots as _roots
 from .arc import B0, B1, DN0, DN1, DW0, DW1, H0, H1, HELD, P0, P1
@@ -42,6 +42,9 @@ FIRST_STEP = 1e-12     # of the segment: LSODA restarts mid-way on a stiff slow 
 ATOL_ENERGY = 1e-4     # of rtol times the adhesion energy of the reference contact: the error control of Q, D
 #                        where asked for (cycles: the loop's energy is the answer; where the contact tracks its
 #                        equilibrium stiffly that control costs many steps, so pull-offs go without)
+CRAWL_STEPS = 500      # LSODA steps in a row below CRAWL_STEP of the segment: it is stuck at its explicit (Adams)
+CRAWL_STEP = 1e-8      # stability limit on a stiff path whose rates are rounding noise; Radau takes over there
+MAX_STEPS = 200_000    # steps of one segment (a few thousand in the hardest cases measured): beyond, a ValueError
 EVENT_KINDS = ("separation", "top-contact", "range-end", "peak-tension", "runaway")
 
 
@@ -177,10 +180,11 @@ def segment(ode: EdgeODE, drive: Linear, t1: float, Y0, rtol=RTOL, peak=False, d
     t0 = float(Y0[0])
     ode.start(drive, t1 - t0)
     steps, events, restart, armed, Y = [], [], 0, True, np.asarray(Y0, dtype=float)
+    method, crawl, taken = LSODA, 0, 0
     while True:
         ode.t_origin = t_o = float(Y[0])
         e = rtol * ATOL_ENERGY * ode.energy_atol if energy else 1e300
-        solver = LSODA(ode.fun, 0.0, Y[1:], t1 - t_o, rtol=rtol, atol=np.array([rtol * 1e-4, e, e]),
+        solver = method(ode.fun, 0.0, Y[1:], t1 - t_o, rtol=rtol, atol=np.array([rtol * 1e-4, e, e]),
                        jac=ode.jac, first_step=min(FIRST_STEP * (t1 - t0), 0.5 * (t1 - t_o)))
         before = ode.watch(t_o, solver.y)
         runaway = False
@@ -199,6 +203,16 @@ def segment(ode: EdgeODE, drive: Linear, t1: float, Y0, rtol=RTOL, peak=False, d
                 rtol = min(10.0 * rtol, RTOL_MAX)                  # G/w - 1 below rounding: see RTOL_MAX
                 ode.relaxed = max(ode.relaxed, rtol)
                 Y = steps[-1][1] if steps else np.asarray(Y0, dtype=float)
+                restart += 1
+                break
+            taken += 1
+            if taken > MAX_STEPS:
+                raise ValueError(f"rate: the history at this rate needs more than {MAX_STEPS} integrator steps "
+                                 f"(t = {t_o + solver.t:.6g} s of {t1:.6g} s); a rate or v* nearer the "
+                                 f"quasi-static limit is resolved faster by pull_off() without rate")
+            crawl = crawl + 1 if solver.step_size < CRAWL_STEP * (t1 - t0) else 0
+            if crawl > CRAWL_STEPS and method is LSODA:      # stuck at the Adams stability limit: Radau from here
+                method, Y = Radau, (steps[-1][1] if steps else np.asarray(Y0, dtype=float))
                 restart += 1
                 break
             after = ode.watch(t_o + solver.t, solver.y)

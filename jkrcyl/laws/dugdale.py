@@ -4,8 +4,8 @@ w = sigma0 h0.
 Dimensional: :class:`Dugdale` (sigma0 [Pa]).  Normalised: :class:`DugdaleEdge`, s0 = sigma0 R beta*/(4 pi Delta)
 (the zone traction in the units of nu = N R beta*/(4 pi Delta)), range h0/Delta = m^2/s0; the contact edge has a
 finite stress in equilibrium (edge coefficient 0, Maugis).  Its single-patch solver is jkrcyl.model.cohesive (the
-contact branch with its zone, traced; the zone-only pin); the super-critical side, two patches and full contact are
-not modelled for it.
+contact branches with their zone on either side of the receding limit, traced; the zone-only pin); two patches and
+full contact are not modelled for it.
 """
 from __future__ import annotations
 
@@ -22,7 +22,8 @@ from .griffith import GRIFFITH_EDGE
 class DugdaleEdge(Edge):
     """The normalised Maugis-Dugdale law: the zone traction s0 = sigma0 R beta*/(4 pi Delta) > 0.
 
-    Its branch families: the sub-critical single patch with its zone and the zone alone ('contactless').
+    Its branch families: the sub- and super-critical single patch with its zone and the zone alone
+    ('contactless').
 
     Examples
     --------
@@ -37,7 +38,7 @@ class DugdaleEdge(Edge):
     s0: float
     name = "Maugis-Dugdale"
     param = "sigma0"
-    families = frozenset({"contactless"})
+    families = frozenset({"contactless", "super-critical"})
 
     def __post_init__(self):
         object.__setattr__(self, "s0", finite_scalar("s0", self.s0, low=0.0, low_open=True))
@@ -71,7 +72,7 @@ class DugdaleEdge(Edge):
             raise ValueError("M must be > 0 with the Maugis-Dugdale law (w > 0: lambda and h0 = w/sigma0 need it)")
 
     def single_patch(self, problem: "jkrcyl.model.problem.Problem") -> Cohesive:
-        """The cohesive single-patch solver (jkrcyl.model.cohesive): the contact branch with its zone, traced.
+        """The cohesive single-patch solver (jkrcyl.model.cohesive): the contact branches with their zone, traced.
 
         Parameters
         ----------

@@ -14,13 +14,20 @@
   (:meth:`Cohesive.continues`); a touch beyond pi/2 (the approach's pole) starts from c_lo = pi/2.  Present
   when the contact branch starts from a touch (not when the range reaches round there).
 
+* ``super-critical``: the same curve past the receding limit a_crit (the pole of the load of every law),
+  a = 1000 + t, t its arclength from just past the pole (or from the load cap |p| = P_CAP m^(4/3)) towards the
+  full circle -- jkrcyl.numerics.cohesive_super.  At finite lambda it turns back in eps at a fold where the zone
+  end's first root meets its second (a longer zone), and follows that root back until the zone reaches round
+  (h(pi) = h0); as lambda -> inf the fold moves to eps -> pi and the branch tends to JKR's.  Present where the
+  pair has a receding contact below pi - 0.05 (not a rigid cradle at alpha* = 0).
+
 Slopes are per point: along the branch's tangent (implicit differentiation of k = 0, h(c) = h0 with finite
 differences in eps and c at a fixed approach), never across table points.  Stability: the rule of
 jkrcyl.model.stability with the derivatives D_X of jkrcyl.numerics.cohesive_branch (the zone end's energy
 dE/dc = 2 (s0 h(c) - m^2); the contactless pin is a saddle under load, stable under grip where the opening at its
 zone end grows with the zone).  The total potential (elastic + Dugdale interface energy - w over the contact) has
 dE = p d(delta/Delta) along the branches.  Not modelled: two patches and full contact (jkrcyl.laws.dugdale: the law's families),
-the super-critical side of the receding limit, top-zone bridges (jkrcyl.numerics.cohesive_zones finds them),
+super-critical states with a zone all round (past the zone reaching round), top-zone bridges (jkrcyl.numerics.cohesive_zones finds them),
 a round zone that stops reaching round by a jump (a top bridge or an S-shape: :attr:`unmodelled` says so).
 """
 from __future__ import annotations
@@ -35,6 +42,8 @@ from ..numerics import cohesive_pull_off as _cpo
 from ..numerics import cohesive_zones as _cz
 from ..numerics import one_arc as _one
 from ..numerics import roots as _roots
+from ..numerics import cohesive_super as _csu
+from . import cohesive_traced as _ct
 from .patch import SinglePatch, Slice
 
 CONTACTLESS_POINTS = 64
@@ -55,18 +64,32 @@ class Cohesive(SinglePatch):
         self._cache = {}
         self._values = {}            # (p, dn, h) at branch parameters off the table (root refinements)
 
-    # --- the traced branch ---------------------------------------------------------------------------
+    # --- the traced branches ---------------------------------------------------------------------------
     @functools.cached_property
-    def _traced(self):
-        return _cb.trace(self.law)           # (x, kind, why it stopped early: '' when it did not)
+    def _sub(self):
+        """The sub-critical branch (jkrcyl.numerics.cohesive_branch.trace), a = 2 + t."""
+        return _ct.Traced(self.law, _cb.trace(self.law), _ct.SUB_OFFSET)
 
     @functools.cached_property
-    def _trace(self):
-        x, kind, _ = self._traced
-        keep = np.concatenate([[True], np.any(np.diff(x, axis=0) != 0, axis=1)])
-        x = x[keep]
-        t = x[:, 0] - x[0, 0] if kind == "all" else _cb.arclength(x)
-        return x, t, kind
+    def _super(self):
+        """The super-critical branch (jkrcyl.numerics.cohesive_super.trace), a = SUPER_OFFSET + t; None where
+        there is none or it has no state below the load cap."""
+        got = _csu.trace(self.law)
+        return None if got is None or len(got[0]) < 2 else _ct.Traced(self.law, got, _ct.SUPER_OFFSET)
+
+    def _branch(self, regime):
+        if regime == "super-critical":
+            if self._super is None:
+                raise ValueError("regime: this cohesive law has no super-critical state below the load cap "
+                                 f"|P*| = P_CAP m^(4/3) = {self.law.p_cap / self.problem.scale:.6g} (past the "
+                                 "receding limit a_crit)")
+            return self._super
+        return self._sub
+
+    def _where(self, a):
+        """(eps, c, direction) at the branch parameter a > 1 (jkrcyl.model.cohesive_traced.Traced.where)."""
+        br = self._branch(self.regime_of(a))
+        return br.where(a - br.offset)
 
     @functools.cached_property
     def _contactless(self):
@@ -78,24 +101,33 @@ class Cohesive(SinglePatch):
 
     @property
     def dense_points(self):
-        return len(self._trace[1])
+        return len(self._sub.t)
 
     @property
     def a_end(self) -> float:
-        """The end of the contact branch's parameter a = 2 + t."""
-        return 2.0 + float(self._trace[1][-1]) * (1 + 1e-12)
+        """The end of the sub-critical branch's parameter a = 2 + t."""
+        return self._sub.a_end
 
     @functools.cached_property
     def a_crit(self) -> float:
         """The pair's receding contact tan(eps_crit/2) (the one meaning of a_crit: jkrcyl.critical); the traced
-        branch stops below it (jkrcyl.numerics.cohesive_branch.EPS_MARGIN)."""
+        branches stop short of it on either side (jkrcyl.numerics.cohesive_branch.EPS_MARGIN)."""
         return _one.receding_contact(self.problem.theta, self.problem.gb, self.problem.alpha_ratio)
 
     def regimes(self):
-        return ("contactless", "sub-critical") if self._contactless is not None else ("sub-critical",)
+        """The contactless pin where its zone touches, the sub-critical branch, and the super-critical one where
+        the pair has a receding contact below pi - 0.05 and a state past it below the load cap
+        (jkrcyl.numerics.cohesive_super; traced here, once)."""
+        return tuple(r for r in ("contactless", "sub-critical", "super-critical") if self.has(r))
+
+    def has(self, regime):
+        """Whether the branch exists: the super-critical one is traced only when asked about."""
+        if regime == "super-critical":
+            return self._super is not None
+        return regime == "sub-critical" or (regime == "contactless" and self._contactless is not None)
 
     def regime_of(self, a: float) -> str:
-        return "contactless" if a <= 1 else "sub-critical"
+        return "contactless" if a <= 1 else ("super-critical" if a >= _ct.SUPER_OFFSET else "sub-critical")
 
     def eps_star_of(self, s: Slice):
         """eps/pi (no receding contact on this parametrisation)."""
@@ -106,43 +138,21 @@ class Cohesive(SinglePatch):
         if regime == "contactless":
             n = CONTACTLESS_POINTS if n == self.dense_points else n
             return (np.arange(n) + 0.5) / n
-        t = self._trace[1]
-        return 2.0 + (t if n == self.dense_points else np.linspace(t[0], t[-1], n))
+        return self._branch(regime).grid(n, n == self.dense_points)
 
     def on_branch(self, regime, a):
-        lo, hi = (0.0, 1.0) if regime == "contactless" else (2.0, self.a_end)
+        if regime == "contactless":
+            lo, hi = 0.0, 1.0
+        else:
+            br = self._branch(regime) if self.has(regime) else self._sub
+            lo, hi = br.offset, br.a_end
         bad = (a <= lo) | (a > hi) if regime == "contactless" else (a < lo) | (a > hi)
-        if regime not in self.regimes() or np.any(bad):
+        if not self.has(regime) or np.any(bad):
             raise ValueError(f"a must be in ({lo!r}, {hi!r}) on the {regime} branch of this cohesive law "
                              f"(a: the branch parameter), got {np.ravel(a)[0]!r}")
         return a
 
     # --- states ------------------------------------------------------------------------------------------
-    def _where(self, t):
-        """(eps, c, direction) of the contact branch at parameter t (exact: projected onto the curve)."""
-        x, tt, kind = self._trace
-        j = int(np.clip(np.searchsorted(tt, t) - 1, 0, len(tt) - 2))
-        f = (t - tt[j]) / (tt[j + 1] - tt[j])
-        chord = x[j + 1] - x[j]
-        if kind == "all":
-            eps = math.exp(x[0, 0] + t)
-            c = self._all_c(eps)
-            return eps, c, (1.0, 0.0)
-        if f <= 0 or f >= 1:
-            xp = x[j] if f <= 0 else x[j + 1]
-        else:
-            normal = np.array([-chord[1], chord[0]]) / np.hypot(*chord)
-            xp = _cb.project(self.law, x[j] + f * chord, normal, np.hypot(*chord))
-            if xp is None:
-                raise ValueError(f"a: no cohesive state found at the branch parameter {2 + t!r}")
-        eps, d = math.exp(xp[0]), math.exp(xp[1])
-        de = eps * chord[0]
-        return eps, eps + d, (de, de + d * chord[1])
-
-    def _all_c(self, eps):
-        s = self.law.state(eps)
-        return math.pi if s.zones == "all" else s.c
-
     def point(self, a):
         """Per-point data (jkrcyl.numerics.cohesive_branch.Point) at the parameter a (cached)."""
         a = float(a)
@@ -151,7 +161,7 @@ class Cohesive(SinglePatch):
                 lo, hi = self._contactless
                 pt = _cb.contactless_point(self.law, lo + a * (hi - lo))
             else:
-                eps, c, direction = self._where(a - 2.0)
+                eps, c, direction = self._where(a)
                 pt = _cb.point(self.law, eps, c, direction)
             if len(self._cache) > 20000:
                 self._cache.clear()
@@ -171,12 +181,20 @@ class Cohesive(SinglePatch):
                      p_k=col("D_p"), dn_k=col("D_dn"), B=col("B"), eps=col("eps"), c=col("c"),
                      c_top=np.zeros(a.size), total=col("potential"), feasible=col("feasible").astype(bool))
 
+    def table_values(self, regime, field):
+        """(a, values) of p, dn, dw or h on a contact branch's table grid without slopes, flags and energy (the
+        trace's cached fixed contacts: a search for a held value needs no more); None otherwise."""
+        if regime == "contactless" or field not in ("p", "dn", "dw", "h"):
+            return None
+        a = self.grid(regime, self.dense_points)
+        return a, np.array([self.value(field, x) for x in a.tolist()])
+
     def value(self, field, a):
         """p, dn, dw or h at one branch parameter without the slopes, feasibility and energy, or a slope of p, dn
         or dw without the feasibility and energy (root refinement)."""
         a = float(a)
         if field in _SLOPES and a > 1 and a not in self._cache:
-            eps, c, direction = self._where(a - 2.0)
+            eps, c, direction = self._where(a)
             dp, ddn = _cb.slopes(self.law, eps, c, direction)
             return {"dp_da": dp, "ddn_da": ddn, "ddw_da": ddn + self.problem.work_shift * dp}[field]
         if field not in ("p", "dn", "dw", "h"):
@@ -192,7 +210,7 @@ class Cohesive(SinglePatch):
         elif a in self._values:
             p, dn, h = self._values[a]
         else:
-            eps, c, _ = self._where(a - 2.0)
+            eps, c, _ = self._where(a)
             if len(self._values) > 20000:
                 self._values.clear()
             p, dn, h = self._values.setdefault(a, _cb.state_values(self.law, eps, c))
@@ -223,21 +241,48 @@ class Cohesive(SinglePatch):
 
     # --- the branches' ends and what the analyses ask ------------------------------------------------------
     def stops_short(self, regime, a=None):
-        """The contact branch is traced up to p = P_CAP m^(4/3) (jkrcyl.numerics.cohesive_branch) unless it ends
-        first (the receding limit, the zone reaching round); a: only if a is the table's last point."""
-        if regime != "sub-critical" or self._trace[2] == "all":
+        """Why a contact branch's table ends before the branch does ('' where it does not), a: only if a is the
+        table's last point.  Sub-critical: traced up to p = P_CAP m^(4/3) (jkrcyl.numerics.cohesive_branch)
+        unless it ends first (the receding limit, the zone reaching round).  Super-critical
+        (jkrcyl.numerics.cohesive_super): either end (:meth:`_super_short`)."""
+        if regime not in ("sub-critical", "super-critical") or not self.has(regime):
             return ""
-        if a is not None and a < 2.0 + (self.a_end - 2.0) * (1 - 1e-9):
+        br = self._branch(regime)
+        if regime == "super-critical":
+            return self._super_short(br, a)
+        if br.kind == "all" or (a is not None and a < br.offset + (br.a_end - br.offset) * (1 - 1e-9)):
             return ""
         p_end = self.value("p", self.a_end)
         return f"traced up to P_CAP m^(4/3) = {self.law.p_cap:.6g}" if p_end > 0.5 * self.law.p_cap else ""
+
+    def _super_short(self, br, a):
+        """Why the super-critical table ends at a (None: its last point): both of its ends are short of the
+        branch -- the first point lies next to the pole a_crit (|p| unbounded past it), the last one where the
+        trace failed, the zone reaches round, the load cap or eps = pi - 0.05 (the last only to a walker at that point:
+        for the table's extent, a = None, eps = pi - 0.05 ends the branch, as it ends the sub-critical one)."""
+        if a is not None and a <= br.offset + 1e-9 * max(1.0, br.t[-1]):
+            return (f"the super-critical branch is traced from eps = {self._where(br.offset)[0]:.6g} rad, next to "
+                    "the receding limit a_crit, where |P| grows without bound")
+        if a is not None and a < br.offset + (br.a_end - br.offset) * (1 - 1e-9):
+            return ""
+        if br.reason:
+            return br.reason
+        eps, c, _ = self._where(br.a_end)
+        if br.kind == "zone" and c >= math.pi - 2 * _csu.ROUND_MARGIN:
+            return (f"the zone reaches round the hole at eps = {eps:.6g} rad (h(pi) = h0): the super-critical "
+                    "states beyond, with a zone all round, are not traced")
+        if eps < _csu.EPS_TOP - 1e-2 and abs(self.value("p", br.a_end)) > 0.5 * self.law.p_cap:
+            return f"traced up to |p| = P_CAP m^(4/3) = {self.law.p_cap:.6g}"
+        if a is None:              # the table's extent (forward searches): the branch's end, as the sub-critical one
+            return ""
+        return f"traced up to eps = {eps:.6g} rad (pi - 0.05): the states nearer full contact are not traced"
 
     def continues(self, regime, a):
         """The contact branch's touch end (a = 2) continues as the contactless one from the touch (a = 1) and
         back."""
         if self._contactless is None:
             return None
-        if regime == "sub-critical" and a <= 2.0 + 1e-9 * max(1.0, self._trace[1][-1]):
+        if regime == "sub-critical" and a <= 2.0 + 1e-9 * max(1.0, self._sub.t[-1]):
             return "contactless", 1.0
         if regime == "contactless" and a >= 1.0 - 1.0 / CONTACTLESS_POINTS:
             return "sub-critical", 2.0
@@ -250,7 +295,7 @@ class Cohesive(SinglePatch):
         difference across points; the zone-only pin (a <= 1) has no contact to grow."""
         if a <= 1:
             return False
-        (deps, _), pt = self._where(a - 2.0)[2], self.point(a)
+        (deps, _), pt = self._where(a)[2], self.point(a)
         return bool(deps * pt.ddn_dt < 0) if control == "load" else bool(deps * pt.dp_dt > 0)
 
     def free_range(self):
@@ -258,11 +303,19 @@ class Cohesive(SinglePatch):
         h0 = self.law.h0
         return -2.0 + h0, -h0
 
+    def _super_pulls(self):
+        """Branch parameters of the super-critical table's states that pull (p < 0, without their feasibility)."""
+        if not self.has("super-critical"):
+            return np.zeros(0)
+        a, p = self.table_values("super-critical", "p")
+        return a[p < 0]
+
     @functools.cached_property
     def adheres(self):
-        """Whether some feasible contact state pulls (p < 0); not when the range reaches round (h0 > 2 Delta)."""
+        """Whether some feasible contact state pulls (p < 0) on either side of a_crit; not when the range reaches
+        round (h0 > 2 Delta)."""
         s = self.states(self.grid("sub-critical", self.dense_points))
-        return bool(np.any((s.p < 0) & s.feasible))
+        return bool(np.any((s.p < 0) & s.feasible)) or any(self.point(x).feasible for x in self._super_pulls())
 
     @property
     def no_adherence_reason(self):
@@ -270,18 +323,20 @@ class Cohesive(SinglePatch):
             return (f"no adherence force: every state of the cohesive law pushes (P >= 0) -- its range h0 = "
                     f"{self.law.h0:.6g} Delta reaches round the hole (a uniform traction has no resultant)")
         s = self.states(self.grid("sub-critical", self.dense_points))
+        pulls = bool(np.any(s.p < 0)) or self._super_pulls().size > 0
         return ("no adherence force on one patch: every feasible single-patch state pushes (P >= 0)" +
-                ("; those that pull overlap the top of the hole (h(pi) < 0), where two patches or full contact, "
-                 "not modelled for the law, take over" if np.any(s.p < 0) else ""))
+                ("; those that pull overlap the top of the hole (h(pi) < 0), where two patches or full contact take "
+                 "over -- " + self.problem.not_modelled("two-patch", "a contact at the bottom and the top (two "
+                                                        "patches) is") if pulls else ""))
 
     @functools.cached_property
     def unmodelled(self):
         """Why the analyses cannot follow the branch ('' when they can): the trace stopped before the branch's end
         (jkrcyl.numerics.cohesive_follow says where and why), or its zone stops reaching round by a jump
         (jkrcyl.numerics.cohesive_branch.top_opens: a top bridge or an S-shaped branch, not traced)."""
-        if self._traced[2]:                  # the trace stopped before the branch's end: no silent answer
-            return self._traced[2]
-        if self._trace[2] != "all" or self.law.h0 >= 2.0:      # h0 >= 2 Delta: no state pulls, nothing to follow
+        if self._sub.reason:                 # the trace stopped before the branch's end: no silent answer
+            return self._sub.reason
+        if self._sub.kind != "all" or self.law.h0 >= 2.0:      # h0 >= 2 Delta: no state pulls, nothing to follow
             return ""
         opens = _cb.top_opens(self.law)
         return "" if opens is None else _cpo.jump_reason(opens)

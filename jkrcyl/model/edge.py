@@ -162,10 +162,34 @@ class Edge:
         ...
         ValueError: sigma0: two_patch() is not modelled for the Maugis-Dugdale law (its branch families: ...)
         """
-        if not self.models(family):
-            modelled = ", ".join(sorted(self.families)) or "none beyond the sub-critical single patch"
-            raise ValueError(f"{param or self.param}: {what or family} not modelled for the {self.name} law (its branch "
-                             f"families: sub-critical, {modelled})")
+        why = self.not_modelled(family, what, param)
+        if why:
+            raise ValueError(why)
+
+    def not_modelled(self, family: str, what: str = "", param: str = "") -> str:
+        """The message of :meth:`require` where the family is not modelled, '' where it is (for a path that
+        stops there rather than an error).
+
+        Parameters
+        ----------
+        family, what, param : str
+            As :meth:`require`.
+
+        Returns
+        -------
+        str
+
+        Examples
+        --------
+        >>> from jkrcyl.laws import GRIFFITH_EDGE, DugdaleEdge
+        >>> GRIFFITH_EDGE.not_modelled("full-contact"), DugdaleEdge(s0=0.1).not_modelled("full-contact").split(" law")[0]
+        ('', 'sigma0: full-contact not modelled for the Maugis-Dugdale')
+        """
+        if self.models(family):
+            return ""
+        modelled = ", ".join(sorted(self.families)) or "none beyond the sub-critical single patch"
+        return (f"{param or self.param}: {what or family} not modelled for the {self.name} law (its branch "
+                f"families: sub-critical, {modelled})")
 
 
 class EdgeLaw:

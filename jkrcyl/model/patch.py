@@ -133,6 +133,11 @@ class SinglePatch:
             raise ValueError(f"a must be {side} a_crit = {ac!r} on the {regime} branch, got {a[off].flat[0]!r}")
         return a
 
+    def table_values(self, regime: str, field: str):
+        """(a, values) of a field on the branch's table grid by a route cheaper than the full table, or None (the
+        analyses then read the table: jkrcyl.analysis.branches.table_values)."""
+        return None
+
     def value(self, field: str, a: float) -> float:
         """One field of :data:`FIELDS` at one contact parameter."""
         return float(getattr(self.states(np.array([a])), field)[0])
@@ -159,6 +164,11 @@ class SinglePatch:
     def regimes(self):
         """The branches that exist: a < a_crit, and a > a_crit where a_crit is finite."""
         return ("sub-critical",) if math.isinf(self.a_crit) else ("sub-critical", "super-critical")
+
+    def has(self, regime: str) -> bool:
+        """Whether the branch exists (``regime in regimes()``, which a solver may answer without building the
+        branches it is not asked about)."""
+        return regime in self.regimes()
 
     def regime_of(self, a: float) -> str:
         return "sub-critical" if a < self.a_crit else "super-critical"

@@ -87,6 +87,11 @@ class Problem:
         self.edge.require(family, what, param)
         return self
 
+    def not_modelled(self, family: str, what: str = "", param: str = "") -> str:
+        """The edge law's one message where the branch family is not modelled for it ('' where it is): for the
+        analyses that say why a path stops rather than raise."""
+        return self.edge.not_modelled(family, what, param)
+
     @classmethod
     def of(cls, contact) -> "Problem":
         """The normalised problem of a :class:`jkrcyl.Contact` with Delta > 0, with its law's normalised edge."""

@@ -77,7 +77,8 @@ def sweep_figure(sw, contact, title: str = ""):
     for kind, marker, color, label in (("separation", "o", cmap(0.0), "the contact vanished (separation)"),
                                        ("top-contact", "s", cmap(0.6), "the gap at the top closed first")):
         sel = (sw.kind == kind) & np.isfinite(P)
-        ax.plot(r[sel], P[sel], marker, color=color, mfc="none", ms=6, label=label)
+        if sel.any():                                  # a legend entry only for an event the sweep met
+            ax.plot(r[sel], P[sel], marker, color=color, mfc="none", ms=6, label=label)
     ok = np.isfinite(P)
     ax.plot(r[ok], P[ok], "-", color="0.5", lw=0.8, zorder=0)
     if sw.P_quasi_static is not None:

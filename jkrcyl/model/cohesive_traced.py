@@ -1,0 +1,67 @@
+"""One traced contact branch of the Maugis-Dugdale law (jkrcyl.model.cohesive): its points, its parameter and the
+state at any parameter.
+
+A traced branch (jkrcyl.numerics.cohesive_branch.trace, the sub-critical one; jkrcyl.numerics.cohesive_super.trace,
+the super-critical one) is a polyline x = (log eps, log(c - eps)) along the curve k = 0, h(c) = h0 (kind 'zone'),
+or contacts with the zone all round sampled in eps (kind 'all', x = (log eps, 0)).  Its branch parameter is
+a = offset + t: t the arclength of the polyline ('zone') or log(eps/eps_first) ('all'), the offset keeping the
+branches' parameters apart (sub-critical from 2, super-critical from SUPER_OFFSET).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..numerics import cohesive_branch as _cb
+
+SUB_OFFSET = 2.0
+SUPER_OFFSET = 1000.0     # above any sub-critical parameter: that trace's arclength is at most 1500 x 0.25 = 375
+
+
+class Traced:
+    """A traced branch: ``x`` (n, 2), ``t`` (n,), ``kind`` ('zone' or 'all'), ``reason`` ('' when the trace ended
+    where the branch leaves its domain) and ``offset`` (a = offset + t)."""
+
+    def __init__(self, law, traced, offset):
+        x, kind, reason = traced
+        keep = np.concatenate([[True], np.any(np.diff(x, axis=0) != 0, axis=1)])
+        self.law, self.x, self.kind, self.reason, self.offset = law, x[keep], kind, reason, offset
+        self.t = self.x[:, 0] - self.x[0, 0] if kind == "all" else _cb.arclength(self.x)
+
+    @property
+    def a_end(self) -> float:
+        """The branch parameter of the trace's last point (a hair beyond: the end itself is on the branch)."""
+        return self.offset + float(self.t[-1]) * (1 + 1e-12)
+
+    def holds(self, a) -> bool:
+        """Whether the parameter a lies on this branch's parameter range [offset, a_end]."""
+        return self.offset <= a <= self.a_end
+
+    def grid(self, n, table):
+        """The traced points (table) or n points uniform in t, as branch parameters."""
+        return self.offset + (self.t if table else np.linspace(self.t[0], self.t[-1], n))
+
+    def where(self, t):
+        """(eps, c, direction) of the branch at t (exact: projected onto the curve); direction = (d eps, d c) of
+        increasing t."""
+        x, tt = self.x, self.t
+        j = int(np.clip(np.searchsorted(tt, t) - 1, 0, len(tt) - 2))
+        f = (t - tt[j]) / (tt[j + 1] - tt[j])
+        chord = x[j + 1] - x[j]
+        snap = 1e-12 * (abs(self.offset) + tt[-1]) / (tt[j + 1] - tt[j])      # a - offset rounds t at a table point
+        f = 0.0 if abs(f) <= snap else (1.0 if abs(f - 1) <= snap else f)
+        if self.kind == "all":
+            eps = math.exp(x[0, 0] + t)
+            s = self.law.state(eps)
+            return eps, (math.pi if s.zones == "all" else s.c), (1.0, 0.0)
+        if f <= 0 or f >= 1:
+            xp = x[j] if f <= 0 else x[j + 1]
+        else:
+            normal = np.array([-chord[1], chord[0]]) / np.hypot(*chord)
+            xp = _cb.project(self.law, x[j] + f * chord, normal, np.hypot(*chord))
+            if xp is None:
+                raise ValueError(f"a: no cohesive state found at the branch parameter {self.offset + t!r}")
+        eps, d = math.exp(xp[0]), math.exp(xp[1])
+        de = eps * chord[0]
+        return eps, eps + d, (de, de + d * chord[1])
