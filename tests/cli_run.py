@@ -10,6 +10,7 @@ broken pipe) keep subprocess tests of their own: tests/test_bad_input.py, tests/
 """
 import contextlib
 import io
+import os
 import pathlib
 import subprocess
 import warnings
@@ -27,6 +28,17 @@ def _default_filters():
     warnings.filterwarnings("default", category=DeprecationWarning, module="__main__")
 
 
+@contextlib.contextmanager
+def _chdir(path):
+    """contextlib.chdir of Python 3.11, for the 3.10 the README allows."""
+    before = os.getcwd()
+    os.chdir(path)
+    try:
+        yield
+    finally:
+        os.chdir(before)
+
+
 def run(*args, cwd=ROOT):
     """``python -m jkrcyl *args`` in this process, in directory ``cwd``, with matplotlib on Agg (MPLBACKEND=Agg)."""
     from jkrcyl import cli
@@ -36,7 +48,7 @@ def run(*args, cwd=ROOT):
     def show(message, category, filename, lineno, file=None, line=None):
         err.write(warnings.formatwarning(message, category, filename, lineno, line))
 
-    with contextlib.chdir(cwd), contextlib.redirect_stdout(out), contextlib.redirect_stderr(err), \
+    with _chdir(cwd), contextlib.redirect_stdout(out), contextlib.redirect_stderr(err), \
             warnings.catch_warnings():
         _default_filters()
         warnings.showwarning = show

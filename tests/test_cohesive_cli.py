@@ -2,12 +2,8 @@
 command that takes a problem; the answers are the library's (Contact.with_lambda / Contact(sigma0=...)); bad
 input prints one line and exits 2; `jkrcyl cohesive` draws the figures and the map (small smoke run)."""
 import json
-import math
-import pathlib
-import subprocess
-import sys
-
 import pytest
+from cli_run import run as run_cli
 
 import jkrcyl
 
@@ -17,7 +13,8 @@ PAIR = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
 
 
 def cli(*args):
-    return subprocess.run([sys.executable, "-m", "jkrcyl", *args], capture_output=True, text=True, timeout=600)
+    """``python -m jkrcyl *args`` run in this process (tests/cli_run.py: the same exit status, stdout, stderr)."""
+    return run_cli(*args)
 
 
 def test_pull_off_with_lambda_and_sigma0():
