@@ -101,8 +101,40 @@ def validate(P, width=None, delta_work=None, sigma_P=None, sigma_width=None, sig
              R=None) -> Data:
     """Check the measurements (R [m], already validated, bounds the width by the circumference 2 pi R).
 
-    Raises ValueError naming the column and the rows: not numbers, unequal lengths, NaN or inf, width <= 0 or
-    >= 2 pi R, sigma <= 0, both or neither of width and delta_work, a leg other than loading/unloading."""
+    Parameters
+    ----------
+    P : array_like
+        Measured loads [N/m].
+    width, delta_work : array_like, optional
+        Exactly one abscissa: contact widths [m] in (0, 2 pi R) or work-conjugate approaches [m].
+    sigma_P, sigma_width, sigma_delta_work : float or array_like, optional
+        Standard deviations (> 0) of the columns.
+    leg : array_like of str, optional
+        'loading' or 'unloading' per row.
+    R : float, optional
+        Hole radius [m].
+
+    Returns
+    -------
+    Data
+        The validated columns (float arrays), the abscissa's kind and the rows' legs.
+
+    Raises
+    ------
+    ValueError
+        Naming the column and the rows: not numbers, unequal lengths, NaN or inf, width <= 0 or >= 2 pi R,
+        sigma <= 0, both or neither of width and delta_work, a leg other than loading/unloading.
+
+    Examples
+    --------
+    >>> from jkrcyl.fit import validate
+    >>> validate([-100.0, 50.0], width=[2e-3, 5e-3], R=0.01).kind
+    'width'
+    >>> validate([-100.0, 50.0], width=[2e-3, 0.07], R=0.01)
+    Traceback (most recent call last):
+    ...
+    ValueError: width must be < 2 pi R = 0.0628319 m (the hole's circumference), row 1 not: max 0.07
+    """
     if (width is None) == (delta_work is None):
         raise ValueError("width, delta_work: give exactly one abscissa (contact width [m] or delta_work [m])")
     if P is None:
@@ -150,8 +182,32 @@ def read_csv(path) -> Table:
     """Read measurements from a CSV file with a header row (units in brackets allowed: ``P [N/m]``).
 
     Lines starting with '#' are comments; tokens ``key=value`` in them with key in R, Delta, E, nu, E_I, nu_I,
-    control, w set :attr:`Table.meta` (numbers, 'inf', or a control name).  Unknown columns raise ValueError
-    (a typo must not drop a column silently); empty cells are NaN (and rejected by the fit)."""
+    control, w set :attr:`Table.meta` (numbers, 'inf', or a control name).  Empty cells are NaN (and rejected by
+    the fit).
+
+    Parameters
+    ----------
+    path : str or path-like
+        The CSV file.
+
+    Returns
+    -------
+    Table
+        ``columns`` (name -> float array or the legs) and ``meta`` (the setup read from the comments).
+
+    Raises
+    ------
+    ValueError
+        An unknown column (a typo must not drop a column silently) or an unreadable number.
+
+    Examples
+    --------
+    >>> import pathlib, jkrcyl
+    >>> from jkrcyl.fit import read_csv
+    >>> t = read_csv(pathlib.Path(jkrcyl.__file__).parents[1] / "docs" / "fit_example.csv")    # the repository's
+    >>> t.meta["R"], t.meta["control"], sorted(t.columns)[:2]
+    (0.01, 'load', ['P', 'sigma_P'])
+    """
     with open(path, newline="") as fh:
         lines = fh.read().splitlines()
     meta, body = {}, []

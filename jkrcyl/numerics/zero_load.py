@@ -52,21 +52,72 @@ def zero_load_roots_nb(M, theta, M_max, a_max):
     return 2, _residual_root(0.0, a_max, g_lo, g_m, args), _residual_root(a_max, hi, g_m, g_hi, args)
 
 
-def zero_load_max_M(theta):
+def zero_load_max_M(theta: float) -> tuple:
     """The largest M with a zero-load contact (8.1): max over a of a^(3/2)/(a^2 + 2 vartheta - log(1 + a^2)).
 
-    Returns (M_max, a at the maximum); (inf, inf) for vartheta = inf.  (8.1) has two roots for
-    M < M_max and none for M > M_max.
+    (8.1) has two roots for M < M_max and none for M > M_max.
+
+    Parameters
+    ----------
+    theta : float
+        vartheta (section 4) in [1/2, 1e12], or inf (a rigid cradle).
+
+    Returns
+    -------
+    tuple of float
+        (M_max, a at the maximum); (inf, inf) for vartheta = inf.
+
+    Raises
+    ------
+    ValueError
+        Naming theta outside its domain.
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> M_max, a = jkrcyl.zero_load_max_M(1.0)
+    >>> round(M_max, 6), round(a, 6)
+    (0.644632, 2.063832)
+    >>> len(jkrcyl.zero_load_contact(0.99 * M_max, 1.0)), len(jkrcyl.zero_load_contact(1.01 * M_max, 1.0))
+    (2, 0)
     """
     M_max, a_max = zero_load_max_nb(_check_theta(theta))
     return float(M_max), float(a_max)
 
 
-def zero_load_contact(M, theta):
+def zero_load_contact(M: float, theta: float) -> list:
     """Sorted contact parameters a0 > 0 of the non-trivial zero-load equilibria (8.1); [] if none.
 
-    For vartheta = inf (M = M_R*), (7.6) gives the single root a0 = (2 M_R*)^(2/3).
     Exact tangency (M equal to :func:`zero_load_max_M`) counts as no root.
+
+    Parameters
+    ----------
+    M : float
+        The normalised adhesion (section 6), >= 0 (M_R* of (7.6) for vartheta = inf).
+    theta : float
+        vartheta in [1/2, 1e12], or inf.
+
+    Returns
+    -------
+    list of float
+        The roots a0 = tan(eps0/2), smallest first (two, one for vartheta = inf: (7.6) gives a0 = (2 M_R*)^(2/3),
+        or none).
+
+    Raises
+    ------
+    ValueError
+        Naming M or theta outside its domain.
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m)
+    >>> a0 = jkrcyl.zero_load_contact(pin.M, pin.theta)
+    >>> round(a0[0], 6), round(float(pin.solve(P=0.0)[0].a), 6)     # the state the forward solve finds at P = 0
+    (0.800455, 0.800455)
+    >>> abs(jkrcyl.zero_load_contact(0.3, float("inf"))[0] / (2 * 0.3) ** (2 / 3) - 1) < 1e-14      # (7.6)
+    True
     """
     M = finite_scalar("M", M, low=0.0)
     th = _check_theta(theta)
