@@ -8,7 +8,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, List, Optional, Sequence, Tuple
 
 from . import equilibria
-from ._validate import count, finite_scalar
+from ._validate import control as _check_control, count, finite_scalar
 from .analysis import branches as _br
 from .analysis import confined as _confined
 from .analysis import cycle as _cycle
@@ -223,7 +223,7 @@ class Analyses:
         >>> round(pin.pull_off("grip-work").P)                   # a machine lets go at a smaller tension
         -839
         """
-        _fw.check_control(control)
+        _check_control(control)
         self._require_clearance("pull_off")
         if rate is not None:
             from .kinetics import ramps           # loaded on first use (scipy's integrators)
@@ -307,7 +307,7 @@ class Analyses:
         >>> [j.kind for j in cy.jumps], cy.dissipated > 0        # snap in, let go, snap in again: a loop
         (['snap-in', 'pull-off', 'snap-in'], True)
         """
-        _fw.check_control(control)
+        _check_control(control)
         self._require_clearance("cycle")
         n = count("n", n, low=10)
         hi, lo = _limits(control, P_max=P_max, P_min=P_min, delta_max=delta_max, delta_min=delta_min)

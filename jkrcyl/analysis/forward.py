@@ -32,7 +32,6 @@ from typing import Callable, Dict, List
 
 import numpy as np
 
-from .._validate import control as _check_control
 from ..model import full_contact as _full
 from ..model import stability as _stab
 from ..model import two_patch as _two
@@ -64,11 +63,6 @@ class Units:
         return cls(contact.R, contact.Delta, contact.load_scale,
                    contact.law.stress_intensity(contact),
                    4 * math.pi * contact.Delta ** 2 / contact.beta)
-
-
-def check_control(control) -> str:
-    """The control, validated (jkrcyl._validate.control: the one check)."""
-    return _check_control(control)
 
 
 def _state(pb, un, branch, control, side, a, eps, P_star, dn, h, flags, U, a_top=0.0, eps_top=0.0, K=None,

@@ -10,7 +10,6 @@ from __future__ import annotations
 import numpy as np
 
 from .._validate import count, finite_scalar, real_array
-from ..analysis import forward as _fw
 from ..laws.kinetic import kinetics_of
 from .history import TERMINAL
 from .results import RateCycle, RatePullOff
@@ -33,8 +32,7 @@ def _none(control, rate, why):
 def pull_off(contact, control: str, rate: float, route: str = "table", rtol: float = None) -> RatePullOff:
     """Ramp the load (P = -rate t, rate [N/m/s]) or the held approach (delta_w or delta = delta0 - rate t, rate
     [m/s]) from the zero-load contact at rest until an event ends the single patch (jkrcyl.kinetics.results)."""
-    kinetics_of(contact.law)
-    _fw.check_control(control)
+    kinetics_of(contact.law)                 # control: checked by the callers (Contact.pull_off, rate_sweep)
     rate = check_rate(rate)
     if contact.w == 0:
         return _none(control, rate, "no adhesion (w = 0): the contact vanishes at P = 0")

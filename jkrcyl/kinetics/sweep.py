@@ -26,8 +26,7 @@ from typing import Optional
 import numpy as np
 from scipy.integrate import quad
 
-from .._validate import real_array
-from ..analysis import forward as _fw
+from .._validate import control as _check_control, real_array
 from ..laws.kinetic import kinetics_of
 from . import integrate as _int
 from .arc import H0, H1, P0, P1, TabulatedArc
@@ -108,7 +107,7 @@ def rate_sweep(contact, rates, control: str = "load", route: str = "table") -> R
     (['separation', 'separation'], [-1680.0, -2100.0], -1555)
     """
     law = kinetics_of(contact.law)
-    _fw.check_control(control)
+    _check_control(control)
     r = real_array("rates", rates).ravel()
     if not np.all(np.isfinite(r) & (r > 0)):
         raise ValueError(f"rates must be finite and > 0, got {r[~(np.isfinite(r) & (r > 0))][0]!r}")
