@@ -26,9 +26,12 @@ differences in eps and c at a fixed approach), never across table points.  Stabi
 jkrcyl.model.stability with the derivatives D_X of jkrcyl.numerics.cohesive_branch (the zone end's energy
 dE/dc = 2 (s0 h(c) - m^2); the contactless pin is a saddle under load, stable under grip where the opening at its
 zone end grows with the zone).  The total potential (elastic + Dugdale interface energy - w over the contact) has
-dE = p d(delta/Delta) along the branches.  Not modelled: two patches and full contact (jkrcyl.laws.dugdale: the law's families),
-super-critical states with a zone all round (past the zone reaching round), top-zone bridges (jkrcyl.numerics.cohesive_zones finds them),
-a round zone that stops reaching round by a jump (a top bridge or an S-shape: :attr:`unmodelled` says so).
+dE = p d(delta/Delta) along the branches.  A zone reaching round at the touch end that stops reaching round by
+a jump of its first zone-end root (jkrcyl.numerics.cohesive_branch.top_opens) is an S-shaped branch -- the round
+zone, then the root near the top back in eps to a fold, then the first root -- traced whole
+(jkrcyl.numerics.cohesive_round), or a top bridge.  Not modelled: two patches and full contact
+(jkrcyl.laws.dugdale: the law's families), super-critical states with a zone all round (past the zone reaching
+round), top-zone bridges (jkrcyl.numerics.cohesive_zones finds them; :attr:`unmodelled` says so).
 """
 from __future__ import annotations
 
@@ -332,13 +335,13 @@ class Cohesive(SinglePatch):
     @functools.cached_property
     def unmodelled(self):
         """Why the analyses cannot follow the branch ('' when they can): the trace stopped before the branch's end
-        (jkrcyl.numerics.cohesive_follow says where and why), or its zone stops reaching round by a jump
-        (jkrcyl.numerics.cohesive_branch.top_opens: a top bridge or an S-shaped branch, not traced)."""
+        (jkrcyl.numerics.cohesive_follow says where and why), or its zone stops reaching round by a jump to a top
+        bridge (jkrcyl.numerics.cohesive_branch.top_opens; an S-shaped branch is traced: kind 'zone')."""
         if self._sub.reason:                 # the trace stopped before the branch's end: no silent answer
             return self._sub.reason
-        if self._sub.kind != "all" or self.law.h0 >= 2.0:      # h0 >= 2 Delta: no state pulls, nothing to follow
+        if self._sub.kind != "all":          # a zone end all along, or an S-shaped branch traced whole
             return ""
-        opens = _cb.top_opens(self.law)
+        opens = _cb.opens_of(self.law)       # None for h0 >= 2 Delta: no state pulls, nothing to follow
         return "" if opens is None else _cpo.jump_reason(opens)
 
     def floating(self):

@@ -24,9 +24,10 @@ class Traced:
     where the branch leaves its domain) and ``offset`` (a = offset + t)."""
 
     def __init__(self, law, traced, offset):
-        x, kind, reason = traced
+        x, kind, reason = traced[:3]
         keep = np.concatenate([[True], np.any(np.diff(x, axis=0) != 0, axis=1)])
         self.law, self.x, self.kind, self.reason, self.offset = law, x[keep], kind, reason, offset
+        self.n_round = int(np.count_nonzero(keep[:traced[3]])) if len(traced) > 3 else 0
         self.t = self.x[:, 0] - self.x[0, 0] if kind == "all" else _cb.arclength(self.x)
 
     @property
@@ -55,11 +56,15 @@ class Traced:
             eps = math.exp(x[0, 0] + t)
             s = self.law.state(eps)
             return eps, (math.pi if s.zones == "all" else s.c), (1.0, 0.0)
+        if j + (f > 0) < self.n_round:             # the round prefix (t = log eps there) and its last point
+            return math.exp(x[0, 0] + min(t, tt[self.n_round - 1])), math.pi, (1.0, 0.0)
         if f <= 0 or f >= 1:
             xp = x[j] if f <= 0 else x[j + 1]
         else:
             normal = np.array([-chord[1], chord[0]]) / np.hypot(*chord)
             xp = _cb.project(self.law, x[j] + f * chord, normal, np.hypot(*chord))
+            if xp is None and j + 1 == self.n_round:     # next to the opening (c within START_DC of pi)
+                xp = x[j + 1]
             if xp is None:
                 raise ValueError(f"a: no cohesive state found at the branch parameter {self.offset + t!r}")
         eps, d = math.exp(xp[0]), math.exp(xp[1])
