@@ -159,35 +159,61 @@ def test_stability_flags_against_the_energy_of_zone_end_held_states():
     assert ("load", True) in seen and ("load", False) in seen
 
 
-def test_load_pull_off_is_the_least_load_on_the_first_root():
-    """Contact.pull_off('load') from the zero-load contact (on the first root, stable under load) goes back to
-    the first minimum of P: the minimum over eps of p of the first root's states solved alone (Brent on
-    cohesive_state at fixed contacts, the zone end followed by 'near'), to 1e-8."""
+def test_no_pull_from_first_contact_under_any_control():
+    """The pin floats in the range (h0 = 1.37 Delta reaches round: P = 0 at every approach of the floating range)
+    and touches the bottom onto the round-zone contacts, stable and pushing (P > 0) -- so at first contact it
+    stays at the touch, and lowering the held quantity takes it back there: no pull-off, under every control."""
+    c = s_shaped()
+    for control in ("load", "grip", "grip-work"):
+        po = c.pull_off(control)
+        assert po.P is None and po.reason.startswith("no adherence force from first contact"), (control, po)
+
+
+def _gibbs_drop(j, control):
+    """The drop of the potential at the held quantity across a jump: E - P delta under load, E under grip."""
+    b, t = j.before, j.after
+    if control == "load":
+        return (b.energy - b.P * b.delta) - (t.energy - t.P * t.delta)
+    return b.energy - t.energy
+
+
+def test_cycles_jump_across_the_s_branch_and_dissipate():
+    """Load and grip cycles from first contact through the S-shaped branch: pushing, the round zone's last state
+    (its fold: the opening at eps = 0.690) jumps onto the first root; pulling, the first root's fold detaches
+    (load: its least load, the minimum over eps of p of the first root's states solved alone -- Brent on
+    cohesive_state at fixed contacts -- to 1e-8) or jumps back onto the round zone (grip).  Every jump joins
+    states at one held value with the potential there not rising (Equilibrium.energy), the loop's dissipated
+    energy >= 0."""
     c = s_shaped()
     law = law_of(c)
-    po = c.pull_off("load")
-    assert po.P is not None and po.P < 0 and po.reason.startswith("detachment")
+    cy = c.cycle(P_max=c.load_scale, P_min=-c.load_scale, n=20)
+    assert [j.kind for j in cy.jumps][:2] == ["snap-in", "pull-off"] and cy.note in ("", None)
+    assert cy.jumps[0].before.eps == pytest.approx(0.6902651929, abs=1e-6) and cy.jumps[0].after.eps > 0.69
     p_alone = lambda e: co.cohesive_state(e, *law, near=2.53 - e).p
     e_min, p_min = roots.minimum(p_alone, 0.4, 0.55, 0.7, 1e-9)
-    assert abs(po.P / c.load_scale * c.problem.scale - p_min) < 1e-8 * abs(p_min)
-    assert abs(po.state.eps - e_min) < 1e-4
-
-
-def test_cycle_jumps_dissipate():
-    """A load cycle through the S-shaped branch: every jump joins states at one load with the Gibbs energy
-    E - P delta not rising (the energy of each state: Equilibrium.energy), and the loop's dissipated energy >= 0."""
-    c = s_shaped()
-    cy = c.cycle(P_max=c.load_scale, P_min=-c.load_scale, n=20)
-    assert cy.jumps and "not modelled" not in (cy.note or "")
-    for j in cy.jumps:
-        b, t = j.before, j.after
-        assert b.P == pytest.approx(t.P, abs=1e-12 * c.load_scale)
-        drop = (b.energy - b.P * b.delta) - (t.energy - t.P * t.delta)
-        assert drop >= -1e-12 * abs(b.energy), (j, drop)
-    assert cy.dissipated >= 0
+    pull = cy.jumps[1].before
+    assert abs(pull.P / c.load_scale * c.problem.scale - p_min) < 1e-8 * abs(p_min)
+    assert abs(pull.eps - e_min) < 1e-4
+    grip = c.cycle(control="grip", delta_max=0.3 * c.Delta, delta_min=-0.6 * c.Delta, n=20)
+    assert [j.kind for j in grip.jumps][:2] == ["snap-in", "pull-off"] and grip.note in ("", None)
+    for cyc, control in ((cy, "load"), (grip, "grip")):
+        for j in cyc.jumps:
+            b, t = j.before, j.after
+            held = (b.P, t.P) if control == "load" else (b.delta, t.delta)
+            assert held[0] == pytest.approx(held[1], rel=1e-9, abs=1e-15)
+            assert _gibbs_drop(j, control) >= -1e-12 * abs(b.energy), (control, j)
+        assert cyc.dissipated > 0
 
 
 def test_no_positive_pull_off_on_a_coarse_map():
     """Every load-control pull-off of a coarse (lambda, M) map is a pull (P* < 0) or none."""
     pm = cohesive_map.pull_off_map(np.geomspace(0.05, 2.0, 5), np.geomspace(0.05, 0.6, 5), workers=1)
     assert np.all(~np.isfinite(pm.P_star) | (pm.P_star < 0))
+    assert not any(o.startswith("not modelled") for o in cohesive_map.OUTCOMES)
+
+
+def test_the_map_cell_is_the_walkers_answer():
+    """The S-shaped point on the map: no pull-off from first contact, as Contact.pull_off says."""
+    pb = s_shaped().problem
+    P, kind = cohesive_map._point(1.0, pb.M, pb.theta, pb.gb, pb.alpha_ratio)
+    assert math.isnan(P) and cohesive_map.OUTCOMES[kind].startswith("no adherence force from first contact")

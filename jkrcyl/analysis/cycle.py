@@ -123,7 +123,8 @@ def cycle(pb: Problem, un: _fw.Units, control: str, hi: float, lo: float, n: int
     if to is None or _path.unmodelled(pb):
         why = _path.unmodelled(pb) or _path.no_first_contact_reason(pb, control)
         return _finish(run, n, None, why, delta_work_of, (lo, hi))
-    run.jumps.append(Jump(kind, 0, sep, to))
+    if kind != "continue":                   # a floating pin goes on onto its contact without a jump
+        run.jumps.append(Jump(kind, 0, sep, to))
     run.add(to, 0)
     s, note = run.leg(to, hi, 0)
     tops, closed, leg = [s], None, 1

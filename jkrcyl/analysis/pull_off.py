@@ -42,6 +42,13 @@ def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
                        "zips round into full contact, and a pin bonded all round does not detach")
     if event == "elsewhere":
         return PullOff(control, None, None, None, start, f"first contact lands on the {start.branch} branch")
+    if event == "float":
+        held = {"load": "load", "grip": "approach", "grip-work": "work-conjugate approach"}[control]
+        return PullOff(control, None, None, None, start,
+                       "no adherence force from first contact: the pin floats in the cohesive range, which reaches "
+                       "round the hole (P = 0), and touches the bottom onto contacts with a round zone, which push "
+                       f"(P >= 0); lowering the {held} the contact shrinks back to the touch and the pin floats "
+                       "again (a contact that pulls is reached by pushing further: Contact.cycle)")
     if event == "let-go":
         return _detached(control, s)
     if event == "gap":

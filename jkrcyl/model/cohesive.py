@@ -252,33 +252,11 @@ class Cohesive(SinglePatch):
             return ""
         br = self._branch(regime)
         if regime == "super-critical":
-            return self._super_short(br, a)
+            return _ct.super_short(self, br, a)
         if br.kind == "all" or (a is not None and a < br.offset + (br.a_end - br.offset) * (1 - 1e-9)):
             return ""
         p_end = self.value("p", self.a_end)
         return f"traced up to P_CAP m^(4/3) = {self.law.p_cap:.6g}" if p_end > 0.5 * self.law.p_cap else ""
-
-    def _super_short(self, br, a):
-        """Why the super-critical table ends at a (None: its last point): both of its ends are short of the
-        branch -- the first point lies next to the pole a_crit (|p| unbounded past it), the last one where the
-        trace failed, the zone reaches round, the load cap or eps = pi - 0.05 (the last only to a walker at that point:
-        for the table's extent, a = None, eps = pi - 0.05 ends the branch, as it ends the sub-critical one)."""
-        if a is not None and a <= br.offset + 1e-9 * max(1.0, br.t[-1]):
-            return (f"the super-critical branch is traced from eps = {self._where(br.offset)[0]:.6g} rad, next to "
-                    "the receding limit a_crit, where |P| grows without bound")
-        if a is not None and a < br.offset + (br.a_end - br.offset) * (1 - 1e-9):
-            return ""
-        if br.reason:
-            return br.reason
-        eps, c, _ = self._where(br.a_end)
-        if br.kind == "zone" and c >= math.pi - 2 * _csu.ROUND_MARGIN:
-            return (f"the zone reaches round the hole at eps = {eps:.6g} rad (h(pi) = h0): the super-critical "
-                    "states beyond, with a zone all round, are not traced")
-        if eps < _csu.EPS_TOP - 1e-2 and abs(self.value("p", br.a_end)) > 0.5 * self.law.p_cap:
-            return f"traced up to |p| = P_CAP m^(4/3) = {self.law.p_cap:.6g}"
-        if a is None:              # the table's extent (forward searches): the branch's end, as the sub-critical one
-            return ""
-        return f"traced up to eps = {eps:.6g} rad (pi - 0.05): the states nearer full contact are not traced"
 
     def continues(self, regime, a):
         """The contact branch's touch end (a = 2) continues as the contactless one from the touch (a = 1) and
@@ -302,9 +280,20 @@ class Cohesive(SinglePatch):
         return bool(deps * pt.ddn_dt < 0) if control == "load" else bool(deps * pt.dp_dt > 0)
 
     def free_range(self):
-        """The free pin feels no traction while every gap exceeds h0: -2 + h0 < delta/Delta < -h0."""
-        h0 = self.law.h0
-        return -2.0 + h0, -h0
+        """The free pin feels no traction while every gap exceeds h0: -2 + h0 < delta/Delta < -h0; where the
+        contact branch starts with its zone round (no zone-only pin touches) and the pin floats in the range all
+        round (P = 0, :meth:`floating`) up to a larger approach, that range stands for it (both hold -1)."""
+        h0, fl = self.law.h0, self.floating()
+        return fl if fl is not None and fl[1] > -h0 and self._contactless is None else (-2.0 + h0, -h0)
+
+    def floats_onto(self):
+        """The pin floating in a range that reaches round (:meth:`free_range`) touches the bottom at the top of
+        that range where the sub-critical branch starts with its zone round (zones 'all' at its touch end, the
+        approach there that top to 1e-4): it goes on onto a = 2 without a jump.  None otherwise."""
+        fl = self.floating()
+        if fl is None or self.free_range() != fl or self._sub.kind == "zone" and self._sub.n_round == 0:
+            return None
+        return 2.0 if abs(self.value("dn", 2.0) - fl[1]) < 1e-4 else None
 
     def _super_pulls(self):
         """Branch parameters of the super-critical table's states that pull (p < 0, without their feasibility)."""

@@ -14,6 +14,7 @@ import math
 import numpy as np
 
 from ..numerics import cohesive_branch as _cb
+from ..numerics import cohesive_super as _csu
 
 SUB_OFFSET = 2.0
 SUPER_OFFSET = 1000.0     # above any sub-critical parameter: that trace's arclength is at most 1500 x 0.25 = 375
@@ -70,3 +71,26 @@ class Traced:
         eps, d = math.exp(xp[0]), math.exp(xp[1])
         de = eps * chord[0]
         return eps, eps + d, (de, de + d * chord[1])
+
+
+def super_short(sv, br, a):
+    """Why the super-critical table of the solver sv (jkrcyl.model.cohesive.Cohesive) ends at a (None: its last
+    point): both of its ends are short of the branch -- the first point lies next to the pole a_crit (|p| unbounded past it), the last one where the
+    trace failed, the zone reaches round, the load cap or eps = pi - 0.05 (the last only to a walker at that point:
+    for the table's extent, a = None, eps = pi - 0.05 ends the branch, as it ends the sub-critical one)."""
+    if a is not None and a <= br.offset + 1e-9 * max(1.0, br.t[-1]):
+        return (f"the super-critical branch is traced from eps = {sv._where(br.offset)[0]:.6g} rad, next to "
+                "the receding limit a_crit, where |P| grows without bound")
+    if a is not None and a < br.offset + (br.a_end - br.offset) * (1 - 1e-9):
+        return ""
+    if br.reason:
+        return br.reason
+    eps, c, _ = sv._where(br.a_end)
+    if br.kind == "zone" and c >= math.pi - 2 * _csu.ROUND_MARGIN:
+        return (f"the zone reaches round the hole at eps = {eps:.6g} rad (h(pi) = h0): the super-critical "
+                "states beyond, with a zone all round, are not traced")
+    if eps < _csu.EPS_TOP - 1e-2 and abs(sv.value("p", br.a_end)) > 0.5 * sv.law.p_cap:
+        return f"traced up to |p| = P_CAP m^(4/3) = {sv.law.p_cap:.6g}"
+    if a is None:              # the table's extent (forward searches): the branch's end, as the sub-critical one
+        return ""
+    return f"traced up to eps = {eps:.6g} rad (pi - 0.05): the states nearer full contact are not traced"

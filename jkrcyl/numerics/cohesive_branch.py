@@ -98,10 +98,11 @@ def top_opens(law, points=ROUND_SCAN):
     """For a branch whose zone reaches round at its touch end (zones 'all' at eps_lo): (eps, c, kind) where the
     first zone-end root of jkrcyl.numerics.cohesive.cohesive_state stops short of the top with a jump to c
     (pi - c > ROUND_JUMP just past eps, and as large with the opening bracketed 1e4 times closer), or None when
-    the zone stays round or opens continuously (c -> pi, as a square root).  Two kinds of jump, neither traced:
+    the zone stays round or opens continuously (c -> pi, as a square root).  Two kinds of jump:
     'top bridge' -- the round zone's gap reaches h0 beside the top first (h(pi) ~ h0 just before), the states
     beyond keep a zone at the top apart from the bottom one; 'S-shaped branch' -- h(pi) is still well below h0,
-    the round-zone states go on and the first root belongs to a family met at a fold in eps.  A scan of
+    the round-zone states go on and the first root belongs to a family met at a fold in eps (traced whole:
+    jkrcyl.numerics.cohesive_round; a top bridge is not traced).  A scan of
     ``points`` contacts (geometric in eps up to eps_hi: the top gap grows with the contact), the first short one
     bisected to 1e-10 in log eps."""
     c_at = lambda e: law.state(e).c
