@@ -217,3 +217,16 @@ def test_the_map_cell_is_the_walkers_answer():
     pb = s_shaped().problem
     P, kind = cohesive_map._point(1.0, pb.M, pb.theta, pb.gb, pb.alpha_ratio)
     assert math.isnan(P) and cohesive_map.OUTCOMES[kind].startswith("no adherence force from first contact")
+
+
+def test_a_floating_pin_cycles_through_its_range_without_a_jump():
+    """h0 = 3.4 Delta (lambda = 0.05, M = 0.093, identical bodies): the range reaches round, no state pulls.  A
+    load cycle goes on from the floating pin onto the bottom contact, back to its touch, across the floating range
+    (P = 0) onto the top one and back: no jump, nothing dissipated (the path is reversible)."""
+    pair = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    probe = jkrcyl.Contact(1e-2, 1e-5, 1.0, pair)
+    c = jkrcyl.Contact.with_lambda(1e-2, 1e-5, (0.09306048591020996 / probe.M) ** 2, pair, 0.05)
+    assert c.pull_off("load").P is None
+    cy = c.cycle(P_max=c.load_scale, P_min=-c.load_scale, n=10)
+    assert cy.jumps == [] and cy.dissipated == 0.0 and cy.note in ("", None)
+    assert cy.P.max() > 0.5 * c.load_scale and cy.P.min() < -0.5 * c.load_scale

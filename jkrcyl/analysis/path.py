@@ -154,8 +154,8 @@ def continuation(pb: Problem, un: _fw.Units, s, control: str):
     that pin, at the top of its range, mirrored for the top side), or None."""
     regime = s.branch.replace("-top", "")
     if regime == "sub-critical" and s.a == solver(pb).floats_onto():     # back to the touch: the pin floats
-        return _fw.separated_state(pb, un, solver(pb).free_range()[1] * (-1 if s.side == "top" else 1)
-                                   - (2 if s.side == "top" else 0), control)
+        hi = solver(pb).free_range()[1]
+        return _fw.separated_state(pb, un, -2 - hi if s.side == "top" else hi, control)
     nxt = solver(pb).continues(regime, s.a) if solver(pb).has(regime) else None
     if nxt is None:
         return None
@@ -171,6 +171,9 @@ def land(pb: Problem, un: _fw.Units, s, event: str, control: str, value: float, 
         if nxt is not None:
             if nxt.stable and nxt.feasible:
                 return nxt, "continue"
+            across = _floats_onto(pb, un, control, _other(s.side)) if nxt.branch == "separated" else None
+            if across is not None:   # a floating pin under load (P = 0 only) floats across onto the other side's
+                return across, "continue"      # touch end: no jump, the contact vanishes and forms continuously
             event = "fold"           # its continuation is unstable: the path jumps from the branch's end
     # two-patch states are traced by continuation: only where the contact grows or the top closes
     quick = event == "touch" or (event == "fold" and s.branch.startswith("sub-critical"))
@@ -202,8 +205,7 @@ def land(pb: Problem, un: _fw.Units, s, event: str, control: str, value: float, 
             return (min(into, key=lambda x: x.size), "snap-in") if into else (None, "snap-in")
         off = [x for x in cands if x.branch == "separated" or x.side == _other(s.side)]
         return (min(off, key=lambda x: x.size), "pull-off") if off else (None, "pull-off")
-    # a fold of a cohesive S-shaped branch (its round zone and its zone-end families): met pushing, or where the
-    # pull-off rule finds nothing, the path jumps to the state on its side nearest in size
+    # a cohesive S-shaped branch's fold met pushing, or one the pull-off rule has no state for: the nearest in size
     nearest = lambda xs: min(xs, key=lambda x: abs(x.size - s.size)) if xs else None
     if event == "fold" and s.branch.startswith("sub-critical") and up:
         got = nearest([x for x in cands if x.side == s.side])
@@ -273,10 +275,8 @@ def first_contact(pb: Problem, un: _fw.Units, control: str):
 
 
 def _floats_onto(pb: Problem, un: _fw.Units, control: str, side: str):
-    """The state a pin floating in a cohesive range that reaches round goes on onto where it touches the side,
-    no jump (jkrcyl.model.patch.SinglePatch.floats_onto: the touch end of a branch whose zone is round there),
-    where it is stable and feasible and, under load, does not pull (|P| grows from 0 into the side there: else
-    the pin is drawn in); else None."""
+    """The touch end (SinglePatch.floats_onto) a pin floating in a cohesive range goes on onto at the side, no
+    jump, if stable, feasible and, under load, pushing (else the pin is drawn in); else None."""
     a = solver(pb).floats_onto()
     if a is None:
         return None
@@ -325,8 +325,8 @@ def pull_path(pb: Problem, un: _fw.Units, control: str):
     not a bottom single patch), else the walk's event down the start's branch to -inf (fold, gap, end) and the
     state where it ends; 'let-go' where a branch ends on an unstable continuation under a pull (the cohesive
     contact at its touch end: the pin lets go there).  pull_off, confined_events and the confined figure all read
-    this one path.  'float': the pin floating in a cohesive range that reaches round went on onto the contact
-    branch at first touch and the walk brought it back to that touch (no pull: it floats again)."""
+    this one path.  'float': a floating pin (cohesive range reaching round) went on onto the contact branch at
+    first touch and the walk brought it back to that touch."""
     _, start, _ = first_contact(pb, un, control)
     if start is None:
         return None, "none", None
