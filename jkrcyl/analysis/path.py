@@ -150,8 +150,7 @@ def _other(side):
 
 def continuation(pb: Problem, un: _fw.Units, s, control: str):
     """The state where the branch of s continues past its end (the cohesive contact branch's touch end and the
-    zone-only branch, jkrcyl.model.patch.SinglePatch.continues; a touch end onto which a floating pin went on:
-    that pin, at the top of its range, mirrored for the top side), or None."""
+    zone-only branch, SinglePatch.continues; a floats_onto touch end: the free pin at its range's end), or None."""
     regime = s.branch.replace("-top", "")
     if regime == "sub-critical" and s.a == solver(pb).floats_onto():     # back to the touch: the pin floats
         hi = solver(pb).free_range()[1]
@@ -280,9 +279,10 @@ def _floats_onto(pb: Problem, un: _fw.Units, control: str, side: str):
     a = solver(pb).floats_onto()
     if a is None:
         return None
-    s = _fw.single_patch_states(pb, un, "sub-critical", [a], control, side)[0]
-    pushes = s.P >= 0 if side == "bottom" else s.P <= 0
-    return s if s.stable and s.feasible and (control != "load" or pushes) else None
+    s, hi = _fw.single_patch_states(pb, un, "sub-critical", [a], control, side)[0], solver(pb).free_range()[1]
+    at = (s.P >= 0) == (side == "bottom") if control == "load" else \
+        abs(s.delta / un.Delta - (hi if side == "bottom" else -2 - hi)) < 1e-4       # grip: at the free range's end
+    return s if s.stable and s.feasible and at else None
 
 
 def unmodelled(pb: Problem) -> str:

@@ -50,10 +50,10 @@ def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
     if event == "float":
         held = {"load": "load", "grip": "approach", "grip-work": "work-conjugate approach"}[control]
         return PullOff(control, None, None, None, start,
-                       "no adherence force from first contact: the pin floats in the cohesive range, which reaches "
-                       "round the hole (P = 0), and touches the bottom onto contacts with a round zone, which push "
-                       f"(P >= 0); lowering the {held} the contact shrinks back to the touch and the pin floats "
-                       "again (a contact that pulls is reached by pushing further: Contact.cycle)")
+                       "no adherence force from first contact: the pin touches the bottom onto contacts whose "
+                       "cohesive zone reaches round the hole, which push (P >= 0); lowering the "
+                       f"{held} the contact shrinks back to the touch and the pin leaves it (a contact that pulls "
+                       "is reached by pushing further: Contact.cycle)")
     if unmodelled:
         return PullOff(control, None, None, None, None, unmodelled)
     if event == "let-go":
