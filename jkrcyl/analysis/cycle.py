@@ -20,7 +20,7 @@ import numpy as np
 
 from ..model.problem import Problem
 from ..results import Cycle, Jump
-from ..results.states import CONTROLS
+from ..units import CONTROLS, Units
 from . import forward as _fw
 from . import path as _path
 
@@ -31,7 +31,7 @@ MAX_JUMPS = 20           # jumps per leg at most
 class _Run:
     """A cycle being driven: the recorded points (P, delta, branch, a, stable, leg), jumps and tracks."""
 
-    def __init__(self, pb: Problem, un: _fw.Units, control: str):
+    def __init__(self, pb: Problem, un: Units, control: str):
         self.pb, self.un, self.control = pb, un, control
         self.pts, self.jumps, self.tracks = [], [], {}
 
@@ -79,8 +79,7 @@ class _Run:
         """Move along the current branch: (state, event)."""
         pb, un, ctl = self.pb, self.un, self.control
         if s.branch == "full-contact":
-            t = target / (un.load_scale if ctl == "load" else un.Delta)
-            e = _fw.full_contact_state(pb, un, CONTROLS[ctl][0], t, ctl)
+            e = _fw.full_contact_state(pb, un, CONTROLS[ctl].normalised, un.normalise(ctl, target), ctl)
             self.add(e, leg)
             return e, "target"
         if s.branch == "separated":
@@ -114,7 +113,7 @@ def _same(s1, s2, rel=1e-6):
         abs(s1.P - s2.P) <= rel * max(abs(s1.P), 1e-300) + 1e-300
 
 
-def cycle(pb: Problem, un: _fw.Units, control: str, hi: float, lo: float, n: int, delta_work_of) -> Cycle:
+def cycle(pb: Problem, un: Units, control: str, hi: float, lo: float, n: int, delta_work_of) -> Cycle:
     """The cycle between the held limits lo < hi (P [N/m] or an approach [m]); delta_work_of(P, delta) the
     work-conjugate approach [m] of the Contact (for the returned path)."""
     run = _Run(pb, un, control)

@@ -19,7 +19,7 @@ With a cohesive (Maugis-Dugdale) edge law the single-patch branches (sub- and su
 the solver's (jkrcyl.model.cohesive) and two patches and full contact are not modelled: those branches return no state in a search of every branch, and
 asking for them by name raises ValueError.
 
-Stability is that of the control (jkrcyl.results.states.CONTROLS): fixed load for P, fixed paper's approach for
+Stability is that of the control (jkrcyl.units.CONTROLS): fixed load for P, fixed paper's approach for
 delta ('grip'), fixed work-conjugate approach for delta_work ('grip-work').  Signs as in section 6: P and delta
 are positive downward (pushing the pin into the bottom of the hole).
 """
@@ -27,7 +27,6 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import dataclass
 from typing import Callable, Dict, List
 
 import numpy as np
@@ -39,30 +38,9 @@ from ..model.problem import Problem
 from ..model.single_patch import solver
 from ..notices import BranchLimitWarning
 from ..results import Equilibrium
-from ..results.states import CONTROLS
+from ..units import CONTROLS, Units
 from . import branches as _br
 from . import tracing as _tr
-
-#: normalised key of each control (results.states.CONTROLS) -> the single-patch solver field
-FIELD_OF_KEY = {"P_star": "p", "delta_over_Delta": "dn", "delta_work_over_Delta": "dw"}
-
-
-@dataclass(frozen=True)
-class Units:
-    """What turns a normalised state dimensional: R, Delta [m], P/P* [N/m], K at an edge in equilibrium
-    [Pa m^1/2] and the energy unit 4 pi Delta^2/beta* [J/m] of the kernel scale."""
-
-    R: float
-    Delta: float
-    load_scale: float
-    K_edge: float
-    energy_scale: float = 1.0
-
-    @classmethod
-    def of(cls, contact) -> "Units":
-        return cls(contact.R, contact.Delta, contact.load_scale,
-                   contact.law.stress_intensity(contact),
-                   4 * math.pi * contact.Delta ** 2 / contact.beta)
 
 
 def _state(pb, un, branch, control, side, a, eps, P_star, dn, h, flags, U, a_top=0.0, eps_top=0.0, K=None,
@@ -73,7 +51,8 @@ def _state(pb, un, branch, control, side, a, eps, P_star, dn, h, flags, U, a_top
     dw = dn + pb.work_shift * pb.scale * P_star
     energy = un.energy_scale * (U - 2 * pb.m ** 2 * (eps + eps_top) if total is None else total)
     return Equilibrium(branch=branch, control=control, a=a, eps=eps, contact_width=2 * un.R * (eps + eps_top),
-                       P=P_star * un.load_scale, delta=dn * un.Delta, delta_work=dw * un.Delta, h_pi=h * un.Delta,
+                       P=un.physical("load", P_star), delta=un.physical("grip", dn),
+                       delta_work=un.physical("grip-work", dw), h_pi=h * un.Delta,
                        K=un.K_edge if K is None else K, P_star=P_star, delta_over_Delta=dn,
                        delta_work_over_Delta=dw, feasible=bool(flags[0]), stable_load=bool(flags[1]),
                        stable_grip=bool(flags[2]), stable_grip_work=bool(flags[3]), side=side, a_top=a_top,
@@ -108,8 +87,8 @@ def _single(regime: str, side: str = "bottom"):
             return []
         if side == "top":                        # mirror: P* -> -P*, either approach -> -2 - itself
             target = -target if key == "P_star" else -2.0 - target
-        field = FIELD_OF_KEY[key]
-        t = target * (pb.scale if field == "p" else 1.0)
+        field = CONTROLS[control].field
+        t = target * (pb.scale if CONTROLS[control].is_load else 1.0)    # normalised -> kernel scale
         _warn_past_table(pb, un, regime, field, t, side)
         return single_patch_states(pb, un, regime, [r for r, _ in _br.roots(pb, regime, field, t)], control, side)
     solver.__doc__ = f"{regime} single patch at the {side} of the hole."
@@ -126,7 +105,7 @@ def _warn_past_table(pb, un, regime, field, target, side):
     last = values[-1]
     beyond = (target > values.max() and last >= values.max()) or (target < values.min() and last <= values.min())
     if beyond and solver(pb).stops_short(regime):
-        what, unit = ("P", un.load_scale / pb.scale) if field == "p" else ("the approach", un.Delta)
+        what, unit = ("P", un.per_kernel("load")) if field == "p" else ("the approach", un.Delta)
         sgn = -1.0 if side == "top" else 1.0
         end = sgn * last * unit
         warnings.warn(f"{what}: the {regime}{'-top' if side == 'top' else ''} branch of the {pb.edge.name} law is "
@@ -223,7 +202,7 @@ def check_branches(branches, pb: Problem = None) -> list:
 def solve_normalised(pb: Problem, un: Units, control: str, target: float, branches=None) -> List[Equilibrium]:
     """Every equilibrium with the held quantity of ``control`` at the normalised target (P*, delta/Delta or
     delta_work/Delta), sorted by contact size then branch order."""
-    key = CONTROLS[control][0]
+    key = CONTROLS[control].normalised
     out = []
     for name in check_branches(branches):
         out += BRANCH_SOLVERS[name](pb, un, key, target, control)

@@ -18,9 +18,8 @@ import numpy as np
 
 from ..model import two_patch as _two
 from ..model.problem import Problem
-from ..model.single_patch import SLOPE_OF, solver
-from ..model.stability import HELD
-from ..results.states import CONTROLS
+from ..model.single_patch import solver
+from ..units import CONTROLS, CURVE_FIELD, Units
 from . import branches as _br
 from . import forward as _fw
 from . import tracing as _tr
@@ -29,33 +28,33 @@ from . import tracing as _tr
 class SingleTrack:
     """A single-patch branch (bottom or top, the mirror) on its dense table, the held quantity physical."""
 
-    def __init__(self, pb: Problem, un: _fw.Units, regime: str, side: str, control: str):
+    def __init__(self, pb: Problem, un: Units, regime: str, side: str, control: str):
         c = _br.table(pb, regime)
         self.pb, self.un, self.regime, self.side, self.control = pb, un, regime, side, control
         self.name = regime + ("-top" if side == "top" else "")
         self.a = np.asarray(c.a)
         sgn = -1.0 if side == "top" else 1.0
-        self.P = sgn * np.asarray(c.P_star) * un.load_scale
+        self.P = un.physical("load", sgn * np.asarray(c.P_star))
         d, dw = np.asarray(c.delta_over_Delta), np.asarray(c.delta_work_over_Delta)
-        self.delta = (-2 - d if side == "top" else d) * un.Delta
-        self.delta_work = (-2 - dw if side == "top" else dw) * un.Delta
-        self.stable = np.asarray(getattr(c, CONTROLS[control][2]))
+        self.delta = un.physical("grip", -2 - d if side == "top" else d)
+        self.delta_work = un.physical("grip-work", -2 - dw if side == "top" else dw)
+        self.stable = np.asarray(getattr(c, CONTROLS[control].stable))
         self.feasible = np.asarray(c.feasible)
 
     @property
     def y(self):
-        return getattr(self, CONTROLS[self.control][3])
+        return getattr(self, CONTROLS[self.control].physical)
 
     def state_at(self, a):
         return _fw.single_patch_states(self.pb, self.un, self.regime, a, self.control, self.side)[0]
 
     def _field_target(self, value):
         """The solver field of the held quantity and the bottom branch's target for a physical value."""
-        field = HELD[self.control][0]
-        if self.control == "load":
-            return field, (-value if self.side == "top" else value) / self.un.load_scale * self.pb.scale
-        t = value / self.un.Delta
-        return field, (-2 - t if self.side == "top" else t)
+        ctl = CONTROLS[self.control]
+        if ctl.is_load:                                     # mirror: P -> -P, either approach -> -2 Delta - itself
+            return ctl.field, self.un.to_kernel("load", -value if self.side == "top" else value)
+        t = self.un.to_kernel(self.control, value)
+        return ctl.field, (-2 - t if self.side == "top" else t)
 
     def exact(self, j, k, target):
         """The state between grid indices j, k where the held quantity equals target."""
@@ -70,8 +69,8 @@ class SingleTrack:
         """Contact parameter of the stationary point of the held quantity next to grid index j: the sign change
         of its slope in the table cell on either side of j, refined exactly as branches.roots refines it (the
         same bracket, so the same double as jkrcyl.analysis.branches.stationary_points)."""
-        field = SLOPE_OF[HELD[self.control][0]]
-        name, scaled = _br.SLICE_OF_CURVE[field]
+        field = CONTROLS[self.control].field_slope
+        name, scaled = CURVE_FIELD[field]
         v = np.asarray(getattr(_br.table(self.pb, self.regime), name)) * (self.pb.scale if scaled else 1.0)
         sv = solver(self.pb)
         for i in (j - 1, j):
@@ -113,7 +112,7 @@ def walk(track: SingleTrack, i: int, target: float):
     return passed, "end", track.state_at(track.a[j])
 
 
-def walk_two_patch(pb: Problem, un: _fw.Units, s, target: float, control: str):
+def walk_two_patch(pb: Problem, un: Units, s, target: float, control: str):
     """On a traced two-patch branch from state s towards target: (visited states, event, end state); states
     between branch points by linear interpolation of the half-angles, solved afresh."""
     best = None
@@ -122,9 +121,9 @@ def walk_two_patch(pb: Problem, un: _fw.Units, s, target: float, control: str):
         if best is None or d.min() < best[0]:
             best = (d.min(), b, int(np.argmin(d)))
     _, b, i = best
-    key, _, stab, _ = CONTROLS[control]
-    y = np.asarray(getattr(b, key)) * (un.load_scale if control == "load" else un.Delta)
-    stable = getattr(b, stab)
+    ctl = CONTROLS[control]
+    y = np.asarray(getattr(b, ctl.normalised)) * un.per_normalised(control)
+    stable = getattr(b, ctl.stable)
     state = lambda e, et: _fw.two_patch_state(pb, un, _tr._two.equilibrium_state(pb, e, et), control)
     sgn = 1 if target > y[i] else -1
     step = next((k - i for k in (i - 1, i + 1) if 0 <= k < y.size and sgn * (y[k] - y[i]) > 0), None)
@@ -140,7 +139,7 @@ def walk_two_patch(pb: Problem, un: _fw.Units, s, target: float, control: str):
         if not stable[k] or not b.feasible[k] or sgn * (y[k] - y[j]) <= 0:
             return seen, "fold", state(float(b.eps[j]), float(b.eps_top[j]))
         j = k
-        seen.append((b.P_star[j] * un.load_scale, b.delta_over_Delta[j] * un.Delta, "two-patch", b.a[j]))
+        seen.append((un.physical("load", b.P_star[j]), un.physical("grip", b.delta_over_Delta[j]), "two-patch", b.a[j]))
     return seen, "fold", state(float(b.eps[j]), float(b.eps_top[j]))
 
 
@@ -148,7 +147,7 @@ def _other(side):
     return {"bottom": "top", "top": "bottom"}.get(side, side)
 
 
-def continuation(pb: Problem, un: _fw.Units, s, control: str):
+def continuation(pb: Problem, un: Units, s, control: str):
     """The state where the branch of s continues past its end (the cohesive contact branch's touch end and the
     zone-only branch, jkrcyl.model.patch.SinglePatch.continues), or None."""
     regime = s.branch.replace("-top", "")
@@ -158,7 +157,7 @@ def continuation(pb: Problem, un: _fw.Units, s, control: str):
     return _fw.single_patch_states(pb, un, nxt[0], [nxt[1]], control, s.side)[0]
 
 
-def land(pb: Problem, un: _fw.Units, s, event: str, control: str, value: float, up: bool):
+def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: bool):
     """The state a jump from s lands on, at the same held value, and the jump's kind ('snap-in', 'pull-off',
     'zip', 'top-contact'; 'continue' where a branch goes on as another, without a jump); (None, kind) when no
     stable, feasible state is there."""
@@ -171,7 +170,7 @@ def land(pb: Problem, un: _fw.Units, s, event: str, control: str, value: float, 
     # two-patch states are traced by continuation: only where the contact grows or the top closes
     quick = event == "touch" or (event == "fold" and s.branch.startswith("sub-critical"))
     names = [b for b in _fw.BRANCH_SOLVERS if not (quick and b == "two-patch")]
-    target = value / (un.load_scale if control == "load" else un.Delta)
+    target = un.normalise(control, value)
 
     def candidates(branches):
         return [x for x in _fw.solve_normalised(pb, un, control, target, branches) if x.stable and x.feasible
@@ -242,7 +241,7 @@ def _land_on_top_contact(pb, s, cands, control, target):
     return min(pool, key=lambda x: math.hypot(x.eps - end[0], x.eps_top - end[1]))
 
 
-def first_contact(pb: Problem, un: _fw.Units, control: str):
+def first_contact(pb: Problem, un: Units, control: str):
     """(free pin touching the bottom, the state it snaps into, kind): at P = 0 under load control (the zero-load
     contact (8.1); full contact when there is none, M > M_max), at the held approach 0 under grip.
 
@@ -290,7 +289,7 @@ def _single_patch_only(pb: Problem) -> str:
     return ""
 
 
-def pull_path(pb: Problem, un: _fw.Units, control: str):
+def pull_path(pb: Problem, un: Units, control: str):
     """The path of slow pulling from first contact: (start, event, state).  start is the state first contact
     snaps into (None: no stable, feasible one); event: 'bonded' (start is full contact), 'elsewhere' (start is
     not a bottom single patch), else the walk's event down the start's branch to -inf (fold, gap, end) and the

@@ -15,7 +15,7 @@ from __future__ import annotations
 from ..model.problem import Problem
 from ..model.single_patch import solver
 from ..results import PullOff
-from . import forward as _fw
+from ..units import Units
 from . import path as _path
 
 
@@ -25,7 +25,7 @@ def grows_under_pull(pb: Problem, a: float, control: str) -> bool:
     return solver(pb).grows_under_pull(a, control)
 
 
-def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
+def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
     """Detachment along the quasi-static path (module docstring) under ``control``."""
     if pb.M == 0:
         return PullOff(control, None, None, None, None, "no adhesion (w = 0): the contact vanishes at P = 0")

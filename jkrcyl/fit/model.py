@@ -181,7 +181,7 @@ class States(NamedTuple):
 
 def load_per_p(c: Contact) -> float:
     """P / p: 4 pi Delta/beta* [N/m] (the kernel scale, section 6: p = vartheta P*, P* = P/load_scale)."""
-    return c.load_scale / c.problem.scale
+    return c.units.per_kernel("load")
 
 
 REF_W = 1.0          # [J/m^2] the reference contact of a pair's shape (any w > 0: M is proportional to sqrt(w))
@@ -211,7 +211,7 @@ class Superposed:
     @classmethod
     def of(cls, c: Contact, materials: Materials) -> "Superposed":
         pb = c.problem
-        return cls(materials, law_coefficient(pb, pb.m), c.load_scale / pb.scale, c.Delta, pb.work_shift,
+        return cls(materials, law_coefficient(pb, pb.m), c.units.per_kernel("load"), c.Delta, pb.work_shift,
                    lambda: c)
 
     @classmethod
@@ -222,7 +222,7 @@ class Superposed:
             raise ValueError(f"Delta, w: outside 0 < Delta < R, w >= 0 (Delta = {Delta!r}, w = {w!r}, f = {f!r})")
         ref, pb = reference(R, materials, law)
         M = pb.M * math.sqrt(ref.law.edge_work(w) / (ref.law.edge_work(REF_W) * f)) * ref.Delta / Delta
-        return cls(materials, law_coefficient(pb, M * pb.scale), ref.load_scale / pb.scale * f * Delta / ref.Delta,
+        return cls(materials, law_coefficient(pb, M * pb.scale), ref.units.per_kernel("load") * f * Delta / ref.Delta,
                    Delta, pb.work_shift,
                    lambda: contact(R, Delta, w, scaled(materials, f) if f != 1.0 else materials, law=law))
 

@@ -6,11 +6,12 @@ from typing import Dict, Optional
 
 import numpy as np
 
+from ..units import CONTROLS, Units
 
-def _with_units(obj, load_scale, Delta):
+
+def _with_units(obj, units: Units):
     """The dimensional fields P [N/m], delta, delta_work [m] from the normalised ones."""
-    return replace(obj, P=obj.P_star * load_scale, delta=obj.delta_over_Delta * Delta,
-                   delta_work=obj.delta_work_over_Delta * Delta)
+    return replace(obj, **{c.physical: units.physical(c.name, getattr(obj, c.normalised)) for c in CONTROLS.values()})
 
 
 @dataclass(frozen=True)
@@ -86,15 +87,13 @@ class Curve:
     COLUMNS = ("a", "eps", "eps_star", "P_star", "delta_over_Delta", "delta_work_over_Delta", "h_pi_over_Delta",
                "feasible", "stable_load", "stable_grip", "stable_grip_work")
 
-    def with_units(self, load_scale: float, Delta: float) -> "Curve":
+    def with_units(self, units: Units) -> "Curve":
         """This curve with the dimensional fields P [N/m], delta and delta_work [m].
 
         Parameters
         ----------
-        load_scale : float
-            P/P* [N/m]: 4 pi Delta vartheta/beta* (section 6; :attr:`jkrcyl.Contact.load_scale`).
-        Delta : float
-            The clearance [m].
+        units : jkrcyl.Units
+            The contact's scales (:attr:`jkrcyl.Contact.units`): P = P* load_scale, delta = (delta/Delta) Delta.
 
         Returns
         -------
@@ -103,11 +102,12 @@ class Curve:
         Examples
         --------
         >>> import jkrcyl
-        >>> c = jkrcyl.equilibria.curve(0.3, 1.0, n=5, gb=1 / 2.8).with_units(1000.0, 1e-6)
+        >>> units = jkrcyl.Units(Delta=1e-6, load_scale=1000.0)          # P = 1000 N/m P*, Delta = 1 um
+        >>> c = jkrcyl.equilibria.curve(0.3, 1.0, n=5, gb=1 / 2.8).with_units(units)
         >>> bool((c.P == 1000.0 * c.P_star).all()), bool((c.delta == 1e-6 * c.delta_over_Delta).all())
         (True, True)
         """
-        return _with_units(self, load_scale, Delta)
+        return _with_units(self, units)
 
     def table(self) -> Dict[str, np.ndarray]:
         """Columns of :attr:`COLUMNS` (plus P [N/m], delta, delta_work [m] when dimensional, c, c_top for the
@@ -186,13 +186,13 @@ class Point:
     gb: Optional[float] = None
     alpha_ratio: float = 0.0
 
-    def with_units(self, load_scale: float, Delta: float) -> "Point":
+    def with_units(self, units: Units) -> "Point":
         """This point with P [N/m], delta and delta_work [m]: :meth:`Curve.with_units`.
 
         Parameters
         ----------
-        load_scale, Delta : float
-            P/P* [N/m] and the clearance [m].
+        units : jkrcyl.Units
+            The contact's scales (:attr:`jkrcyl.Contact.units`).
 
         Returns
         -------
@@ -201,11 +201,12 @@ class Point:
         Examples
         --------
         >>> import jkrcyl
-        >>> p = jkrcyl.equilibria.adherence(0.3, 1.0, gb=1 / 2.8)[0].with_units(1000.0, 1e-6)
+        >>> units = jkrcyl.Units(Delta=1e-6, load_scale=1000.0)
+        >>> p = jkrcyl.equilibria.adherence(0.3, 1.0, gb=1 / 2.8)[0].with_units(units)
         >>> round(p.P, 1), round(p.delta * 1e9, 1)
         (-285.6, -307.6)
         """
-        return _with_units(self, load_scale, Delta)
+        return _with_units(self, units)
 
 
 @dataclass(frozen=True)
@@ -266,13 +267,13 @@ class TwoPatchCurve:
     COLUMNS = ("a", "a_top", "eps", "eps_top", "eps_star", "eps_top_star", "P_star", "delta_over_Delta",
                "delta_work_over_Delta", "gap_min", "feasible", "stable_load", "stable_grip", "stable_grip_work")
 
-    def with_units(self, load_scale: float, Delta: float) -> "TwoPatchCurve":
+    def with_units(self, units: Units) -> "TwoPatchCurve":
         """This branch with P [N/m], delta and delta_work [m]: :meth:`Curve.with_units`.
 
         Parameters
         ----------
-        load_scale, Delta : float
-            P/P* [N/m] and the clearance [m].
+        units : jkrcyl.Units
+            The contact's scales (:attr:`jkrcyl.Contact.units`).
 
         Returns
         -------
@@ -282,10 +283,10 @@ class TwoPatchCurve:
         --------
         >>> import jkrcyl
         >>> b, = jkrcyl.equilibria.two_patch(0.5, 1.0, n=20, gb=1 / 2.8)
-        >>> bool((b.with_units(1000.0, 1e-6).P == 1000.0 * b.P_star).all())
+        >>> bool((b.with_units(jkrcyl.Units(Delta=1e-6, load_scale=1000.0)).P == 1000.0 * b.P_star).all())
         True
         """
-        return _with_units(self, load_scale, Delta)
+        return _with_units(self, units)
 
     def table(self, raw: bool = False) -> Dict[str, np.ndarray]:
         """Columns of :attr:`COLUMNS` (plus P [N/m], delta, delta_work [m] when dimensional) as a dict of arrays.
