@@ -265,13 +265,13 @@ class EdgeLaw:
         Returns
         -------
         dict
-            ``{"law": self}`` (JKR: ``{}``, the default; Dugdale: ``{"sigma0": sigma0}``, its shorthand).
+            ``{"law": self}`` (Dugdale: ``{"sigma0": sigma0}``, its shorthand: the same contact either way).
 
         Examples
         --------
         >>> import jkrcyl
         >>> jkrcyl.laws.Griffith().arguments()
-        {}
+        {'law': Griffith()}
         >>> jkrcyl.laws.Dugdale(sigma0=5e6).arguments()
         {'sigma0': 5000000.0}
         """
