@@ -26,7 +26,7 @@ DOCTEST_MODULES = (
     "jkrcyl.plotting.paper_pressure", "jkrcyl.plotting.paper_stability", "jkrcyl.plotting.registry",
     "jkrcyl.plotting.style", "jkrcyl.laws.kinetic", "jkrcyl.kinetics.sweep", "jkrcyl.kinetics.history",
     "jkrcyl.kinetics.results", "jkrcyl.plotting.rate", "jkrcyl.fit.estimate", "jkrcyl.explore.model", "jkrcyl.numerics.zero_load",
-    "jkrcyl.fit.data",
+    "jkrcyl.fit.data", "jkrcyl.fit.result",
 )
 
 # every library file's docstrings are held to the naming rules below

@@ -56,6 +56,16 @@ class RateSweep:
         The high-rate power law per rate [N/m] (:func:`high_rate_pull_off`; load control, NaN otherwise).
     exponent : float
         Its exponent n/(n + 2).
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m,
+    ...                      kinetics=jkrcyl.CrackKinetics(v_star=1e-6, n=0.6))
+    >>> sw = rate_sweep(pin, [1e-12, 1e-11], control="grip-work")    # m/s
+    >>> list(sw.table()), sw.exponent == 0.6 / 2.6                  # Barquins' high-rate exponent n/(n + 2)
+    (['rate', 'P', 'kind', 'asymptote'], True)
     """
 
     control: str
