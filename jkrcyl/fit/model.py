@@ -45,8 +45,10 @@ def width_of_a(a, R):
 
 def contact(R, Delta, w, materials, strength=None, law=None) -> Contact:
     """The library's contact (validates R, Delta, w; strength: the cohesive sigma0 [Pa], None for JKR; law: an edge
-    law, Contact(..., law=)): every contact of the fit is built here."""
-    return Contact(R=R, Delta=Delta, w=w, materials=materials, sigma0=strength, law=law)
+    law, Contact(..., law=)): every contact of the fit is built here.  A strength makes the law Dugdale's: the
+    superposed path's law (resolved once from the user's, jkrcyl.fit.estimate) then has no say."""
+    return Contact(R=R, Delta=Delta, w=w, materials=materials, sigma0=strength,
+                   law=law if strength is None else None)
 
 
 def contact_with_lambda(R, Delta, w, materials, lambda_) -> Contact:
