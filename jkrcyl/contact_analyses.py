@@ -86,8 +86,7 @@ class Analyses:
         >>> round(pt.P), pt.outcome                              # N/m
         (-1555, 'detachment')
         """
-        pts = equilibria.adherence_of(self.problem, control, confined=confined)
-        return [p.with_units(self.units) for p in pts]
+        return equilibria.adherence_of(self.problem, control, confined=confined, units=self.units)
 
     def two_patch(self, n: Optional[int] = None) -> Tuple[TwoPatchCurve, ...]:
         """The two-patch branches (a second contact at the top of the hole, section 9), traced by continuation.

@@ -6,7 +6,7 @@ from __future__ import annotations
 from typing import List, Optional, Sequence
 
 from ._validate import control as _check_control, count, finite_scalar
-from .analysis import branches as _br, confined as _confined
+from .analysis import branches as _br, confined as _confined, forward as _fw
 from .laws.dugdale import edge_of_strength as _law
 from .model.problem import Problem
 from .model.single_patch import solver
@@ -47,7 +47,8 @@ def stationary_points(M: float, theta: float, control: str = "load", regime: str
     pb = Problem(M, theta, gb, alpha_ratio, _law(s0))
     _check_control(control)
     _br.check_regime(pb, regime)
-    return _br.stationary_points(pb, control, regime, n=None if n is None else count("n", n, low=2))
+    n = None if n is None else count("n", n, low=2)
+    return _fw.stationary_points(pb, Units.normalised(pb), control, regime, n=n)
 
 
 def adherence(M: float, theta: float, control: str = "load", *, gb: float, regimes: Optional[Sequence[str]] = None,
@@ -85,13 +86,15 @@ def adherence(M: float, theta: float, control: str = "load", *, gb: float, regim
 
 
 def adherence_of(pb: Problem, control: str = "load", regimes: Optional[Sequence[str]] = None,
-                 confined: bool = True) -> List[Point]:
+                 confined: bool = True, units: Optional[Units] = None) -> List[Point]:
     """:func:`adherence` of a validated problem (:func:`problem`; any edge law).
 
     Parameters
     ----------
     pb, control, regimes, confined
         The validated problem (jkrcyl.model.problem.Problem) and the rest as :func:`adherence`.
+    units : jkrcyl.Units, optional
+        The scales of the points' physical fields (default: normalised, P = P*; jkrcyl.Contact passes its own).
 
     Returns
     -------
@@ -109,10 +112,11 @@ def adherence_of(pb: Problem, control: str = "load", regimes: Optional[Sequence[
     True
     """
     _check_control(control)
+    un = Units.normalised(pb) if units is None else units
     regs = solver(pb).regimes() if regimes is None else _regimes(regimes)
     out = []
     for regime in regs:
-        pts = _br.stationary_points(pb, control, _br.check_regime(pb, regime))
+        pts = _fw.stationary_points(pb, un, control, _br.check_regime(pb, regime))
         if control != "load":
             out += pts
         elif any(p.kind == "min" for p in pts):

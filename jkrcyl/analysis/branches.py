@@ -17,7 +17,7 @@ from ..model import stability as _stab
 from ..model.problem import Problem
 from ..model.single_patch import solver
 from ..numerics import roots as _roots
-from ..results import Curve, Point
+from ..results import Curve
 from ..units import CONTROLS, CURVE_FIELD
 
 REGIMES = ("sub-critical", "super-critical")
@@ -111,14 +111,7 @@ def values_at(pb: Problem, regime: str, a) -> Curve:
     return curve(pb, regime, a=np.atleast_1d(np.asarray(a, dtype=float)))
 
 
-def stationary_points(pb: Problem, control: str, regime: str, n=None):
-    """Every point of a branch where the held quantity (P*, delta/Delta or delta_work/Delta) is stationary."""
-    out = []
-    for r, sgn in roots(pb, regime, CONTROLS[control].field_slope, n=n):
-        c = values_at(pb, regime, r)
-        out.append(Point(control=control, regime=regime, kind="min" if sgn > 0 else "max", M=pb.M, theta=pb.theta,
-                         a=r, eps=float(c.eps[0]), eps_star=float(c.eps_star[0]), P_star=float(c.P_star[0]),
-                         delta_over_Delta=float(c.delta_over_Delta[0]), h_pi_over_Delta=float(c.h_pi_over_Delta[0]),
-                         feasible=bool(c.feasible[0]), delta_work_over_Delta=float(c.delta_work_over_Delta[0]),
-                         gb=pb.gb, alpha_ratio=pb.alpha_ratio))
-    return out
+def stationary_roots(pb: Problem, control: str, regime: str, n=None):
+    """[(a, 'min' or 'max')] where the held quantity of ``control`` (P*, delta/Delta or delta_work/Delta) is
+    stationary on a branch (the states: jkrcyl.analysis.forward.stationary_points)."""
+    return [(r, "min" if sgn > 0 else "max") for r, sgn in roots(pb, regime, CONTROLS[control].field_slope, n=n)]

@@ -47,8 +47,8 @@ def confined_events(pb: Problem) -> ConfinedEvents:
     _two.require_finite_theta(pb)
     un = Units.normalised(pb, K_edge=1.0)           # normalised: P = P*, delta = delta/Delta
     bs = _tr.branches(pb)
-    grip = [p for r in _br.solver(pb).regimes() for p in _br.stationary_points(pb, "grip", r)
-            if p.kind == "min" and p.feasible]
+    grip = [a for r in _br.solver(pb).regimes() for a, kind in _br.stationary_roots(pb, "grip", r)
+            if kind == "min" and bool(_br.values_at(pb, r, a).feasible[0])]
     common = dict(onsets=_onsets(pb), grip_detachment=bool(grip),
                   two_patch_stable_load=any(b.stable_load.any() for b in bs),
                   two_patch_stable_grip=any(b.stable_grip.any() for b in bs),

@@ -37,7 +37,7 @@ from ..model import two_patch as _two
 from ..model.problem import Problem
 from ..model.single_patch import solver
 from ..notices import BranchLimitWarning
-from ..results import Equilibrium
+from ..results import Equilibrium, Point
 from ..units import CONTROLS, Units
 from . import branches as _br
 from . import tracing as _tr
@@ -79,6 +79,19 @@ def single_patch_states(pb: Problem, un: Units, regime: str, a, control: str, si
         out.append(_state(pb, un, name, control, side, float(a[i]), float(eps[i]), P, d, float(s.h[i]), fl,
                           float(s.energy[i]), extra=extra, total=float(total[i])))
     return out
+
+
+def stationary_points(pb: Problem, un: Units, control: str, regime: str, n=None) -> List[Point]:
+    """Every state of a branch where the held quantity of ``control`` is stationary (folds: 'min' or 'max'),
+    sorted by a (jkrcyl.analysis.branches.stationary_roots; n: a root grid of n points instead of the table)."""
+    found = _br.stationary_roots(pb, control, regime, n)
+    if not found:
+        return []
+    a = [r for r, _ in found]
+    c = _br.values_at(pb, regime, a)
+    return [Point.of(s, kind=kind, M=pb.M, theta=pb.theta, gb=pb.gb, alpha_ratio=pb.alpha_ratio,
+                     eps_star=float(c.eps_star[i]), h_pi_over_Delta=float(c.h_pi_over_Delta[i]))
+            for i, (s, (_, kind)) in enumerate(zip(single_patch_states(pb, un, regime, a, control), found))]
 
 
 def _single(regime: str, side: str = "bottom"):

@@ -68,7 +68,7 @@ class SingleTrack:
     def fold_a(self, j):
         """Contact parameter of the stationary point of the held quantity next to grid index j: the sign change
         of its slope in the table cell on either side of j, refined exactly as branches.roots refines it (the
-        same bracket, so the same double as jkrcyl.analysis.branches.stationary_points)."""
+        same bracket, so the same double as jkrcyl.analysis.branches.stationary_roots)."""
         field = CONTROLS[self.control].field_slope
         name, scaled = CURVE_FIELD[field]
         v = np.asarray(getattr(_br.table(self.pb, self.regime), name)) * (self.pb.scale if scaled else 1.0)

@@ -9,10 +9,11 @@ Every result type, by kind of answer (what returns it):
 
 ==============  =================================================================================================
 state           :class:`Equilibrium` (Contact.solve: one patch, two patches, full contact or separated, with its
-                stability); jkrcyl.State (Contact.state: the fields at given contact parameters, arrays);
-                :class:`TwoPatchState`, :class:`FullContact` (jkrcyl.equilibria, normalised)
-branch          :class:`Curve` (Contact.curve), :class:`TwoPatchCurve` (Contact.two_patch), :class:`Point`
-                (Contact.adherence: a stationary point of a branch)
+                stability) and its subtype :class:`Point` (Contact.adherence, jkrcyl.equilibria.stationary_points:
+                the equilibrium at a fold of a branch, with its kind and outcome); jkrcyl.State (Contact.state:
+                the fields at given contact parameters, arrays); :class:`TwoPatchState`, :class:`FullContact`
+                (jkrcyl.equilibria, normalised, with the solver's own fields)
+branch          :class:`Curve` (Contact.curve), :class:`TwoPatchCurve` (Contact.two_patch)
 path and cycle  :class:`Cycle` with its :class:`Jump` list (Contact.cycle); jkrcyl.kinetics.RateCycle and
                 jkrcyl.kinetics.History (at a rate, crack kinetics); :class:`ConfinedEvents`
 pull-off        :class:`PullOff` (Contact.pull_off); jkrcyl.kinetics.RatePullOff (at a rate, a PullOff);
