@@ -91,3 +91,18 @@ def test_units_need_a_clearance():
     c = jkrcyl.Contact(R=1e-2, Delta=0.0, w=0.05, materials=jkrcyl.Materials.from_young(2.6e9, 0.3, 2.6e9, 0.3))
     with pytest.raises(ValueError, match="units"):
         c.units
+
+
+@pytest.mark.parametrize("E_I", [2.6e9, math.inf])
+def test_adherence_point_is_the_state_solved_at_its_approach(E_I):
+    """Contact.adherence (a fold of P, built in the contact's units) against Contact.solve at the point's approach
+    (a regular root there): the same state -- P, width, stability flags, energy -- to 1e-9."""
+    m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=E_I, nu_I=0.3)
+    c = jkrcyl.Contact(R=1e-2, Delta=1e-6, w=0.05, materials=m)
+    pt, = c.adherence()
+    s, = [x for x in c.solve(delta=pt.delta, branches=[pt.branch]) if abs(x.a - pt.a) <= 1e-6 * pt.a]
+    assert isinstance(pt, jkrcyl.results.Equilibrium) and pt.kind == "min"
+    assert s.P == pytest.approx(pt.P, rel=1e-9) and s.contact_width == pytest.approx(pt.contact_width, rel=1e-9)
+    assert s.energy == pytest.approx(pt.energy, rel=1e-9)
+    assert (s.stable_grip, s.stable_grip_work, s.feasible) == (pt.stable_grip, pt.stable_grip_work, pt.feasible)
+    assert pt.P == pytest.approx(c.units.physical("load", pt.P_star), rel=1e-15)
