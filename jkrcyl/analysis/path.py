@@ -187,7 +187,8 @@ def land(pb: Problem, un: _fw.Units, s, event: str, control: str, value: float, 
             ("bottom" if value >= -un.Delta else "top")
         if first != names and not any(x.side == side for x in cands):
             cands = candidates(names)
-        on = [x for x in cands if x.side == side] or [x for x in cands if x.side == "both"]
+        on = [x for x in cands if x.side == side] or [x for x in cands if x.side == "both" and
+                                                      _zips_round(pb, un, control, target, side)]
         return (min(on, key=lambda x: x.size), "snap-in") if on else (None, "snap-in")
     if event in ("fold", "end") and s.branch.startswith("contactless"):    # the zone-only pin (cohesive)
         if up:
@@ -203,7 +204,19 @@ def land(pb: Problem, un: _fw.Units, s, event: str, control: str, value: float, 
     if event == "fold":
         grow = [x for x in cands if x.size > s.size and x.side in (s.side, "both")]
         return (min(grow, key=lambda x: x.size), "zip") if grow else (None, "zip")
+    if not pb.models("two-patch"):       # the top closes: the nascent top contact needs two patches
+        return None, "top-contact"
     return _land_on_top_contact(pb, s, cands, control, target), "top-contact"
+
+
+def _zips_round(pb, un, control, target, side):
+    """Whether a pin that finds no stable, feasible state on its side at first touch zips round (lands on both):
+    always with two patches modelled; without them only where there is no single-patch state on that side at all
+    (one that overlaps the top of the hole would form a second patch instead)."""
+    if pb.models("two-patch"):
+        return True
+    names = [b for b in _fw.BRANCH_SOLVERS if b not in ("separated", "full-contact", "two-patch")]
+    return not any(x.side == side for x in _fw.solve_normalised(pb, un, control, target, names))
 
 
 def _pull_off_landing(s, cands, control):
@@ -266,8 +279,7 @@ def no_first_contact_reason(pb: Problem, control: str = "load") -> str:
     why = "no stable, feasible state at first contact"
     if not pb.models("two-patch"):      # e.g. the cohesive law: one patch, traced on its sub-critical branch
         return why + (_single_patch_only(pb) if control == "load" else "") + (
-            f" (on the single-patch branches, the ones modelled for the {pb.edge.name} law: two patches and full "
-            "contact are not)")
+            f" (on the branches modelled for the {pb.edge.name} law: two patches are not)")
     if pb.rigid_cradle:      # full contact and two patches need a finite vartheta (model.full_contact)
         why += (" (a rigid cradle, vartheta = inf: a pin that zips round into full contact at first touch is not "
                 "modelled, full contact and two patches needing a finite vartheta)")
@@ -284,9 +296,10 @@ def _single_patch_only(pb: Problem) -> str:
         return (f": the zero-load contact overlaps the top of the hole (h(pi) = {min(h):.6g} Delta < 0), where "
                 "a second patch forms -- " + pb.not_modelled("two-patch", "a contact at the bottom and the top "
                                                                           "(two patches) is"))
-    if not h:
+    if not h:             # reached only where the bond does not hold at P = 0 (a law of finite strength)
         return (": no zero-load contact on one patch (M above the largest M with one: the pin zips round at first "
-                "touch) -- " + pb.not_modelled("full-contact", "the pin bonded all round (full contact) is"))
+                "touch)" + (" -- " + pb.not_modelled("full-contact", "the pin bonded all round (full contact) is")
+                            if not pb.models("full-contact") else ", and the bond does not hold there"))
     return ""
 
 

@@ -26,7 +26,8 @@ differences in eps and c at a fixed approach), never across table points.  Stabi
 jkrcyl.model.stability with the derivatives D_X of jkrcyl.numerics.cohesive_branch (the zone end's energy
 dE/dc = 2 (s0 h(c) - m^2); the contactless pin is a saddle under load, stable under grip where the opening at its
 zone end grows with the zone).  The total potential (elastic + Dugdale interface energy - w over the contact) has
-dE = p d(delta/Delta) along the branches.  Not modelled: two patches and full contact (jkrcyl.laws.dugdale: the law's families),
+dE = p d(delta/Delta) along the branches.  Full contact is the bonded pin of jkrcyl.model.full_contact (where the
+tension stays below s0).  Not modelled: two patches (jkrcyl.laws.dugdale: the law's families),
 super-critical states with a zone all round (past the zone reaching round), top-zone bridges (jkrcyl.numerics.cohesive_zones finds them),
 a round zone that stops reaching round by a jump (a top bridge or an S-shape: :attr:`unmodelled` says so).
 """
