@@ -116,3 +116,25 @@ def test_no_state_near_the_guess_is_a_value_error():
     """A guess where no two-patch state is near (both arcs small, lambda = 20): the Newton fails and says so."""
     with pytest.raises(ValueError, match="^guess: no cohesive two-patch state"):
         ct.solve(0.05, M * THETA, zone_strength(20.0, M * THETA), THETA, GB, 0.0, guess=0.05)
+
+
+@pytest.mark.parametrize("lam, eps, eps_top", [(1.0, 1.2, 0.5), (4.0, 2.0, 0.8), (20.0, 0.7, 1.9)])
+def test_zone_spanning_the_gap_is_jkr_adhesionless_with_a_scaled_clearance(lam, eps, eps_top):
+    """Fixed arcs with the zone all round: the uniform traction -s0 on the circle acts on the arcs as the constant
+    s0 Z_all, Z_all = 2 pi (k0 - 1 + ar) (the Michell mode 0, jkrcyl.model.full_contact), a combination of the
+    clearance and approach cases, so the state is JKR's fixed-arc solution (jkrcyl.numerics.arcs.Linear, its own
+    right-hand sides) with the clearance 1 + s0 Z_all and the approach delta - s0 Z_all: delta from k_bot = 0,
+    k_top and p agree (1e-9)."""
+    s0 = zone_strength(lam, M * THETA)
+    from jkrcyl.numerics import arcs
+    kernel = arcs.Kernel(THETA, GB)
+    n = ct.nodes(eps, eps_top, 0.0)
+    st = ct.state(ct._Law(M * THETA, s0, kernel), eps, eps_top, math.pi, 0.0, n)
+    assert st.zones == "all" and st.k_bot == pytest.approx(0.0, abs=1e-12)
+    z = s0 * 2 * math.pi * (kernel.k0 - 1.0)
+    lin = arcs.Linear(eps, eps_top, THETA, GB, n)
+    q0, q1 = (1 + z) * lin.q0, lin.q1                      # n units (nu / vartheta); clearance scaled
+    d_eff = -q0[2] / q1[2]
+    assert abs(st.delta_over_Delta - (d_eff + z)) < 1e-9 * max(1.0, abs(d_eff))
+    assert abs(st.k_top / THETA - (q0[3] + d_eff * q1[3])) < 1e-9
+    assert abs(st.p / THETA - (q0[0] + d_eff * q1[0])) < 1e-9 * max(1.0, abs(st.p))

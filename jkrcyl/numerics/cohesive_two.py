@@ -18,8 +18,13 @@ k_top = 0 is one scalar equation F(eps, eps_top) = k_top whose zero set is the t
 jkrcyl.model.two_patch with Griffith k = M/pi replaced by the zones and k = 0).
 
 Zones 'all' (one zone spanning the gap): Z_C is the constant Z_all = 2 pi (k0 - 1 + ar) on the circle, a
-combination of the clearance and approach right-hand sides, so the state is JKR's adhesionless two-arc state of
-the clearance (1 + s0 Z_all) Delta at the approach delta - s0 Z_all Delta (tests: the direct solve agrees).
+combination of the clearance and approach right-hand sides, so the fixed-arc state is JKR's adhesionless two-arc
+state of the clearance (1 + s0 Z_all) Delta at the approach delta - s0 Z_all Delta (:func:`state` with c = pi;
+tests: the direct solve agrees).  Its equilibria are the zeros of the adhesionless F (k = 0 at both edges), the
+same for every s0: scans at M = 0.2, identical bodies (eps_top = 0.36, 1.0, 25 arcs each), found none between
+the pole of the fixed-arc system and full contact, where k_top -> 0 -- the zone spanning the gap is the end of
+the two-patch states at full contact, not a family of its own there.  :func:`solve` finds the states with a
+zone at each edge.
 
 Node count: the zone's traction jump sits a zone length d = c - eps off the arc: Chebyshev converges like the
 Bernstein ellipse through it, n ~ NODES_PER_ZONE sqrt(eps/d) per arc (jkrcyl.numerics.cohesive_contact); with the
@@ -220,6 +225,7 @@ def solve(eps_top, m, s0, theta, gb, ar, guess, n=None, tol=1e-11):
             break
         x, r = x + dx, rt
     raise ValueError(f"guess: no cohesive two-patch state (zones at both edges) found near eps = {guess!r}")
+
 
 
 def potential(st):
