@@ -16,9 +16,11 @@ Checked against what the library does not use to make it:
 """
 import math
 
+import numpy as np
 import pytest
 
 import jkrcyl
+from jkrcyl.model.stability import single_patch_flags
 from jkrcyl.numerics import cohesive as co
 from jkrcyl.numerics import cohesive_branch as cb
 
@@ -137,3 +139,50 @@ def test_bonded_at_first_touch_and_zip_under_grip_as_jkr(lam):
     fold, fold_ref = cy.jumps[1].before, cy_ref.jumps[1].before
     assert abs(fold.P - fold_ref.P) / c.load_scale < tol and abs(fold.delta - fold_ref.delta) / DELTA < tol
     assert cy.jumps[1].after.feasible and cy.jumps[1].after.delta == fold.delta
+
+
+# --- the super-critical branch's round-zone tail, into full contact -----------------------------------------
+@pytest.mark.slow
+def test_round_zone_tail_reaches_full_contact_at_the_bond_limit():
+    """lambda = 5, M = 0.5 (identical bodies): the super-critical zone reaches round (h(pi) = h0) and the branch
+    goes on with its zone all round up to eps = pi - 1e-3, where P* is the bond limit pi s0/vartheta - 1 of the
+    bonded pin to 1e-5 (measured 2.5e-7); the tail's states obey the law (gap check), are stable under load there
+    (the rule's flags), and their total potential (Gauss quadrature of the round zone's opening) changes by
+    p d(delta) between neighbouring states (trapezoid, to 1e-3 of the change: the tail's points are far apart)."""
+    c = contact(0.5, 5.0)
+    sv = c.problem.edge.single_patch(c.problem)
+    br = sv._super
+    assert br.tail.size == 40 and br.tail[-1] > math.pi - 1.1e-3
+    a = br.offset + br.t[-40:]                                      # the tail's points on the table
+    s = sv.states(a)
+    flags = single_patch_flags(s, c.problem.work_shift)
+    assert np.all(a - br.offset > br.t_round) and np.all(np.diff(s.eps) > 0) and np.all(s.c == math.pi)
+    assert abs(s.p[-1] / c.problem.scale / bond_limit(c) - 1) < 1e-5
+    assert s.feasible.all() and flags["load"].all()
+    law = cb.Law(c.problem.m, c.problem.edge.s0, c.theta, c.problem.gb, 0.0)
+    from jkrcyl.numerics import cohesive_super as csu
+    states = [csu.round_state(law, e) for e in br.tail[10:14]]
+    for a, b in zip(states[:-1], states[1:]):
+        dE = cb.potential(b) - cb.potential(a)
+        work = 0.5 * (a.p + b.p) * (b.delta_over_Delta - a.delta_over_Delta)
+        assert abs(dE - work) < 1e-3 * abs(dE) + 1e-12
+
+
+@pytest.mark.slow
+def test_walker_follows_the_bond_break_onto_the_tail():
+    """lambda = 5, M = 0.5: under load the pin zips into full contact at the super-critical fold (as JKR's), and
+    pushed past the bond limit its top opens without a jump onto the round-zone tail (no jump recorded there), up
+    to the tail's largest load, where the cycle stops saying where; under grip the loop closes, every jump
+    dissipating >= 0."""
+    c = contact(0.5, 5.0)
+    cy = c.cycle(control="load", P_max=2.0 * c.load_scale, P_min=-0.5 * c.load_scale, n=300)
+    assert [j.kind for j in cy.jumps] == ["snap-in", "zip"] and cy.jumps[1].after.branch == "full-contact"
+    pushed = [i for i in range(len(cy.P)) if cy.branch[i] == "full-contact"]
+    assert pushed and max(cy.P[pushed]) / c.load_scale == pytest.approx(bond_limit(c), rel=1e-9)
+    assert cy.branch[-1] == "super-critical" and "no stable state to jump to" in cy.note
+    assert cy.P[-1] / c.load_scale > bond_limit(c)
+    cg = c.cycle(control="grip", delta_max=0.0, delta_min=-1.5 * DELTA, n=300)
+    assert cg.dissipated is not None and cg.dissipated > 0
+    for j in cg.jumps:
+        lost = 0.5 * (j.before.P + j.after.P) * (j.after.delta - j.before.delta) - (j.after.energy - j.before.energy)
+        assert lost >= -1e-9 * abs(j.before.energy)

@@ -97,7 +97,7 @@ def walk(track: SingleTrack, i: int, target: float):
         return [i], "target", track.state_at(track.a[i])
     nxt = [k for k in (i - 1, i + 1) if 0 <= k < y.size and sgn * (y[k] - y[i]) > 0 and stable[k] and feas[k]]
     if not nxt:
-        return [i], "fold", track.fold(i)
+        return [i], "fold", _fold(track, i, sgn)
     step = nxt[0] - i
     j, passed = i, [i]
     while 0 <= j + step < y.size:
@@ -107,10 +107,18 @@ def walk(track: SingleTrack, i: int, target: float):
         if not feas[k]:
             return passed, "gap", track.state_at(track.a[j])
         if not stable[k] or sgn * (y[k] - y[j]) <= 0:
-            return passed, "fold", track.fold(j)
+            return passed, "fold", _fold(track, j, sgn)
         j = k
         passed.append(j)
     return passed, "end", track.state_at(track.a[j])
+
+
+def _fold(track, j: int, sgn: int):
+    """The fold next to grid index j; the point j itself where the refined stationary point holds less than it
+    (a corner of the branch, as the cohesive round-zone tail's join: no smooth extremum between the points)."""
+    f = track.fold(j)
+    held = getattr(f, "held", None)           # (a track of the fit's own states: no held value to compare)
+    return f if held is None or sgn * (held() - track.y[j]) >= 0 else track.state_at(track.a[j])
 
 
 def walk_two_patch(pb: Problem, un: _fw.Units, s, target: float, control: str):
@@ -150,11 +158,21 @@ def _other(side):
 
 def continuation(pb: Problem, un: _fw.Units, s, control: str):
     """The state where the branch of s continues past its end (the cohesive contact branch's touch end and the
-    zone-only branch, jkrcyl.model.patch.SinglePatch.continues), or None."""
+    zone-only branch, jkrcyl.model.patch.SinglePatch.continues; the round-zone tail and the bonded pin at its bond
+    limit, into each other), or None."""
+    if s.branch == "full-contact":            # the bond breaks: at the top pushing (P > 0), at the bottom pulling
+        sv = solver(pb)
+        end = float(np.asarray(_br.table(pb, "super-critical").a)[-1]) if sv.has("super-critical") else None
+        ok = end is not None and sv.continues("super-critical", end) == ("full-contact", math.inf)
+        return _fw.single_patch_states(pb, un, "super-critical", [end], control,
+                                       "bottom" if s.P_star > 0 else "top")[0] if ok else None
     regime = s.branch.replace("-top", "")
     nxt = solver(pb).continues(regime, s.a) if solver(pb).has(regime) else None
     if nxt is None:
         return None
+    if nxt[0] == "full-contact":              # the round-zone tail closing into the bonded pin, at the held value
+        key = CONTROLS[control][0]
+        return _fw.full_contact_state(pb, un, key, getattr(s, key), control)     # either side: the same pin
     return _fw.single_patch_states(pb, un, nxt[0], [nxt[1]], control, s.side)[0]
 
 
@@ -210,9 +228,9 @@ def land(pb: Problem, un: _fw.Units, s, event: str, control: str, value: float, 
 
 
 def _zips_round(pb, un, control, target, side):
-    """Whether a pin that finds no stable, feasible state on its side at first touch zips round (lands on both):
-    always with two patches modelled; without them only where there is no single-patch state on that side at all
-    (one that overlaps the top of the hole would form a second patch instead)."""
+    """Whether a pin with no stable, feasible state on its side at first touch zips round (lands on both): with
+    two patches modelled always, else where it has no single-patch state there at all (one overlapping the top
+    would form a second patch)."""
     if pb.models("two-patch"):
         return True
     names = [b for b in _fw.BRANCH_SOLVERS if b not in ("separated", "full-contact", "two-patch")]

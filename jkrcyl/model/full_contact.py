@@ -70,3 +70,11 @@ def holds(pb: Problem, fc: FullContact) -> bool:
     """Whether the bond holds under the edge law: the largest tension vartheta (|N1| - N0) (kernel scale, at phi = 0
     or pi) is at most the law's bond strength (module docstring; always for JKR)."""
     return pb.theta * (abs(fc.N1) - fc.N0) <= pb.edge.bond_strength()
+
+
+def bond_limit(pb: Problem, sign: float) -> float:
+    """P* (of the sign of ``sign``) where the bond stops holding, vartheta (|N1| - N0) = bond strength with
+    N1 = P*/pi: pi (strength/vartheta + N0) in magnitude (inf for JKR); nan where it never holds."""
+    N0, _ = law(pb)
+    size = math.pi * (pb.edge.bond_strength() / pb.theta + N0)
+    return math.copysign(size, sign) if size >= 0 else math.nan
