@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..model import full_contact as _full
 from ..model.problem import Problem
 from ..results import Cycle, Jump
 from ..units import CONTROLS, Units
@@ -80,6 +81,10 @@ class _Run:
         pb, un, ctl = self.pb, self.un, self.control
         if s.branch == "full-contact":
             e = _fw.full_contact_state(pb, un, CONTROLS[ctl].normalised, un.normalise(ctl, target), ctl)
+            if e is not None and not e.feasible:      # the bond breaks first (a law of finite strength)
+                e = _fw.full_contact_state(pb, un, "P_star", _full.bond_limit(pb, e.P_star), ctl)
+                self.add(e, leg)
+                return e, "end"
             self.add(e, leg)
             return e, "target"
         if s.branch == "separated":

@@ -8,7 +8,8 @@
   phi -> phi + pi: P -> -P, delta -> -2 Delta - delta (either approach);
 * ``two-patch``: contact at the bottom and the top at once (jkrcyl.analysis.tracing), present when a single patch
   can close the gap at phi = pi (the confined regime, :func:`confined`);
-* ``full-contact``: the pin bonded all round (no edge, always stable), confined regime only;
+* ``full-contact``: the pin bonded all round (no edge; stable where the bond holds, jkrcyl.model.full_contact
+  .holds), confined regime only (any finite vartheta for a law without two patches, the cohesive one);
 * ``separated``: the free pin (no contact, P = 0), for a given approach -2 Delta < delta < 0 only (within
   -2 Delta + h0 < delta < -h0 for a cohesive law of range h0);
 * ``contactless``, ``contactless-top``: cohesive law only -- the pin without contact held by its zone at the
@@ -16,8 +17,9 @@
   opening grows with it.
 
 With a cohesive (Maugis-Dugdale) edge law the single-patch branches (sub- and super-critical, contactless) are
-the solver's (jkrcyl.model.cohesive) and two patches and full contact are not modelled: those branches return no state in a search of every branch, and
-asking for them by name raises ValueError.
+the solver's (jkrcyl.model.cohesive), full contact is JKR's bonded pin where the tension stays below sigma0, and
+two patches are not modelled: that branch returns no state in a search of every branch, and asking for it by
+name raises ValueError.
 
 Stability is that of the control (jkrcyl.units.CONTROLS): fixed load for P, fixed paper's approach for
 delta ('grip'), fixed work-conjugate approach for delta_work ('grip-work').  Signs as in section 6: P and delta
@@ -154,13 +156,16 @@ def full_contact_state(pb: Problem, un: Units, key: str, target: float, control:
               else _full.state(pb, **{key: target}))
     except ValueError:
         return None
+    holds = _full.holds(pb, fc)
     return _state(pb, un, "full-contact", control, "both", math.inf, math.pi, fc.P_star, fc.delta_over_Delta, 0.0,
-                  (True, True, True, True), pb.scale * fc.energy, a_top=math.inf, K=0.0,
+                  (holds,) * 4, pb.scale * fc.energy, a_top=math.inf, K=0.0,
                   extra={"tension_everywhere": fc.tension_everywhere})
 
 
 def _full_contact_solver(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
-    if not confined(pb):
+    # a law with two patches reaches full contact through them (the confined regime); one without (the cohesive
+    # law) from its contact branches' ends and at first touch: the bonded pin at any finite vartheta
+    if not (confined(pb) if pb.models("two-patch") else pb.models("full-contact") and not pb.rigid_cradle):
         return []
     s = full_contact_state(pb, un, key, target, control)
     return [] if s is None else [s]

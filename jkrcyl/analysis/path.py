@@ -96,7 +96,7 @@ def walk(track: SingleTrack, i: int, target: float):
         return [i], "target", track.state_at(track.a[i])
     nxt = [k for k in (i - 1, i + 1) if 0 <= k < y.size and sgn * (y[k] - y[i]) > 0 and stable[k] and feas[k]]
     if not nxt:
-        return [i], "fold", track.fold(i)
+        return [i], "fold", _fold(track, i, sgn)
     step = nxt[0] - i
     j, passed = i, [i]
     while 0 <= j + step < y.size:
@@ -106,10 +106,18 @@ def walk(track: SingleTrack, i: int, target: float):
         if not feas[k]:
             return passed, "gap", track.state_at(track.a[j])
         if not stable[k] or sgn * (y[k] - y[j]) <= 0:
-            return passed, "fold", track.fold(j)
+            return passed, "fold", _fold(track, j, sgn)
         j = k
         passed.append(j)
     return passed, "end", track.state_at(track.a[j])
+
+
+def _fold(track, j: int, sgn: int):
+    """The fold next to grid index j; the point j itself where the refined stationary point holds less than it
+    (a corner of the branch, as the cohesive round-zone tail's join: no smooth extremum between the points)."""
+    f = track.fold(j)
+    held = getattr(f, "held", None)           # (a track of the fit's own states: no held value to compare)
+    return f if held is None or sgn * (held() - track.y[j]) >= 0 else track.state_at(track.a[j])
 
 
 def walk_two_patch(pb: Problem, un: Units, s, target: float, control: str):
@@ -149,11 +157,21 @@ def _other(side):
 
 def continuation(pb: Problem, un: Units, s, control: str):
     """The state where the branch of s continues past its end (the cohesive contact branch's touch end and the
-    zone-only branch, jkrcyl.model.patch.SinglePatch.continues), or None."""
+    zone-only branch, jkrcyl.model.patch.SinglePatch.continues; the round-zone tail and the bonded pin at its bond
+    limit, into each other), or None."""
+    if s.branch == "full-contact":            # the bond breaks: at the top pushing (P > 0), at the bottom pulling
+        sv = solver(pb)
+        end = float(np.asarray(_br.table(pb, "super-critical").a)[-1]) if sv.has("super-critical") else None
+        ok = end is not None and sv.continues("super-critical", end) == ("full-contact", math.inf)
+        return _fw.single_patch_states(pb, un, "super-critical", [end], control,
+                                       "bottom" if s.P_star > 0 else "top")[0] if ok else None
     regime = s.branch.replace("-top", "")
     nxt = solver(pb).continues(regime, s.a) if solver(pb).has(regime) else None
     if nxt is None:
         return None
+    if nxt[0] == "full-contact":              # the round-zone tail closing into the bonded pin, at the held value
+        key = CONTROLS[control].normalised
+        return _fw.full_contact_state(pb, un, key, getattr(s, key), control)     # either side: the same pin
     return _fw.single_patch_states(pb, un, nxt[0], [nxt[1]], control, s.side)[0]
 
 
@@ -186,7 +204,8 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
             ("bottom" if value >= -un.Delta else "top")
         if first != names and not any(x.side == side for x in cands):
             cands = candidates(names)
-        on = [x for x in cands if x.side == side] or [x for x in cands if x.side == "both"]
+        on = [x for x in cands if x.side == side] or [x for x in cands if x.side == "both" and
+                                                      _zips_round(pb, un, control, target, side)]
         return (min(on, key=lambda x: x.size), "snap-in") if on else (None, "snap-in")
     if event in ("fold", "end") and s.branch.startswith("contactless"):    # the zone-only pin (cohesive)
         if up:
@@ -202,7 +221,19 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
     if event == "fold":
         grow = [x for x in cands if x.size > s.size and x.side in (s.side, "both")]
         return (min(grow, key=lambda x: x.size), "zip") if grow else (None, "zip")
+    if not pb.models("two-patch"):       # the top closes: the nascent top contact needs two patches
+        return None, "top-contact"
     return _land_on_top_contact(pb, s, cands, control, target), "top-contact"
+
+
+def _zips_round(pb, un, control, target, side):
+    """Whether a pin with no stable, feasible state on its side at first touch zips round (lands on both): with
+    two patches modelled always, else where it has no single-patch state there at all (one overlapping the top
+    would form a second patch)."""
+    if pb.models("two-patch"):
+        return True
+    names = [b for b in _fw.BRANCH_SOLVERS if b not in ("separated", "full-contact", "two-patch")]
+    return not any(x.side == side for x in _fw.solve_normalised(pb, un, control, target, names))
 
 
 def _pull_off_landing(s, cands, control):
@@ -265,8 +296,7 @@ def no_first_contact_reason(pb: Problem, control: str = "load") -> str:
     why = "no stable, feasible state at first contact"
     if not pb.models("two-patch"):      # e.g. the cohesive law: one patch, traced on its sub-critical branch
         return why + (_single_patch_only(pb) if control == "load" else "") + (
-            f" (on the single-patch branches, the ones modelled for the {pb.edge.name} law: two patches and full "
-            "contact are not)")
+            f" (on the branches modelled for the {pb.edge.name} law: two patches are not)")
     if pb.rigid_cradle:      # full contact and two patches need a finite vartheta (model.full_contact)
         why += (" (a rigid cradle, vartheta = inf: a pin that zips round into full contact at first touch is not "
                 "modelled, full contact and two patches needing a finite vartheta)")
@@ -283,9 +313,10 @@ def _single_patch_only(pb: Problem) -> str:
         return (f": the zero-load contact overlaps the top of the hole (h(pi) = {min(h):.6g} Delta < 0), where "
                 "a second patch forms -- " + pb.not_modelled("two-patch", "a contact at the bottom and the top "
                                                                           "(two patches) is"))
-    if not h:
+    if not h:             # reached only where the bond does not hold at P = 0 (a law of finite strength)
         return (": no zero-load contact on one patch (M above the largest M with one: the pin zips round at first "
-                "touch) -- " + pb.not_modelled("full-contact", "the pin bonded all round (full contact) is"))
+                "touch)" + (" -- " + pb.not_modelled("full-contact", "the pin bonded all round (full contact) is")
+                            if not pb.models("full-contact") else ", and the bond does not hold there"))
     return ""
 
 

@@ -26,7 +26,8 @@ differences in eps and c at a fixed approach), never across table points.  Stabi
 jkrcyl.model.stability with the derivatives D_X of jkrcyl.numerics.cohesive_branch (the zone end's energy
 dE/dc = 2 (s0 h(c) - m^2); the contactless pin is a saddle under load, stable under grip where the opening at its
 zone end grows with the zone).  The total potential (elastic + Dugdale interface energy - w over the contact) has
-dE = p d(delta/Delta) along the branches.  Not modelled: two patches and full contact (jkrcyl.laws.dugdale: the law's families),
+dE = p d(delta/Delta) along the branches.  Full contact is the bonded pin of jkrcyl.model.full_contact (where the
+tension stays below s0).  Not modelled: two patches (jkrcyl.laws.dugdale: the law's families),
 super-critical states with a zone all round (past the zone reaching round), top-zone bridges (jkrcyl.numerics.cohesive_zones finds them),
 a round zone that stops reaching round by a jump (a top bridge or an S-shape: :attr:`unmodelled` says so).
 """
@@ -269,8 +270,7 @@ class Cohesive(SinglePatch):
             return br.reason
         eps, c, _ = self._where(br.a_end)
         if br.kind == "zone" and c >= math.pi - 2 * _csu.ROUND_MARGIN:
-            return (f"the zone reaches round the hole at eps = {eps:.6g} rad (h(pi) = h0): the super-critical "
-                    "states beyond, with a zone all round, are not traced")
+            return _csu.round_end(eps, br.tail)
         if eps < _csu.EPS_TOP - 1e-2 and abs(self.value("p", br.a_end)) > 0.5 * self.law.p_cap:
             return f"traced up to |p| = P_CAP m^(4/3) = {self.law.p_cap:.6g}"
         if a is None:              # the table's extent (forward searches): the branch's end, as the sub-critical one
@@ -279,7 +279,9 @@ class Cohesive(SinglePatch):
 
     def continues(self, regime, a):
         """The contact branch's touch end (a = 2) continues as the contactless one from the touch (a = 1) and
-        back."""
+        back; the super-critical round-zone tail's end next to full contact as the bonded pin (a = inf)."""
+        if regime == "super-critical" and self.has(regime) and _csu.reaches_full(self._super.tail, a, self._super):
+            return "full-contact", math.inf
         if self._contactless is None:
             return None
         if regime == "sub-critical" and a <= 2.0 + 1e-9 * max(1.0, self._sub.t[-1]):
