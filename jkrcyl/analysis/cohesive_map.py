@@ -9,7 +9,9 @@ local process pool of ``workers`` (a distributed scheduler takes the same graph 
 Outcome codes (:data:`OUTCOMES`): the pull-off at a fold of the contact branch (JKR-like), at its touch end (the
 contact vanishes: small lambda), none because the range reaches round (h0 > 2 Delta less the uniform pull: no
 adherence force), none because the branch has no zero-load contact (the zone's pull exceeds the clearance's
-push at every contact size: the pin is drawn into contact on its own).
+push at every contact size: the pin is drawn into contact on its own), none from first contact because the pin
+floats in a range reaching round and touches onto round-zone contacts that push, whose zone jumps only when pushed
+further (an S-shaped branch or a top bridge: Contact.pull_off says the same).
 """
 from __future__ import annotations
 
@@ -24,7 +26,8 @@ from ..numerics import cohesive_scales as _scales
 from ..units import Units
 from . import pull_off as _po
 
-OUTCOMES = ("fold", "touch", "no adherence force", "no zero-load contact", "not modelled (jump of a round zone)")
+OUTCOMES = ("fold", "touch", "no adherence force", "no zero-load contact",
+            "no adherence force from first contact (a round zone that jumps when pushed)")
 MAP_STEPS = (0.3, 1.2)      # continuation steps of a map point (longer than the default: the same pull-off to 1e-10)
 
 
@@ -49,7 +52,7 @@ def _point(lam, M, theta, gb, ar):
     r = _cpo.pull_off_load(pb.m, s0, theta, gb, ar, steps=MAP_STEPS, xtol=1e-6, zero_load=False)
     if r.p is not None:
         return r.p / pb.scale, OUTCOMES.index(r.kind)
-    kind = 4 if r.reason.startswith("not modelled") else 2 if "no adherence" in r.reason else 3
+    kind = 4 if "from first contact" in r.reason else 2 if "no adherence" in r.reason else 3
     return math.nan, kind
 
 

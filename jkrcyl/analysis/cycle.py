@@ -24,6 +24,7 @@ from ..results import Cycle, Jump
 from ..units import CONTROLS, Units
 from . import forward as _fw
 from . import path as _path
+from . import reasons as _reasons
 
 MAX_REPEATS = 3          # cycles driven until the loop closes (the state at the top of the cycle repeats)
 MAX_JUMPS = 20           # jumps per leg at most
@@ -124,10 +125,11 @@ def cycle(pb: Problem, un: Units, control: str, hi: float, lo: float, n: int, de
     run = _Run(pb, un, control)
     sep, to, kind = _path.first_contact(pb, un, control)
     run.add(sep, 0)
-    if to is None or _path.unmodelled(pb):
-        why = _path.unmodelled(pb) or _path.no_first_contact_reason(pb, control)
+    if to is None or _reasons.unmodelled(pb):
+        why = _reasons.unmodelled(pb) or _reasons.no_first_contact_reason(pb, control)
         return _finish(run, n, None, why, delta_work_of, (lo, hi))
-    run.jumps.append(Jump(kind, 0, sep, to))
+    if kind != "continue":                   # a floating pin goes on onto its contact without a jump
+        run.jumps.append(Jump(kind, 0, sep, to))
     run.add(to, 0)
     s, note = run.leg(to, hi, 0)
     tops, closed, leg = [s], None, 1

@@ -158,7 +158,8 @@ def _other(side):
 def continuation(pb: Problem, un: Units, s, control: str):
     """The state where the branch of s continues past its end (the cohesive contact branch's touch end and the
     zone-only branch, jkrcyl.model.patch.SinglePatch.continues; the round-zone tail and the bonded pin at its bond
-    limit, into each other), or None."""
+    limit, into each other; a touch end onto which a floating pin went on: that pin, at the top of its range,
+    mirrored for the top side), or None."""
     if s.branch == "full-contact":            # the bond breaks: at the top pushing (P > 0), at the bottom pulling
         sv = solver(pb)
         end = float(np.asarray(_br.table(pb, "super-critical").a)[-1]) if sv.has("super-critical") else None
@@ -166,6 +167,9 @@ def continuation(pb: Problem, un: Units, s, control: str):
         return _fw.single_patch_states(pb, un, "super-critical", [end], control,
                                        "bottom" if s.P_star > 0 else "top")[0] if ok else None
     regime = s.branch.replace("-top", "")
+    if regime == "sub-critical" and s.a == solver(pb).floats_onto():     # back to the touch: the pin floats
+        return _fw.separated_state(pb, un, solver(pb).free_range()[1] * (-1 if s.side == "top" else 1)
+                                   - (2 if s.side == "top" else 0), control)
     nxt = solver(pb).continues(regime, s.a) if solver(pb).has(regime) else None
     if nxt is None:
         return None
@@ -202,6 +206,9 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
     if s.branch == "separated":                          # free pin touching a side: snap-in there
         side = ("bottom" if up else "top") if control == "load" else \
             ("bottom" if value >= -un.Delta else "top")
+        floated = _floats_onto(pb, un, control, side)     # or a floating pin going on onto its contact
+        if floated is not None:
+            return floated, "continue"
         if first != names and not any(x.side == side for x in cands):
             cands = candidates(names)
         on = [x for x in cands if x.side == side] or [x for x in cands if x.side == "both" and
@@ -213,10 +220,19 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
             return (min(into, key=lambda x: x.size), "snap-in") if into else (None, "snap-in")
         off = [x for x in cands if x.branch == "separated" or x.side == _other(s.side)]
         return (min(off, key=lambda x: x.size), "pull-off") if off else (None, "pull-off")
+    # a fold of a cohesive S-shaped branch (its round zone and its zone-end families): met pushing, or where the
+    # pull-off rule finds nothing, the path jumps to the state on its side nearest in size
+    nearest = lambda xs: min(xs, key=lambda x: abs(x.size - s.size)) if xs else None
+    if event == "fold" and s.branch.startswith("sub-critical") and up:
+        got = nearest([x for x in cands if x.side == s.side])
+        if got is not None:
+            return got, "snap-in"
     if event == "fold" and s.branch.startswith("sub-critical"):
         got = _pull_off_landing(s, cands, control)
         if got is None and first != names:
             got = _pull_off_landing(s, candidates(names), control)
+        if got is None:
+            got = nearest([x for x in candidates(names) if x.side == s.side])
         return got, "pull-off"
     if event == "fold":
         grow = [x for x in cands if x.size > s.size and x.side in (s.side, "both")]
@@ -286,38 +302,17 @@ def first_contact(pb: Problem, un: Units, control: str):
     return sep, to, kind
 
 
-def unmodelled(pb: Problem) -> str:
-    """Why no path can be followed on this problem's branch ('' when it can; the single-patch solver knows)."""
-    return solver(pb).unmodelled
-
-
-def no_first_contact_reason(pb: Problem, control: str = "load") -> str:
-    """Why first contact snaps into no state: the reason pull_off and cycle print."""
-    why = "no stable, feasible state at first contact"
-    if not pb.models("two-patch"):      # e.g. the cohesive law: one patch, traced on its sub-critical branch
-        return why + (_single_patch_only(pb) if control == "load" else "") + (
-            f" (on the branches modelled for the {pb.edge.name} law: two patches are not)")
-    if pb.rigid_cradle:      # full contact and two patches need a finite vartheta (model.full_contact)
-        why += (" (a rigid cradle, vartheta = inf: a pin that zips round into full contact at first touch is not "
-                "modelled, full contact and two patches needing a finite vartheta)")
-    return why
-
-
-def _single_patch_only(pb: Problem) -> str:
-    """What a law with one patch only misses at first contact under load: its zero-load states overlap the top
-    (h(pi) < 0, where JKR's pin forms a second patch), or it has none (M above the largest M with one, where
-    JKR's pin zips round into full contact); '' otherwise -- each with the law's own message (Edge.require)."""
-    sv = solver(pb)
-    h = [sv.value("h", a) for regime in sv.regimes() if regime != _br.ZONE_ONLY for a, _ in _br.roots(pb, regime, "p")]
-    if any(x < 0 for x in h):
-        return (f": the zero-load contact overlaps the top of the hole (h(pi) = {min(h):.6g} Delta < 0), where "
-                "a second patch forms -- " + pb.not_modelled("two-patch", "a contact at the bottom and the top "
-                                                                          "(two patches) is"))
-    if not h:             # reached only where the bond does not hold at P = 0 (a law of finite strength)
-        return (": no zero-load contact on one patch (M above the largest M with one: the pin zips round at first "
-                "touch)" + (" -- " + pb.not_modelled("full-contact", "the pin bonded all round (full contact) is")
-                            if not pb.models("full-contact") else ", and the bond does not hold there"))
-    return ""
+def _floats_onto(pb: Problem, un: Units, control: str, side: str):
+    """The state a pin floating in a cohesive range that reaches round goes on onto where it touches the side,
+    no jump (jkrcyl.model.patch.SinglePatch.floats_onto: the touch end of a branch whose zone is round there),
+    where it is stable and feasible and, under load, does not pull (|P| grows from 0 into the side there: else
+    the pin is drawn in); else None."""
+    a = solver(pb).floats_onto()
+    if a is None:
+        return None
+    s = _fw.single_patch_states(pb, un, "sub-critical", [a], control, side)[0]
+    pushes = s.P >= 0 if side == "bottom" else s.P <= 0
+    return s if s.stable and s.feasible and (control != "load" or pushes) else None
 
 
 def pull_path(pb: Problem, un: Units, control: str):
@@ -326,7 +321,8 @@ def pull_path(pb: Problem, un: Units, control: str):
     not a bottom single patch), else the walk's event down the start's branch to -inf (fold, gap, end) and the
     state where it ends; 'let-go' where a branch ends on an unstable continuation under a pull (the cohesive
     contact at its touch end: the pin lets go there).  pull_off, confined_events and the confined figure all read
-    this one path."""
+    this one path.  'float': the pin floating in a cohesive range that reaches round went on onto the contact
+    branch at first touch and the walk brought it back to that touch (no pull: it floats again)."""
     _, start, _ = first_contact(pb, un, control)
     if start is None:
         return None, "none", None
@@ -336,6 +332,8 @@ def pull_path(pb: Problem, un: Units, control: str):
         return start, "elsewhere", start
     track = SingleTrack(pb, un, start.branch, "bottom", control)
     _, event, state = walk(track, track.index(start.a), -math.inf)
+    if event in ("fold", "end") and state.a <= track.a[0] and solver(pb).floats_onto() == track.a[0]:
+        return start, "float", state       # back at the touch end: the contact vanishes, the pin floats again
     while event == "end":                  # a branch going on as another (cohesive: contact -> zone-only pin)
         nxt = continuation(pb, un, state, control)
         if nxt is None:

@@ -17,6 +17,7 @@ from ..model.single_patch import solver
 from ..results import PullOff
 from ..units import Units
 from . import path as _path
+from . import reasons as _reasons
 
 
 def grows_under_pull(pb: Problem, a: float, control: str) -> bool:
@@ -35,13 +36,20 @@ def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
         return PullOff(control, None, None, None, None, solver(pb).no_adherence_reason)
     start, event, s = _path.pull_path(pb, un, control)
     if event == "none":
-        return PullOff(control, None, None, None, None, _path.no_first_contact_reason(pb, control) + ": no path to follow")
+        return PullOff(control, None, None, None, None, _reasons.no_first_contact_reason(pb, control) + ": no path to follow")
     if event == "bonded":
         return PullOff(control, None, None, None, start,
                        "no stable zero-load contact (M above the largest M with one): at first touch the contact "
                        "zips round into full contact, and a pin bonded all round does not detach")
     if event == "elsewhere":
         return PullOff(control, None, None, None, start, f"first contact lands on the {start.branch} branch")
+    if event == "float":
+        held = {"load": "load", "grip": "approach", "grip-work": "work-conjugate approach"}[control]
+        return PullOff(control, None, None, None, start,
+                       "no adherence force from first contact: the pin floats in the cohesive range, which reaches "
+                       "round the hole (P = 0), and touches the bottom onto contacts with a round zone, which push "
+                       f"(P >= 0); lowering the {held} the contact shrinks back to the touch and the pin floats "
+                       "again (a contact that pulls is reached by pushing further: Contact.cycle)")
     if event == "let-go":
         return _detached(control, s)
     if event == "gap":

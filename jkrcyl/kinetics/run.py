@@ -12,6 +12,7 @@ import math
 import numpy as np
 
 from ..analysis import path as _path
+from ..analysis import reasons as _reasons
 from ..laws.kinetic import kinetics_of
 from . import integrate as _int
 from .arc import DirectArc, TabulatedArc
@@ -35,7 +36,7 @@ def rest_start(contact, control: str, held=None):
     pb, un = contact.problem, contact.units
     _, to, _ = _path.first_contact(pb, un, "load")
     if to is None:
-        return None, _path.no_first_contact_reason(pb)
+        return None, _reasons.no_first_contact_reason(pb)
     if to.branch != "sub-critical" or to.side != "bottom":
         return None, (f"the zero-load contact is on the {to.branch} branch (full contact, two patches or a "
                       "super-critical contact: crack kinetics are modelled for the sub-critical bottom patch)")

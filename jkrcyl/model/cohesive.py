@@ -26,10 +26,12 @@ differences in eps and c at a fixed approach), never across table points.  Stabi
 jkrcyl.model.stability with the derivatives D_X of jkrcyl.numerics.cohesive_branch (the zone end's energy
 dE/dc = 2 (s0 h(c) - m^2); the contactless pin is a saddle under load, stable under grip where the opening at its
 zone end grows with the zone).  The total potential (elastic + Dugdale interface energy - w over the contact) has
-dE = p d(delta/Delta) along the branches.  Full contact is the bonded pin of jkrcyl.model.full_contact (where the
-tension stays below s0).  Not modelled: two patches (jkrcyl.laws.dugdale: the law's families),
-super-critical states with a zone all round (past the zone reaching round), top-zone bridges (jkrcyl.numerics.cohesive_zones finds them),
-a round zone that stops reaching round by a jump (a top bridge or an S-shape: :attr:`unmodelled` says so).
+dE = p d(delta/Delta) along the branches.  A zone reaching round at the touch end that stops reaching round by
+a jump of its first zone-end root (jkrcyl.numerics.cohesive_branch.top_opens) is an S-shaped branch -- the round
+zone, then the root near the top back in eps to a fold, then the first root -- traced whole
+(jkrcyl.numerics.cohesive_round), or a top bridge.  Full contact is the bonded pin of jkrcyl.model.full_contact
+(where the tension stays below s0).  Not modelled: two patches (jkrcyl.laws.dugdale: the law's families),
+top-zone bridges (jkrcyl.numerics.cohesive_zones finds them; :attr:`unmodelled` says so).
 """
 from __future__ import annotations
 
@@ -69,14 +71,17 @@ class Cohesive(SinglePatch):
     @functools.cached_property
     def _sub(self):
         """The sub-critical branch (jkrcyl.numerics.cohesive_branch.trace), a = 2 + t."""
-        return _ct.Traced(self.law, _cb.trace(self.law), _ct.SUB_OFFSET)
+        got = _cb.trace(self.law)                  # (x, kind, reason[, n_round]: the S-branch's round prefix)
+        return _ct.Traced(self.law, got[:3], _ct.SUB_OFFSET, n_round=got[3] if len(got) > 3 else 0)
 
     @functools.cached_property
     def _super(self):
         """The super-critical branch (jkrcyl.numerics.cohesive_super.trace), a = SUPER_OFFSET + t; None where
         there is none or it has no state below the load cap."""
         got = _csu.trace(self.law)
-        return None if got is None or len(got[0]) < 2 else _ct.Traced(self.law, got, _ct.SUPER_OFFSET)
+        if got is None or len(got[0]) < 2:
+            return None
+        return _ct.Traced(self.law, got[:3], _ct.SUPER_OFFSET, tail=got[3] if len(got) > 3 else ())   # [3]: its tail
 
     def _branch(self, regime):
         if regime == "super-critical":
@@ -250,32 +255,11 @@ class Cohesive(SinglePatch):
             return ""
         br = self._branch(regime)
         if regime == "super-critical":
-            return self._super_short(br, a)
+            return _ct.super_short(self, br, a)
         if br.kind == "all" or (a is not None and a < br.offset + (br.a_end - br.offset) * (1 - 1e-9)):
             return ""
         p_end = self.value("p", self.a_end)
         return f"traced up to P_CAP m^(4/3) = {self.law.p_cap:.6g}" if p_end > 0.5 * self.law.p_cap else ""
-
-    def _super_short(self, br, a):
-        """Why the super-critical table ends at a (None: its last point): both of its ends are short of the
-        branch -- the first point lies next to the pole a_crit (|p| unbounded past it), the last one where the
-        trace failed, the zone reaches round, the load cap or eps = pi - 0.05 (the last only to a walker at that point:
-        for the table's extent, a = None, eps = pi - 0.05 ends the branch, as it ends the sub-critical one)."""
-        if a is not None and a <= br.offset + 1e-9 * max(1.0, br.t[-1]):
-            return (f"the super-critical branch is traced from eps = {self._where(br.offset)[0]:.6g} rad, next to "
-                    "the receding limit a_crit, where |P| grows without bound")
-        if a is not None and a < br.offset + (br.a_end - br.offset) * (1 - 1e-9):
-            return ""
-        if br.reason:
-            return br.reason
-        eps, c, _ = self._where(br.a_end)
-        if br.kind == "zone" and c >= math.pi - 2 * _csu.ROUND_MARGIN:
-            return _csu.round_end(eps, br.tail)
-        if eps < _csu.EPS_TOP - 1e-2 and abs(self.value("p", br.a_end)) > 0.5 * self.law.p_cap:
-            return f"traced up to |p| = P_CAP m^(4/3) = {self.law.p_cap:.6g}"
-        if a is None:              # the table's extent (forward searches): the branch's end, as the sub-critical one
-            return ""
-        return f"traced up to eps = {eps:.6g} rad (pi - 0.05): the states nearer full contact are not traced"
 
     def continues(self, regime, a):
         """The contact branch's touch end (a = 2) continues as the contactless one from the touch (a = 1) and
@@ -301,9 +285,20 @@ class Cohesive(SinglePatch):
         return bool(deps * pt.ddn_dt < 0) if control == "load" else bool(deps * pt.dp_dt > 0)
 
     def free_range(self):
-        """The free pin feels no traction while every gap exceeds h0: -2 + h0 < delta/Delta < -h0."""
-        h0 = self.law.h0
-        return -2.0 + h0, -h0
+        """The free pin feels no traction while every gap exceeds h0: -2 + h0 < delta/Delta < -h0; where the
+        contact branch starts with its zone round (no zone-only pin touches) and the pin floats in the range all
+        round (P = 0, :meth:`floating`) up to a larger approach, that range stands for it (both hold -1)."""
+        h0, fl = self.law.h0, self.floating()
+        return fl if fl is not None and fl[1] > -h0 and self._contactless is None else (-2.0 + h0, -h0)
+
+    def floats_onto(self):
+        """The pin floating in a range that reaches round (:meth:`free_range`) touches the bottom at the top of
+        that range where the sub-critical branch starts with its zone round (zones 'all' at its touch end, the
+        approach there that top to 1e-4): it goes on onto a = 2 without a jump.  None otherwise."""
+        fl = self.floating()
+        if fl is None or self.free_range() != fl or self._sub.kind == "zone" and self._sub.n_round == 0:
+            return None
+        return 2.0 if abs(self.value("dn", 2.0) - fl[1]) < 1e-4 else None
 
     def _super_pulls(self):
         """Branch parameters of the super-critical table's states that pull (p < 0, without their feasibility)."""
@@ -334,13 +329,13 @@ class Cohesive(SinglePatch):
     @functools.cached_property
     def unmodelled(self):
         """Why the analyses cannot follow the branch ('' when they can): the trace stopped before the branch's end
-        (jkrcyl.numerics.cohesive_follow says where and why), or its zone stops reaching round by a jump
-        (jkrcyl.numerics.cohesive_branch.top_opens: a top bridge or an S-shaped branch, not traced)."""
+        (jkrcyl.numerics.cohesive_follow says where and why), or its zone stops reaching round by a jump to a top
+        bridge (jkrcyl.numerics.cohesive_branch.top_opens; an S-shaped branch is traced: kind 'zone')."""
         if self._sub.reason:                 # the trace stopped before the branch's end: no silent answer
             return self._sub.reason
-        if self._sub.kind != "all" or self.law.h0 >= 2.0:      # h0 >= 2 Delta: no state pulls, nothing to follow
+        if self._sub.kind != "all":          # a zone end all along, or an S-shaped branch traced whole
             return ""
-        opens = _cb.top_opens(self.law)
+        opens = _cb.opens_of(self.law)       # None for h0 >= 2 Delta: no state pulls, nothing to follow
         return "" if opens is None else _cpo.jump_reason(opens)
 
     def floating(self):

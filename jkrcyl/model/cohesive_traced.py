@@ -14,6 +14,7 @@ import math
 import numpy as np
 
 from ..numerics import cohesive_branch as _cb
+from ..numerics import cohesive_super as _csu
 
 SUB_OFFSET = 2.0
 JOIN = 1e-6              # the parameter step from a trace's last zone point to its round-zone tail (the zone
@@ -23,17 +24,18 @@ SUPER_OFFSET = 1000.0     # above any sub-critical parameter: that trace's arcle
 
 class Traced:
     """A traced branch: ``x`` (n, 2), ``t`` (n,), ``kind`` ('zone' or 'all'), ``reason`` ('' when the trace ended
-    where the branch leaves its domain) and ``offset`` (a = offset + t).  A 'zone' trace whose zone reached round
-    can carry a tail (the optional fourth item: the eps of its states with the zone all round, beyond the last
-    point, from its join): t goes on there as JOIN + log(eps/eps_join) and ``tail`` holds those eps (empty
-    without)."""
+    where the branch leaves its domain) and ``offset`` (a = offset + t).  A sub-critical trace can start with a
+    round prefix (``n_round`` points with the zone all round: the S-shaped branch, jkrcyl.numerics.cohesive_round).
+    A super-critical 'zone' trace whose zone reached round can carry a tail (``tail``: the eps of its states with
+    the zone all round, beyond the last point, from its join): t goes on there as JOIN + log(eps/eps_join)."""
 
-    def __init__(self, law, traced, offset):
-        x, kind, reason = traced[:3]
+    def __init__(self, law, traced, offset, n_round=0, tail=()):
+        x, kind, reason = traced
         keep = np.concatenate([[True], np.any(np.diff(x, axis=0) != 0, axis=1)])
         self.law, self.x, self.kind, self.reason, self.offset = law, x[keep], kind, reason, offset
+        self.n_round = int(np.count_nonzero(keep[:n_round]))
         self.t = self.x[:, 0] - self.x[0, 0] if kind == "all" else _cb.arclength(self.x)
-        self.tail = np.asarray(traced[3] if len(traced) > 3 else [], dtype=float)
+        self.tail = np.asarray(tail, dtype=float)
         self.t_round = float(self.t[-1])               # the last zone point; the tail starts JOIN past it
         if self.tail.size:
             self.t = np.concatenate([self.t, self.t_round + JOIN + np.log(self.tail / self.tail[0])])
@@ -70,13 +72,39 @@ class Traced:
             eps = math.exp(x[0, 0] + t)
             s = self.law.state(eps)
             return eps, (math.pi if s.zones == "all" else s.c), (1.0, 0.0)
+        if j + (f > 0) < self.n_round:             # the round prefix (t = log eps there) and its last point
+            return math.exp(x[0, 0] + min(t, tt[self.n_round - 1])), math.pi, (1.0, 0.0)
         if f <= 0 or f >= 1:
             xp = x[j] if f <= 0 else x[j + 1]
         else:
             normal = np.array([-chord[1], chord[0]]) / np.hypot(*chord)
             xp = _cb.project(self.law, x[j] + f * chord, normal, np.hypot(*chord))
+            if xp is None and j + 1 == self.n_round:     # next to the opening (c within START_DC of pi)
+                xp = x[j + 1]
             if xp is None:
                 raise ValueError(f"a: no cohesive state found at the branch parameter {self.offset + t!r}")
         eps, d = math.exp(xp[0]), math.exp(xp[1])
         de = eps * chord[0]
         return eps, eps + d, (de, de + d * chord[1])
+
+
+def super_short(sv, br, a):
+    """Why the super-critical table of the solver sv (jkrcyl.model.cohesive.Cohesive) ends at a (None: its last
+    point): both of its ends are short of the branch -- the first point lies next to the pole a_crit (|p| unbounded past it), the last one where the
+    trace failed, the zone reaches round, the load cap or eps = pi - 0.05 (the last only to a walker at that point:
+    for the table's extent, a = None, eps = pi - 0.05 ends the branch, as it ends the sub-critical one)."""
+    if a is not None and a <= br.offset + 1e-9 * max(1.0, br.t[-1]):
+        return (f"the super-critical branch is traced from eps = {sv._where(br.offset)[0]:.6g} rad, next to "
+                "the receding limit a_crit, where |P| grows without bound")
+    if a is not None and a < br.offset + (br.a_end - br.offset) * (1 - 1e-9):
+        return ""
+    if br.reason:
+        return br.reason
+    eps, c, _ = sv._where(br.a_end)
+    if br.kind == "zone" and c >= math.pi - 2 * _csu.ROUND_MARGIN:
+        return _csu.round_end(eps, br.tail)
+    if eps < _csu.EPS_TOP - 1e-2 and abs(sv.value("p", br.a_end)) > 0.5 * sv.law.p_cap:
+        return f"traced up to |p| = P_CAP m^(4/3) = {sv.law.p_cap:.6g}"
+    if a is None:              # the table's extent (forward searches): the branch's end, as the sub-critical one
+        return ""
+    return f"traced up to eps = {eps:.6g} rad (pi - 0.05): the states nearer full contact are not traced"

@@ -108,6 +108,11 @@ class SinglePatch:
         """Where a branch continues past its end at a: (regime, a) on another branch, or None."""
         return None
 
+    def floats_onto(self):
+        """The sub-critical branch parameter onto which a pin floating in its range touches without a jump (a
+        cohesive range reaching round), or None."""
+        return None
+
     adheres = True               # some state pulls (P < 0) where M > 0
     no_adherence_reason = ""
     unmodelled = ""              # why the analyses cannot follow the branch ('' when they can)

@@ -30,6 +30,7 @@ from . import roots as _roots
 from . import cohesive_kernels as _ck
 from . import cohesive_zones as _cz
 from . import cohesive_follow as _fo
+from . import cohesive_round as _round
 from . import one_arc as _one
 
 START = 1e-3            # the trace starts at eps = START times the half-plane scale 2 m^(2/3) (at most 1e-3)
@@ -97,10 +98,11 @@ def top_opens(law, points=ROUND_SCAN):
     """For a branch whose zone reaches round at its touch end (zones 'all' at eps_lo): (eps, c, kind) where the
     first zone-end root of jkrcyl.numerics.cohesive.cohesive_state stops short of the top with a jump to c
     (pi - c > ROUND_JUMP just past eps, and as large with the opening bracketed 1e4 times closer), or None when
-    the zone stays round or opens continuously (c -> pi, as a square root).  Two kinds of jump, neither traced:
+    the zone stays round or opens continuously (c -> pi, as a square root).  Two kinds of jump:
     'top bridge' -- the round zone's gap reaches h0 beside the top first (h(pi) ~ h0 just before), the states
     beyond keep a zone at the top apart from the bottom one; 'S-shaped branch' -- h(pi) is still well below h0,
-    the round-zone states go on and the first root belongs to a family met at a fold in eps.  A scan of
+    the round-zone states go on and the first root belongs to a family met at a fold in eps (traced whole:
+    jkrcyl.numerics.cohesive_round; a top bridge is not traced).  A scan of
     ``points`` contacts (geometric in eps up to eps_hi: the top gap grows with the contact), the first short one
     bisected to 1e-10 in log eps."""
     c_at = lambda e: law.state(e).c
@@ -128,22 +130,39 @@ def top_opens(law, points=ROUND_SCAN):
 def trace(law):
     """The branch as (x points (n, 2), kind, reason): kind 'zone' (x = (log eps, log(c - eps))) or 'all'
     (x = (log eps, 0)); reason '' when the trace ends where the branch leaves its domain (the receding limit, the
-    zone reaching round, p = P_CAP m^(4/3)), else why it stopped before (jkrcyl.numerics.cohesive_follow)."""
+    zone reaching round, p = P_CAP m^(4/3)), else why it stopped before (jkrcyl.numerics.cohesive_follow).
+    An S-shaped branch (:func:`top_opens`) is traced whole (jkrcyl.numerics.cohesive_round): kind 'zone' with a
+    fourth item, the number of leading points whose zone is round (c = pi)."""
     start = law.state(law.eps_lo)
     if start.zones == "all":
+        opens = opens_of(law)
+        if opens is not None and opens[2] == "S-shaped branch":
+            got = _round.trace(law, opens[0], lambda x: _inside(law, x),
+                               lambda e: state_values(law, e, math.pi)[2])
+            if got is not None:
+                return got
         eps = np.geomspace(law.eps_lo, law.eps_hi, ALL_POINTS)
         return np.column_stack([np.log(eps), np.zeros(eps.size)]), "all", ""
-
-    def inside(x):
-        eps, d = math.exp(x[0]), math.exp(x[1])
-        if not (law.eps_lo * 0.999 <= eps < law.eps_hi and eps + d < math.pi * (1 - 1e-9)):
-            return False
-        aff = affine(law, eps, eps + d)
-        return _at(aff[1], -aff[0][0] / aff[0][1]) < law.p_cap
-
     x0 = np.array([math.log(law.eps_lo), math.log(start.c - law.eps_lo)])
-    got = _fo.follow(law, x0, inside)
+    got = _fo.follow(law, x0, lambda x: _inside(law, x))
     return got.points, "zone", got.reason
+
+
+def opens_of(law):
+    """:func:`top_opens` of a law whose range reaches round at the touch end and is shorter than 2 Delta (else
+    None: h0 >= 2 Delta, no state pulls), computed once per law."""
+    if not hasattr(law, "_opens"):
+        law._opens = top_opens(law) if law.h0 < 2.0 and law.state(law.eps_lo).zones == "all" else None
+    return law._opens
+
+
+def _inside(law, x):
+    """The domain of the traced zone branch: eps_lo <= eps < eps_hi, c < pi, p below the load cap."""
+    eps, d = math.exp(x[0]), math.exp(x[1])
+    if not (law.eps_lo * 0.999 <= eps < law.eps_hi and eps + d < math.pi * (1 - 1e-9)):
+        return False
+    aff = affine(law, eps, eps + d)
+    return _at(aff[1], -aff[0][0] / aff[0][1]) < law.p_cap
 
 
 def arclength(x):

@@ -41,8 +41,9 @@ FIXED_EPS_SLOPE = 0.01  # follow: correct at fixed eps where the unit tangent ha
 FD_STEP = 1e-6          # follow: finite-difference step of the tangent in (log eps, log(c - eps))
 
 
-def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None):
-    """The branch k = 0, h(c) = h0 through x0 = (log eps, log(c - eps)) (on it), towards growing eps, up to
+def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None, prev=(1.0, 0.0)):
+    """The branch k = 0, h(c) = h0 through x0 = (log eps, log(c - eps)) (on it), leaving it along prev (a
+    direction in x: by default towards growing eps), up to
     where it leaves the domain inside(x): a Followed (the points (n, 2) and '' -- or the reason it stopped
     before: no tangent (the residual flat or not finite), the step below H_MIN without a point on the branch,
     or max_steps).
@@ -59,7 +60,7 @@ def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None):
     same branch: its tangent turns less than acos(TURN)).  (Pseudo-arclength with Newton, jkrcyl.numerics.continuation,
     needs a new LU at every iterate and every finite difference in eps: 3-4 times the LUs.)"""
     pts = [np.asarray(x0, dtype=float)]
-    t, side = _tangent(law, pts[0], np.array([1.0, 0.0]))
+    t, side = _tangent(law, pts[0], np.asarray(prev, dtype=float))
     if t is None:
         return Followed(np.array(pts), _stopped("no tangent at the start", pts[0]))
     h, edge = h0, False

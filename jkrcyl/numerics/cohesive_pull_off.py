@@ -45,6 +45,15 @@ def jump_reason(jump):
             + ", not traced by the solver")
 
 
+def floats_reason(jump):
+    """Why a pin whose zone reaches round at first touch, on a branch whose round zone later jumps
+    (jkrcyl.numerics.cohesive_branch.top_opens: (eps, c, kind)), does not pull from first contact."""
+    eps, c, kind = jump
+    return ("no adherence force from first contact: the pin floats in the range, which reaches round, and touches "
+            f"onto round-zone contacts that push (p >= 0); pushed past the contact eps = {eps:.6g} rad its "
+            f"round zone jumps ({kind}) onto contacts that pull")
+
+
 def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=1e-10, zero_load=True):
     """The load-control pull-off from the zero-load state (module docstring): m = M vartheta > 0, s0 > 0.
     steps: the first and the largest continuation step in (log eps, log(c - eps)) (the minimum is refined by
@@ -72,10 +81,12 @@ def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=
 
     start = law.state(eps_lo)
     if start.zones == "all":
-        # h0 >= 2 Delta: the range alone reaches round and no state pulls (a jump there changes no answer)
-        opens = _cb.top_opens(law) if law.h0 < 2.0 else None
-        if opens is not None:
-            return none(jump_reason(opens))
+        # h0 >= 2 Delta: the range alone reaches round and no state pulls (a jump there changes no answer); else
+        # the pin floats in the range and touches onto round-zone contacts that push: it stays at the touch at
+        # P = 0 -- a jump of the round zone (cohesive_branch.top_opens) lies beyond, reached only by pushing
+        opens = _cb.opens_of(law)
+        if start.p >= 0 and opens is not None:
+            return none(floats_reason(opens))
         return none("no adherence force: the zone reaches round (p >= 0)" if start.p >= 0 else
                     "the contact branch starts in a zone reaching round")
 

@@ -1,0 +1,50 @@
+"""The (lambda, M) map's load-control pull-off (jkrcyl.analysis.cohesive_map: the stand-alone continuation of
+jkrcyl.numerics.cohesive_pull_off with the map's longer steps, MAP_STEPS) against the model core's walker
+(Contact.pull_off('load') on the traced table) over random material pairs, rigid bodies included, in the strip
+where the range nearly reaches round (h0 between 0.9 and 2.1 Delta): round zones at first touch, S-shaped
+branches and top bridges.  Both give none or the same P* (1e-6), and the map's 'from first contact' outcome is
+a walker's none.  The map keeps its own route because the walker's pull-off costs 0.2-0.7 s a point cold (the
+branch table is traced whole), ~40 times the map's budget of 60 s for 100 x 100 points on 2 cores
+(benchmarks/bench_cohesive.py)."""
+import math
+
+import pytest
+from hypothesis import HealthCheck, example, given, settings
+from hypothesis import strategies as st
+
+import jkrcyl
+from jkrcyl.analysis import cohesive_map
+from jkrcyl.numerics import cohesive_scales as scales
+
+modulus = st.one_of(st.just(math.inf), st.floats(1e6, 1e12))
+poisson = st.one_of(st.just(0.0), st.floats(0.01, 0.49))
+
+
+@pytest.mark.slow
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(E=modulus, nu=poisson, E_I=modulus, nu_I=poisson, h0=st.floats(0.9, 2.1), lam=st.floats(0.2, 3.0))
+# the S-shaped branch of tests/test_cohesive_s_branch.py (identical bodies, nu 0.3, M = 0.45, lambda = 1)
+@example(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3, h0=1.3747437098080626, lam=1.0)
+# found by hypothesis: h0 just below Delta (the free range and the floating one both hold the centred pin), the
+# map said 'floats' and the walker snapped in (two rigid bodies; a rigid pin in a soft cradle)
+@example(E=math.inf, nu=0.01, E_I=math.inf, nu_I=0.0, h0=1.0, lam=1.822483711054704)
+@example(E=math.inf, nu=0.0, E_I=1e6, nu_I=0.0, h0=1.0, lam=1.5)
+@example(E=math.inf, nu=0.0, E_I=math.inf, nu_I=0.0, h0=1.0, lam=1.0)
+def test_map_point_is_the_walkers_pull_off(E, nu, E_I, nu_I, h0, lam):
+    if math.isinf(E) and math.isinf(E_I):
+        E_I = 1e9                                    # two rigid bodies: no elasticity at all
+    mat = jkrcyl.Materials.from_young(E=E, nu=nu, E_I=E_I, nu_I=nu_I)
+    probe = jkrcyl.Contact(1e-2, 1e-5, 1.0, mat)
+    m = (h0 * lam / 4) ** 0.75                       # h0/Delta = m^2/s0 with s0 = lambda m^(2/3)/4
+    M = m if math.isinf(probe.problem.theta) else m / probe.problem.theta
+    c = jkrcyl.Contact.with_lambda(1e-2, 1e-5, (M / probe.M) ** 2, mat, lam)
+    pb = c.problem
+    # the map's lambda is the half-plane one (Delta/R -> 0): the one giving this contact's s0
+    lam_map = lam * pb.edge.s0 / scales.zone_strength(lam, pb.m)
+    P, kind = cohesive_map._point(lam_map, pb.M, pb.theta, pb.gb, pb.alpha_ratio)
+    got = c.pull_off("load")
+    assert (got.P is None) == math.isnan(P), (got, cohesive_map.OUTCOMES[kind])
+    if got.P is not None:
+        assert got.P < 0 and abs(got.P / c.load_scale / P - 1) < 1e-6, (got.P / c.load_scale, P)
+    if kind == 4:
+        assert got.reason.startswith("no adherence force"), got.reason
