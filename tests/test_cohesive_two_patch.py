@@ -99,6 +99,7 @@ def test_energy_changes_by_p_d_delta_along_the_branch():
     (dict(eps_top=-0.1), "eps_top"), (dict(eps_top=math.nan), "eps_top"), (dict(eps_top=3.5), "eps_top"),
     (dict(guess=0.0), "guess"), (dict(guess=3.0), "guess"), (dict(guess="1"), "guess"),
     (dict(s0=0.0), "s0"), (dict(s0=math.inf), "s0"), (dict(m=math.nan), "m"), (dict(ar=0.1), "m must be > 0 and ar"),
+    (dict(n=4), "n"), (dict(n=2.5), "n"), (dict(n=10 ** 6), "n"),
 ])
 def test_bad_input_names_the_parameter(kw, name):
     args = dict(eps_top=EPS_TOP, m=M * THETA, s0=1.0, theta=THETA, gb=GB, ar=0.0, guess=EPS_GUESS)
@@ -138,3 +139,15 @@ def test_zone_spanning_the_gap_is_jkr_adhesionless_with_a_scaled_clearance(lam, 
     assert abs(st.delta_over_Delta - (d_eff + z)) < 1e-9 * max(1.0, abs(d_eff))
     assert abs(st.k_top / THETA - (q0[3] + d_eff * q1[3])) < 1e-9
     assert abs(st.p / THETA - (q0[0] + d_eff * q1[0])) < 1e-9 * max(1.0, abs(st.p))
+
+
+@pytest.mark.slow
+def test_mirror_state_is_the_solve_with_the_arcs_swapped():
+    """Upside down (phi -> phi + pi) the problem is the same: the state with the top arc set to this state's
+    bottom arc has this state's top arc at the bottom, P* -> -P*, delta/Delta -> -2 - delta/Delta and the zones
+    swapped (lambda = 20; a number reached two ways: the solver does not use the mirror)."""
+    st = cohesive(20.0)
+    mi = cohesive(20.0, eps_top=st.eps, guess=st.eps_top)
+    assert abs(mi.eps - st.eps_top) < 1e-9 and abs(mi.p + st.p) < 1e-9
+    assert abs(mi.delta_over_Delta + 2 + st.delta_over_Delta) < 1e-9 and abs(mi.B - st.B) < 1e-9
+    assert abs(mi.c - mi.eps - (st.c_top - st.eps_top)) < 1e-9 and abs(mi.c_top - mi.eps_top - (st.c - st.eps)) < 1e-9

@@ -193,7 +193,7 @@ def solve(eps_top, m, s0, theta, gb, ar, guess, n=None, tol=1e-11):
         raise ValueError(f"guess must be < pi - eps_top = {math.pi - eps_top!r}, got {guess!r}")
     law = _Law(m, s0, kernel)
     d0 = min(_co.dugdale_zone(m, s0), 0.25 * (math.pi - guess - eps_top))
-    n = nodes(guess, eps_top, d0, ar) if n is None else n
+    n = nodes(guess, eps_top, d0, ar) if n is None else _co.count("n", n, 8, NODES_MAX_TWO)
     x = np.array([guess, math.log(d0), math.log(d0)])
     r = law.residual(x, eps_top, n)
     steps = (1e-7 * guess, 1e-6, 1e-6)
