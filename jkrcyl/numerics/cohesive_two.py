@@ -30,6 +30,7 @@ Node count: the zone's traction jump sits a zone length d = c - eps off the arc:
 Bernstein ellipse through it, n ~ NODES_PER_ZONE sqrt(eps/d) per arc (jkrcyl.numerics.cohesive_contact); with the
 near-touching arcs' count of jkrcyl.numerics.two_arcs, at most NODES_MAX_TWO per arc (thin zones: lambda up to
 ~100 at M ~ 0.5; beyond, ValueError naming sigma0).  alpha* = 0 only here (the pairs of the JKR-limit checks).
+Stability: jkrcyl.numerics.cohesive_two_stability (the energy of zone-end-held states).
 """
 import math
 from collections import namedtuple
