@@ -99,6 +99,7 @@ def test_energy_changes_by_p_d_delta_along_the_branch():
     (dict(eps_top=-0.1), "eps_top"), (dict(eps_top=math.nan), "eps_top"), (dict(eps_top=3.5), "eps_top"),
     (dict(guess=0.0), "guess"), (dict(guess=3.0), "guess"), (dict(guess="1"), "guess"),
     (dict(s0=0.0), "s0"), (dict(s0=math.inf), "s0"), (dict(m=math.nan), "m"), (dict(ar=0.1), "m must be > 0 and ar"),
+    (dict(n=4), "n"), (dict(n=2.5), "n"), (dict(n=10 ** 6), "n"),
 ])
 def test_bad_input_names_the_parameter(kw, name):
     args = dict(eps_top=EPS_TOP, m=M * THETA, s0=1.0, theta=THETA, gb=GB, ar=0.0, guess=EPS_GUESS)
@@ -138,3 +139,75 @@ def test_zone_spanning_the_gap_is_jkr_adhesionless_with_a_scaled_clearance(lam, 
     assert abs(st.delta_over_Delta - (d_eff + z)) < 1e-9 * max(1.0, abs(d_eff))
     assert abs(st.k_top / THETA - (q0[3] + d_eff * q1[3])) < 1e-9
     assert abs(st.p / THETA - (q0[0] + d_eff * q1[0])) < 1e-9 * max(1.0, abs(st.p))
+
+
+@pytest.mark.slow
+def test_mirror_state_is_the_solve_with_the_arcs_swapped():
+    """Upside down (phi -> phi + pi) the problem is the same: the state with the top arc set to this state's
+    bottom arc has this state's top arc at the bottom, P* -> -P*, delta/Delta -> -2 - delta/Delta and the zones
+    swapped (lambda = 20; a number reached two ways: the solver does not use the mirror)."""
+    st = cohesive(20.0)
+    mi = cohesive(20.0, eps_top=st.eps, guess=st.eps_top)
+    assert abs(mi.eps - st.eps_top) < 1e-9 and abs(mi.p + st.p) < 1e-9
+    assert abs(mi.delta_over_Delta + 2 + st.delta_over_Delta) < 1e-9 and abs(mi.B - st.B) < 1e-9
+    assert abs(mi.c - mi.eps - (st.c_top - st.eps_top)) < 1e-9 and abs(mi.c_top - mi.eps_top - (st.c - st.eps)) < 1e-9
+
+
+# --- stability: the energy of zone-end-held states ------------------------------------------------------------
+def _law(lam, theta=THETA, gb=GB, M_=M):
+    from jkrcyl.numerics import arcs
+    return ct._Law(M_ * theta, zone_strength(lam, M_ * theta), arcs.Kernel(theta, gb))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("control", ["grip", "load"])
+def test_held_states_energy_gradient_is_the_j_integral(control):
+    """lambda = 20, zone ends held 10 % of the bottom zone past the equilibrium (k = 0 at both contacts, the
+    control's quantity held): d(E - [p delta under load])/dc by central differences of the held states' total
+    potential (quadrature) equals 2 s0 (h(c) - h0), Dugdale's J-integral at both ends of the bottom zone, to 1e-5
+    (measured 4e-7): the gradient jkrcyl.numerics.cohesive_two_stability differentiates."""
+    from jkrcyl.numerics import cohesive_two_stability as cs
+    st, law = cohesive(20.0), _law(20.0)
+    value = st.p if control == "load" else st.delta_over_Delta
+
+    def held(c):
+        return cs.held_state(law, c, st.c_top, control, value, (st.eps, st.eps_top), st.n)
+
+    def energy(c):
+        s = held(c)[0]
+        assert abs(s.k_bot) < 1e-9 and abs(s.k_top) < 1e-9
+        return ct.potential(s) - (s.p * s.delta_over_Delta if control == "load" else 0.0)
+
+    c0, h = st.c + 0.1 * (st.c - st.eps), 1e-3 * (st.c - st.eps)
+    g = held(c0)[1][0]
+    assert abs(g) > 1e-5
+    assert abs((energy(c0 + h) - energy(c0 - h)) / (2 * h) / (2 * law.s0 * g) - 1) < 1e-5
+
+
+# a state of JKR's two-patch loop branch (vartheta = 0.6, gb = 0.1, M = 0.5; traced by jkrcyl.analysis.tracing):
+# stable under grip, unstable under load (jkrcyl.model.two_patch.stability)
+LOOP = dict(theta=0.6, gb=0.1, M_=0.5, eps_top=0.4838986049258979, guess=0.4286145685119062)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("case", ["confined branch", "loop"])
+def test_stability_flags_are_jkrs_and_the_zone_matrix_is_symmetric(case):
+    """lambda = 20: the zone matrix G (h(c_i) - h0 against the zone ends at the held quantity, from held states)
+    is symmetric (Maxwell: E is a potential; not imposed) to 1e-6, and its flags equal JKR's second variation at
+    the limit state: M = 0.2, vartheta = 1 unstable under load and grip; the loop state stable under grip only
+    (measured eigenvalues: grip 0.024, 0.116; load -0.046, 0.024)."""
+    from jkrcyl.numerics import cohesive_two_stability as cs
+    kw = dict(theta=THETA, gb=GB, M_=M) if case != "loop" else {k: LOOP[k] for k in ("theta", "gb", "M_")}
+    pb = jkrcyl.equilibria.problem(kw["M_"], kw["theta"], kw["gb"])
+    if case == "loop":
+        ref = tp.solve(pb, eps_top=LOOP["eps_top"], guess=LOOP["guess"])
+    else:
+        ref = jkr_state()
+    law = _law(20.0, **kw)
+    st = ct.solve(ref.eps_top, law.m, law.s0, kw["theta"], kw["gb"], 0.0, guess=ref.eps)
+    flags = tp.stability(pb, ref.eps, ref.eps_top, ref.delta_over_Delta)[:2]
+    for control, expected in zip(("load", "grip"), flags):
+        G = cs.zone_matrix(law, st, control)
+        assert abs(G[0, 1] - G[1, 0]) < 1e-6 * np.max(np.abs(G))
+        assert cs.stable(law, st, control, G) == expected
+    assert flags == ((False, False) if case != "loop" else (False, True))

@@ -30,6 +30,7 @@ Node count: the zone's traction jump sits a zone length d = c - eps off the arc:
 Bernstein ellipse through it, n ~ NODES_PER_ZONE sqrt(eps/d) per arc (jkrcyl.numerics.cohesive_contact); with the
 near-touching arcs' count of jkrcyl.numerics.two_arcs, at most NODES_MAX_TWO per arc (thin zones: lambda up to
 ~100 at M ~ 0.5; beyond, ValueError naming sigma0).  alpha* = 0 only here (the pairs of the JKR-limit checks).
+Stability: jkrcyl.numerics.cohesive_two_stability (the energy of zone-end-held states).
 """
 import math
 from collections import namedtuple
@@ -193,39 +194,48 @@ def solve(eps_top, m, s0, theta, gb, ar, guess, n=None, tol=1e-11):
         raise ValueError(f"guess must be < pi - eps_top = {math.pi - eps_top!r}, got {guess!r}")
     law = _Law(m, s0, kernel)
     d0 = min(_co.dugdale_zone(m, s0), 0.25 * (math.pi - guess - eps_top))
-    n = nodes(guess, eps_top, d0, ar) if n is None else n
-    x = np.array([guess, math.log(d0), math.log(d0)])
-    r = law.residual(x, eps_top, n)
-    steps = (1e-7 * guess, 1e-6, 1e-6)
+    n = nodes(guess, eps_top, d0, ar) if n is None else _co.count("n", n, 8, NODES_MAX_TWO)
+    x = newton(lambda y: law.residual(y, eps_top, n), np.array([guess, math.log(d0), math.log(d0)]),
+               (1e-7 * guess, 1e-6, 1e-6), np.array([max(1.0, m), max(1.0, law.h0), max(1.0, law.h0)]), tol,
+               np.array([0.2 * guess, 2.0, 2.0]))
+    if x is None:
+        raise ValueError(f"guess: no cohesive two-patch state (zones at both edges) found near eps = {guess!r}")
+    d = np.exp(x[1:])
+    return state(law, x[0], eps_top, x[0] + d[0], eps_top + d[1], n)
+
+
+def newton(f, x, steps, scale, tol, largest):
+    """Newton on f(x) = 0 (f: a vector, None outside its domain) with a forward-difference Jacobian (steps), each
+    step cut to |dx_i| <= largest_i and halved while |f/scale| grows; x where |f_i| < tol scale_i, else None (no
+    convergence in ZONE_SWEEPS steps, a singular Jacobian, or the domain left).  A few unknowns of fixed-arc
+    solves (jkrcyl.numerics.roots has the scalar methods)."""
+    r = f(x)
     for _ in range(ZONE_SWEEPS):
         if r is None:
-            break
-        if abs(r[0]) < tol * max(1.0, m) and np.max(np.abs(r[1:])) < tol * max(1.0, law.h0):
-            d = np.exp(x[1:])
-            return state(law, x[0], eps_top, x[0] + d[0], eps_top + d[1], n)
-        J = np.empty((3, 3))
-        for i in range(3):
+            return None
+        if np.all(np.abs(r) < tol * scale):
+            return x
+        J = np.empty((x.size, x.size))
+        for i in range(x.size):
             xi = x.copy()
             xi[i] += steps[i]
-            ri = law.residual(xi, eps_top, n)
+            ri = f(xi)
             if ri is None:
-                r = None
-                break
+                return None
             J[:, i] = (ri - r) / steps[i]
-        if r is None or not np.linalg.cond(J) < 1e14:
-            break
+        if not np.linalg.cond(J) < 1e14:
+            return None
         dx = np.linalg.solve(J, -r)
-        dx *= min(1.0, 0.2 * guess / max(abs(dx[0]), 1e-300), 2.0 / max(np.max(np.abs(dx[1:])), 1e-300))
+        dx *= min(1.0, float(np.min(largest / np.maximum(np.abs(dx), 1e-300))))
         for _ in range(12):
-            rt = law.residual(x + dx, eps_top, n)
-            if rt is not None and np.linalg.norm(rt / [1.0, law.h0, law.h0]) < np.linalg.norm(r / [1.0, law.h0, law.h0]):
+            rt = f(x + dx)
+            if rt is not None and np.linalg.norm(rt / scale) < np.linalg.norm(r / scale):
                 break
             dx /= 2
         else:
-            break
+            return None
         x, r = x + dx, rt
-    raise ValueError(f"guess: no cohesive two-patch state (zones at both edges) found near eps = {guess!r}")
-
+    return None
 
 
 def potential(st):
