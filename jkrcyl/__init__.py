@@ -14,6 +14,7 @@ from .critical import a_crit
 from .laws import CrackKinetics
 from .equilibria import zero_load_contact, zero_load_max_M
 from .materials import Materials
+from .units import Units
 
 try:
     from importlib.metadata import PackageNotFoundError, version as _version
@@ -21,7 +22,8 @@ try:
 except PackageNotFoundError:         # running from a source tree that was never installed
     __version__ = "0.1.0"
 
-__all__ = ["__version__", "Contact", "Materials", "State", "ValidityWarning", "BranchLimitWarning", "a_crit", "laws", "fit", "zero_load_contact", "zero_load_max_M", "CrackKinetics", "kinetics"]
+__all__ = ["__version__", "Contact", "Materials", "State", "ValidityWarning", "BranchLimitWarning", "a_crit", "laws", "fit", "zero_load_contact", "zero_load_max_M", "CrackKinetics", "kinetics",
+           "Units"]
 
 
 def __getattr__(name):

@@ -2,6 +2,7 @@
 
 Units: any consistent set (SI: R, Delta [m], w [J/m^2], moduli [Pa], loads per unit length [N/m]).
 """
+import functools
 import math
 import warnings
 from dataclasses import dataclass
@@ -18,6 +19,7 @@ from .model.problem import Problem
 from .model.single_patch import solver
 from .notices import ValidityWarning
 from .numerics import kernels as _k
+from .units import Units
 
 PARALLEL_MIN = _k.PARALLEL_MIN   # state() uses the prange kernel from this many contact parameters on
 
@@ -133,6 +135,12 @@ class Contact(Analyses, CohesiveLaw, AtContactSize):
         self._require_clearance("P_star")
         th = self.theta
         return 4 * math.pi * self.Delta * (1 if math.isinf(th) else th) / self.beta
+
+    @functools.cached_property
+    def units(self) -> Units:
+        """The factors between this contact's physical, normalised and kernel scales (jkrcyl.units.Units)."""
+        self._require_clearance("units")
+        return Units.of(self)
 
     @property
     def M(self):

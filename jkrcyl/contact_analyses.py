@@ -1,7 +1,7 @@
 """What a :class:`jkrcyl.Contact` answers beyond its states: branches (sections 6 and 8), forward problems, paths
 and cycles (jkrcyl.analysis), and their histories in time with crack kinetics (jkrcyl.kinetics).
 
-A mixin of :class:`jkrcyl.Contact` (which brings R, Delta, w, the law, ``problem``, ``load_scale``): each method
+A mixin of :class:`jkrcyl.Contact` (which brings R, Delta, w, the law, ``problem``, ``units``): each method
 validates its own arguments and passes the normalised problem to the analysis that answers it."""
 from __future__ import annotations
 
@@ -17,13 +17,10 @@ from .analysis import pull_off as _pull_off
 from .analysis import tracing as _tr
 from .model import two_patch as _two
 from .results import ConfinedEvents, Curve, Cycle, Equilibrium, Point, PullOff, TwoPatchCurve
+from .units import control_of_physical
 
 if TYPE_CHECKING:                             # jkrcyl.kinetics is loaded on first use
     from .kinetics import History
-
-#: the held quantity of each forward problem's keyword
-CONTROL_OF = {"P": "load", "delta": "grip", "delta_work": "grip-work"}
-
 
 class Analyses:
     """Branches, forward problems, pull-off and cycles of a contact (mixed into :class:`jkrcyl.Contact`)."""
@@ -58,7 +55,7 @@ class Analyses:
         >>> round(float(cv.P.min()))                         # N/m: the load-control pull-off
         -1555
         """
-        return _br.curve(self.problem, regime, count("n", n, low=2)).with_units(self.load_scale, self.Delta)
+        return _br.curve(self.problem, regime, count("n", n, low=2)).with_units(self.units)
 
     def adherence(self, control: str = "load", confined: bool = True) -> List[Point]:
         """The adherence points: minima of P* (control 'load') or stationary approaches ('grip', 'grip-work').
@@ -89,8 +86,7 @@ class Analyses:
         >>> round(pt.P), pt.outcome                              # N/m
         (-1555, 'detachment')
         """
-        pts = equilibria.adherence_of(self.problem, control, confined=confined)
-        return [p.with_units(self.load_scale, self.Delta) for p in pts]
+        return equilibria.adherence_of(self.problem, control, confined=confined, units=self.units)
 
     def two_patch(self, n: Optional[int] = None) -> Tuple[TwoPatchCurve, ...]:
         """The two-patch branches (a second contact at the top of the hole, section 9), traced by continuation.
@@ -120,7 +116,7 @@ class Analyses:
         (1, ('single', 'mirror'))
         """
         pb = _two.require_finite_theta(self.problem.require("two-patch", "two_patch() is"))
-        return tuple(b.with_units(self.load_scale, self.Delta) for b in _tr.branches(pb, n))
+        return tuple(b.with_units(self.units) for b in _tr.branches(pb, n))
 
     def confined_events(self) -> ConfinedEvents:
         """What follows when the gap at phi = pi closes under slow pulling (jkrcyl.analysis.confined).
@@ -185,9 +181,10 @@ class Analyses:
             raise ValueError("P: give exactly one of P [N/m], delta [m] and delta_work [m]")
         self._require_clearance("solve")
         (name, value), = given.items()
-        target = finite_scalar(name, value) / (self.load_scale if name == "P" else self.Delta)
+        control, units = control_of_physical(name).name, self.units
         names = _fw.check_branches(branches, self.problem)
-        return _fw.solve_normalised(self.problem, _fw.Units.of(self), CONTROL_OF[name], target, names)
+        return _fw.solve_normalised(self.problem, units, control, units.normalise(control, finite_scalar(name, value)),
+                                    names)
 
     def pull_off(self, control: str = "load", rate: Optional[float] = None) -> PullOff:
         """Detachment along the stable path from first contact, or why there is none.
@@ -228,7 +225,7 @@ class Analyses:
         if rate is not None:
             from .kinetics import ramps           # loaded on first use (scipy's integrators)
             return ramps.pull_off(self, control, rate)
-        return _pull_off.pull_off(self.problem, _fw.Units.of(self), control)
+        return _pull_off.pull_off(self.problem, self.units, control)
 
     def respond(self, t, P=None, delta_work=None, delta=None) -> History:
         """The contact under a prescribed history, with crack kinetics at its edges.
@@ -314,7 +311,7 @@ class Analyses:
         if rate is not None:
             from .kinetics import ramps           # loaded on first use (scipy's integrators)
             return ramps.cycle(self, control, hi, lo, rate, n)
-        return _cycle.cycle(self.problem, _fw.Units.of(self), control, hi, lo, n, self.approach_work)
+        return _cycle.cycle(self.problem, self.units, control, hi, lo, n, self.approach_work)
 
 
 def _limits(control, **given):

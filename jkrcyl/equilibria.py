@@ -11,20 +11,20 @@ closed forms, else the collocation solver); ``s0``, the Maugis-Dugdale strength 
 from __future__ import annotations
 
 import math
-from typing import List, Optional, Sequence, Tuple
+from typing import Optional, Tuple
 
 from numpy.typing import ArrayLike
 
-from ._validate import CONTROLS, control as _check_control, count, finite_scalar, theta as _check_theta
-from .analysis import branches as _br, confined as _confined, tracing as _tr
+from ._validate import CONTROLS, count, finite_scalar, theta as _check_theta
+from .analysis import branches as _br
 from .critical import a_crit
+from .equilibria_confined import confined_events, full_contact, two_patch, two_patch_state
+from .equilibria_points import adherence, adherence_of, solve_approach, solve_load, stationary_points
 from .laws.dugdale import edge_of_strength as _law
-from .model import full_contact as _full, two_patch as _two
 from .model.problem import Problem
-from .model.single_patch import solver
 from .numerics import cohesive_scales as _scales
 from .numerics.zero_load import zero_load_contact, zero_load_max_M
-from .results import ConfinedEvents, Curve, FullContact, Point, TwoPatchCurve, TwoPatchState
+from .results import Curve
 
 __all__ = ["CONTROLS", "REGIMES", "a_crit", "adherence", "adherence_of", "confined_events", "curve", "from_contact",
            "full_contact", "incompressible_gb", "problem", "solve_approach", "solve_load", "stationary_points",
@@ -41,6 +41,16 @@ def incompressible_gb(theta: float) -> float:
     ----------
     theta : float
         vartheta >= 1/2 (section 4; 1/2: a rigid pin, gb = 0), or inf (a rigid cradle, gb = 1).
+
+    Returns
+    -------
+    float
+        gb in [0, 1].
+
+    Raises
+    ------
+    ValueError
+        Naming theta.
 
     Examples
     --------
@@ -61,6 +71,16 @@ def problem(M: float, theta: float, gb: float, alpha_ratio: float = 0.0, s0: Opt
     s0 : float, optional
         Maugis-Dugdale strength sigma0 R beta*/(4 pi Delta) > 0 (needs M > 0); None (default): JKR.
 
+    Returns
+    -------
+    jkrcyl.model.problem.Problem
+        Validated, hashable (the cache key of every table).
+
+    Raises
+    ------
+    ValueError
+        Naming the parameter outside its range.
+
     Examples
     --------
     >>> problem(0.3, 1.0, 1 / 2.8).edge.name, problem(0.3, 1.0, 1 / 2.8, s0=0.1).edge.name
@@ -78,6 +98,16 @@ def zone_strength(lam: float, M: float, theta: float) -> float:
         lambda > 0 (Baney-Hui's, R_eff = R R_D/Delta: jkrcyl.numerics.cohesive_scales).
     M, theta : float
         Adhesion M > 0 (else the error names lambda) and vartheta (m = M_R* when vartheta = inf).
+
+    Returns
+    -------
+    float
+        s0 = sigma0 R beta*/(4 pi Delta) > 0.
+
+    Raises
+    ------
+    ValueError
+        Naming lambda (not > 0, or M = 0).
 
     Examples
     --------
@@ -105,6 +135,16 @@ def curve(M: float, theta: float, regime: str = "sub-critical", n: int = 2000, *
     a : array_like, optional
         The contact parameters on the branch instead of the uniform grid.
 
+    Returns
+    -------
+    jkrcyl.results.Curve
+        Normalised fields, slopes and the stability flags under the three controls, over a increasing.
+
+    Raises
+    ------
+    ValueError
+        Naming M, theta, gb, alpha_ratio, s0, regime or n outside its range.
+
     Examples
     --------
     >>> c = curve(0.3, 1.0, n=5, gb=1 / 2.8)
@@ -115,208 +155,6 @@ def curve(M: float, theta: float, regime: str = "sub-critical", n: int = 2000, *
     return _br.curve(pb, regime, count("n", n, low=2) if a is None else n, a=a)
 
 
-def stationary_points(M: float, theta: float, control: str = "load", regime: str = "sub-critical", *, gb: float,
-                      alpha_ratio: float = 0.0, n: Optional[int] = None, s0: Optional[float] = None) -> List[Point]:
-    """Every point of one branch where the quantity ``control`` holds is stationary (``kind`` 'min', 'max').
-
-    Parameters
-    ----------
-    M, theta, gb, alpha_ratio, s0
-        The problem (:func:`problem`).
-    control, regime : str
-        'load' (P*), 'grip' (delta/Delta of (5.8)) or 'grip-work' (delta_work/Delta); the branch (:func:`curve`).
-    n : int, optional
-        Search a grid of n >= 2 points instead of the branch's dense table.
-
-    Examples
-    --------
-    >>> [(p.kind, round(p.a, 4), round(p.P_star, 4)) for p in stationary_points(0.3, 1.0, gb=1 / 2.8)]
-    [('min', 0.3994, -0.2856)]
-    """
-    pb = Problem(M, theta, gb, alpha_ratio, _law(s0))
-    _check_control(control)
-    _br.check_regime(pb, regime)
-    return _br.stationary_points(pb, control, regime, n=None if n is None else count("n", n, low=2))
-
-
-def adherence(M: float, theta: float, control: str = "load", *, gb: float, regimes: Optional[Sequence[str]] = None,
-              alpha_ratio: float = 0.0, confined: bool = True, s0: Optional[float] = None) -> List[Point]:
-    """Adherence points, sub-critical branch first: the 'x' (fixed load) and the 'o' (fixed grip) of Fig. 3.
-
-    Parameters
-    ----------
-    M, theta, gb, alpha_ratio, s0
-        The problem (:func:`problem`).
-    control : str
-        'load': per branch the lowest local minimum of P*, whose ``outcome`` says what a further pull does;
-        'grip', 'grip-work': every stationary point of the approach delta or delta_work.
-    regimes : sequence of str, optional
-        The branches to search (default: every branch of the problem).
-    confined : bool
-        Under load, the ``outcome`` of an infeasible point from the confined analysis (jkrcyl.analysis.confined).
-
-    Examples
-    --------
-    >>> [(p.kind, round(p.P_star, 4), p.outcome) for p in adherence(0.3, 1.0, gb=1 / 2.8)]
-    [('min', -0.2856, 'detachment')]
-    """
-    return adherence_of(Problem(M, theta, gb, alpha_ratio, _law(s0)), control, regimes, confined)
-
-
-def adherence_of(pb: Problem, control: str = "load", regimes: Optional[Sequence[str]] = None,
-                 confined: bool = True) -> List[Point]:
-    """:func:`adherence` of a validated problem (:func:`problem`; any edge law).
-
-    Parameters
-    ----------
-    pb, control, regimes, confined
-        The validated problem (jkrcyl.model.problem.Problem) and the rest as :func:`adherence`.
-
-    Examples
-    --------
-    >>> adherence_of(problem(0.3, 1.0, 1 / 2.8)) == adherence(0.3, 1.0, gb=1 / 2.8)
-    True
-    """
-    _check_control(control)
-    regs = solver(pb).regimes() if regimes is None else _regimes(regimes)
-    out = []
-    for regime in regs:
-        pts = _br.stationary_points(pb, control, _br.check_regime(pb, regime))
-        if control != "load":
-            out += pts
-        elif any(p.kind == "min" for p in pts):
-            out.append(min((p for p in pts if p.kind == "min"), key=lambda p: p.P_star))
-    return _confined.outcomes(pb, out) if control == "load" and confined else out
-
-
-def solve_load(M: float, theta: float, P_star: float, regime: str = "sub-critical", *, gb: float,
-               alpha_ratio: float = 0.0, n: Optional[int] = None, s0: Optional[float] = None) -> List[float]:
-    """The contact parameters a on one branch where P*(a) = P_star (section 6): sorted, [] if none.
-
-    Parameters
-    ----------
-    M, theta, gb, alpha_ratio, s0
-        The problem (:func:`problem`).
-    P_star : float
-        The normalised load.
-    regime, n
-        The branch and an optional root grid, as :func:`stationary_points`.
-
-    Examples
-    --------
-    >>> [round(a, 4) for a in solve_load(0.3, 1.0, 0.0, gb=1 / 2.8)]        # the smaller root of (8.1)
-    [0.7371]
-    >>> [round(a, 4) for a in zero_load_contact(0.3, 1.0)]
-    [0.7371, 11.6072]
-    """
-    return _solve_field("p", "P_star", P_star, M, theta, regime, gb, alpha_ratio, n, s0)
-
-
-def solve_approach(M: float, theta: float, delta_over_Delta: float, regime: str = "sub-critical", *, gb: float,
-                   alpha_ratio: float = 0.0, n: Optional[int] = None) -> List[float]:
-    """The contact parameters a on one branch where delta/Delta (5.8) takes the given value: sorted, [] if none.
-
-    Parameters
-    ----------
-    M, theta, gb, alpha_ratio
-        The problem (:func:`problem`).
-    delta_over_Delta : float
-        The paper's approach over the clearance.
-    regime, n
-        As :func:`solve_load`.
-
-    Examples
-    --------
-    >>> [round(a, 4) for a in solve_approach(0.3, 1.0, 0.0, gb=1 / 2.8)]
-    [0.6268]
-    """
-    return _solve_field("dn", "delta_over_Delta", delta_over_Delta, M, theta, regime, gb, alpha_ratio, n)
-
-
-def _solve_field(field, name, value, M, theta, regime, gb, alpha_ratio, n, s0=None):
-    pb = Problem(M, theta, gb, alpha_ratio, _law(s0))
-    _br.check_regime(pb, regime)
-    target = finite_scalar(name, value) * (pb.scale if field == "p" else 1.0)
-    return [r for r, _ in _br.roots(pb, regime, field, target, n=None if n is None else count("n", n, low=2))]
-
-
-def two_patch(M: float, theta: float, n: Optional[int] = None, *, gb: float,
-              alpha_ratio: float = 0.0) -> Tuple[TwoPatchCurve, ...]:
-    """Every two-patch branch (contact at the bottom and the top at once), traced; cached per problem.
-
-    Parameters
-    ----------
-    M, theta, gb, alpha_ratio
-        The problem (:func:`problem`; vartheta finite).
-    n : int, optional
-        Points per branch, evenly along it (default: the continuation steps of jkrcyl.analysis.tracing).
-
-    Examples
-    --------
-    >>> [b.ends for b in two_patch(0.5, 1.0, gb=1 / 2.8)]
-    [('single', 'mirror')]
-    """
-    return _tr.branches(_two.require_finite_theta(Problem(M, theta, gb, alpha_ratio)), n)
-
-
-def two_patch_state(M: float, theta: float, *, gb: float, eps: Optional[float] = None, eps_top: Optional[float] = None,
-                    guess: Optional[float] = None, alpha_ratio: float = 0.0) -> TwoPatchState:
-    """The two-patch equilibrium (G = w at both edges) with one half-angle given, the other found from ``guess``.
-
-    Parameters
-    ----------
-    M, theta, gb, alpha_ratio
-        The problem (:func:`problem`; vartheta finite).
-    eps, eps_top : float
-        Exactly one: the half-angle of the bottom or the top contact [rad], in (0, pi).
-    guess : float, optional
-        Start of the other half-angle [rad]; the error names guess where no equilibrium is found near it.
-
-    Examples
-    --------
-    >>> s = two_patch_state(0.5, 1.0, gb=1 / 2.8, eps=1.0, guess=0.003)
-    >>> round(float(s.eps_top), 5), round(s.P_star, 4), round(s.G_bot, 9), round(s.G_top, 9)
-    (0.00268, -0.7062, 1.0, 1.0)
-    """
-    return _two.solve(Problem(M, theta, gb, alpha_ratio), eps_top=eps_top, eps=eps, guess=guess)
-
-
-def confined_events(M: float, theta: float, *, gb: float, alpha_ratio: float = 0.0) -> ConfinedEvents:
-    """What slow pulling under load control does to the pin in the hole (jkrcyl.analysis.confined).
-
-    Parameters
-    ----------
-    M, theta, gb, alpha_ratio
-        The problem (:func:`problem`; vartheta finite).
-
-    Examples
-    --------
-    >>> (ev := confined_events(0.3, 1.0, gb=1 / 2.8)).regime, round(ev.P_fold, 4)
-    ('detachment', -0.2856)
-    """
-    return _confined.confined_events(_two.require_finite_theta(Problem(M, theta, gb, alpha_ratio)))
-
-
-def full_contact(theta: float, P_star: Optional[float] = None, delta_over_Delta: Optional[float] = None, *,
-                 gb: float, alpha_ratio: float = 0.0) -> FullContact:
-    """The pin bonded all round at a given P* or delta/Delta: n(phi) = N0 + N1 cos(phi), N1 = P*/pi.
-
-    Parameters
-    ----------
-    theta, gb, alpha_ratio
-        The problem (:func:`problem`; vartheta finite; no M: full contact has no edge).
-    P_star, delta_over_Delta : float
-        Exactly one: the load (section 6) or the approach over the clearance.
-
-    Examples
-    --------
-    >>> f = full_contact(1.0, P_star=1.5, gb=1 / 2.8)        # -pi N0 = 1 at alpha* = 0
-    >>> round(-math.pi * f.N0, 12), round(math.pi * f.N1, 12)
-    (1.0, 1.5)
-    """
-    return _full.state(Problem(0.0, theta, gb, alpha_ratio), P_star=P_star, delta_over_Delta=delta_over_Delta)
-
-
 def from_contact(contact: "jkrcyl.Contact") -> Tuple[float, float, float]:
     """(M, vartheta, gb) of a :class:`jkrcyl.Contact` (M is M_R* when vartheta = inf; ValueError for Delta = 0).
 
@@ -324,6 +162,16 @@ def from_contact(contact: "jkrcyl.Contact") -> Tuple[float, float, float]:
     ----------
     contact : jkrcyl.Contact
         A contact with clearance Delta > 0 (the normalisation divides by it).
+
+    Returns
+    -------
+    tuple of float
+        (M, vartheta, gb): the arguments of every function here.
+
+    Raises
+    ------
+    ValueError
+        Naming Delta (= 0).
 
     Examples
     --------
@@ -335,9 +183,3 @@ def from_contact(contact: "jkrcyl.Contact") -> Tuple[float, float, float]:
     """
     pb = Problem.of(contact)
     return pb.M, pb.theta, pb.gb
-
-
-def _regimes(regimes):
-    if isinstance(regimes, str) or not hasattr(regimes, "__iter__"):
-        raise ValueError(f"regimes must be a list of {', '.join(REGIMES)}, got {regimes!r}")
-    return list(regimes)

@@ -170,7 +170,8 @@ def test_confined_branches_say_not_modelled():
         with pytest.raises(ValueError, match="not modelled|JKR"):
             call()
     assert {s.branch for s in c.solve(P=-100.0)} <= {"sub-critical", "sub-critical-top", "contactless",
-                                                     "contactless-top", "super-critical", "super-critical-top"}
+                                                     "contactless-top", "super-critical", "super-critical-top",
+                                                     "full-contact"}
 
 
 @pytest.mark.parametrize("kw, name", [

@@ -11,7 +11,6 @@ import math
 import numpy as np
 import pytest
 
-from jkrcyl.analysis import forward as fw
 from jkrcyl.analysis import pull_off as po
 from jkrcyl.laws import DugdaleEdge
 from jkrcyl.model.problem import Problem
@@ -21,6 +20,7 @@ from jkrcyl.numerics import cohesive_follow as fo
 from jkrcyl.numerics import cohesive_pull_off as cpo
 from jkrcyl.numerics import cohesive_scales as scales
 from jkrcyl.numerics import continuation as cont
+from jkrcyl.units import Units
 
 THETA, GB = 1.0, 1 / 2.8
 # (lambda, M): a branch monotone in eps (the README pin's lambda = 3 at M = 0.2), one that turns back to eps -> 0
@@ -88,7 +88,7 @@ def test_stand_alone_pull_off_at_a_fold_in_eps_equals_the_walkers_fold():
     pb0 = Problem(M, THETA, GB, 0.0)
     s0 = scales.zone_strength(lam, pb0.m)
     pb = Problem(M, THETA, GB, 0.0, edge=DugdaleEdge(s0))
-    walker = po.pull_off(pb, fw.Units(1.0, 1.0, 1.0, 0.0), "load")
+    walker = po.pull_off(pb, Units.normalised(pb), "load")
     assert walker.state is not None and "fold" in walker.reason
     for kw in (dict(), dict(steps=(0.3, 1.2), xtol=1e-6, zero_load=False)):
         got = cpo.pull_off_load(pb.m, s0, THETA, GB, 0.0, **kw)

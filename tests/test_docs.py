@@ -12,6 +12,7 @@ and runs every gallery example; CI runs both).
 """
 import doctest
 import importlib
+import inspect
 import pathlib
 import re
 import shlex
@@ -135,3 +136,29 @@ def test_gallery_example_has_a_title_and_compiles(example):
     compile(text, str(example), "exec")
     title = re.match(r'"""\n(.+)\n(=+)\n', text)
     assert title and len(title.group(2)) >= len(title.group(1)), f"{example.name}: no sphinx-gallery title"
+
+
+# --- numpydoc sections of the public functions -----------------------------------------------------------------
+NUMPYDOC_APIS = [("jkrcyl.equilibria", None), ("jkrcyl.units", None), ("jkrcyl", "Contact")]
+
+
+def _public_callables(module, cls):
+    mod = importlib.import_module(module)
+    if cls is not None:
+        owner = getattr(mod, cls)
+        return [(f"{cls}.{n}", getattr(owner, n)) for n in dir(owner)
+                if not n.startswith("_") and inspect.isfunction(getattr(owner, n))]
+    return [(n, getattr(mod, n)) for n in getattr(mod, "__all__", []) if inspect.isfunction(getattr(mod, n))]
+
+
+@pytest.mark.parametrize("module, cls", NUMPYDOC_APIS)
+def test_public_functions_have_numpydoc_sections(module, cls):
+    """Every public function of these APIs says what it returns and shows an example (numpydoc sections), and
+    names its parameters where it has any."""
+    faults = []
+    for name, f in _public_callables(module, cls):
+        doc = inspect.getdoc(f) or ""
+        needed = ["Returns", "Examples"] + (["Parameters"] if len(inspect.signature(f).parameters) > (cls is not None)
+                                            else [])
+        faults += [f"{name}: {s}" for s in needed if not re.search(rf"^{s}\n-+$", doc, re.M)]
+    assert not faults, faults

@@ -19,14 +19,14 @@ FLAGS = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE
 # modules whose docstrings carry examples (each must run at least one)
 DOCTEST_MODULES = (
     "jkrcyl.contact", "jkrcyl.contact_analyses", "jkrcyl.contact_fields", "jkrcyl.contact_cohesive", "jkrcyl.materials",
-    "jkrcyl.critical",
-    "jkrcyl.equilibria", "jkrcyl.special", "jkrcyl.results.curves", "jkrcyl.results.paths", "jkrcyl.results.states",
+    "jkrcyl.critical", "jkrcyl.units", "jkrcyl.equilibria", "jkrcyl.equilibria_points", "jkrcyl.equilibria_confined",
+    "jkrcyl.special", "jkrcyl.results.curves", "jkrcyl.results.paths", "jkrcyl.results.states",
     "jkrcyl.laws", "jkrcyl.laws.griffith", "jkrcyl.laws.dugdale", "jkrcyl.model.edge", "jkrcyl.atlas",
     "jkrcyl.atlas.draw", "jkrcyl.atlas.files", "jkrcyl.plotting.confined", "jkrcyl.plotting.cycle",
     "jkrcyl.plotting.paper_pressure", "jkrcyl.plotting.paper_stability", "jkrcyl.plotting.registry",
     "jkrcyl.plotting.style", "jkrcyl.laws.kinetic", "jkrcyl.kinetics.sweep", "jkrcyl.kinetics.history",
     "jkrcyl.kinetics.results", "jkrcyl.plotting.rate", "jkrcyl.fit.estimate", "jkrcyl.explore.model", "jkrcyl.numerics.zero_load",
-    "jkrcyl.fit.data",
+    "jkrcyl.fit.data", "jkrcyl.fit.result",
 )
 
 # every library file's docstrings are held to the naming rules below

@@ -15,9 +15,10 @@ import numpy as np
 from .._validate import A_MAX, contact_parameter
 from ..model import stability as _stab
 from ..model.problem import Problem
-from ..model.single_patch import SLOPE_OF, solver
+from ..model.single_patch import solver
 from ..numerics import roots as _roots
-from ..results import Curve, Point
+from ..results import Curve
+from ..units import CONTROLS, CURVE_FIELD
 
 REGIMES = ("sub-critical", "super-critical")
 ZONE_ONLY = "contactless"    # the pin held by its zone without contact: cohesive edge laws only
@@ -80,18 +81,13 @@ def table(pb: Problem, regime: str) -> Curve:
     return _curve(pb, regime, grid(pb, regime, n, small=SMALL_A_POINTS * n // 4000))
 
 
-SLICE_OF_CURVE = {"p": ("P_star", True), "dp_da": ("dP_star_da", True), "dn": ("delta_over_Delta", False),
-                  "ddn_da": ("ddelta_da", False), "dw": ("delta_work_over_Delta", False),
-                  "ddw_da": ("ddelta_work_da", False), "h": ("h_pi_over_Delta", False)}
-
-
 def table_values(pb: Problem, regime: str, field: str):
     """(a, values) of a solver field (single_patch.FIELDS, kernel scale) on the branch's dense table grid: the
     solver's own where it has a cheaper route than the full table (SinglePatch.table_values), else the table's."""
     got = solver(pb).table_values(regime, field)
     if got is not None:
         return got
-    name, scaled = SLICE_OF_CURVE[field]
+    name, scaled = CURVE_FIELD[field]
     c = table(pb, regime)
     return c.a, np.asarray(getattr(c, name)) * (pb.scale if scaled else 1.0)
 
@@ -100,7 +96,7 @@ def roots(pb: Problem, regime: str, field: str, target: float = 0.0, n=None):
     """[(a, sign)] where the solver field (single_patch.FIELDS, kernel scale) crosses target on the branch;
     sign: of field - target right of the root.  Sign changes through a pole are not roots.  The search grid is
     the dense table (:func:`table_values`), or n points (with the small contacts) when n is given."""
-    name, scaled = SLICE_OF_CURVE[field]
+    name, scaled = CURVE_FIELD[field]
     if n is None:
         a, values = table_values(pb, regime, field)
     else:
@@ -115,15 +111,7 @@ def values_at(pb: Problem, regime: str, a) -> Curve:
     return curve(pb, regime, a=np.atleast_1d(np.asarray(a, dtype=float)))
 
 
-def stationary_points(pb: Problem, control: str, regime: str, n=None):
-    """Every point of a branch where the held quantity (P*, delta/Delta or delta_work/Delta) is stationary."""
-    held = _stab.HELD[control][0]
-    out = []
-    for r, sgn in roots(pb, regime, SLOPE_OF[held], n=n):
-        c = values_at(pb, regime, r)
-        out.append(Point(control=control, regime=regime, kind="min" if sgn > 0 else "max", M=pb.M, theta=pb.theta,
-                         a=r, eps=float(c.eps[0]), eps_star=float(c.eps_star[0]), P_star=float(c.P_star[0]),
-                         delta_over_Delta=float(c.delta_over_Delta[0]), h_pi_over_Delta=float(c.h_pi_over_Delta[0]),
-                         feasible=bool(c.feasible[0]), delta_work_over_Delta=float(c.delta_work_over_Delta[0]),
-                         gb=pb.gb, alpha_ratio=pb.alpha_ratio))
-    return out
+def stationary_roots(pb: Problem, control: str, regime: str, n=None):
+    """[(a, 'min' or 'max')] where the held quantity of ``control`` (P*, delta/Delta or delta_work/Delta) is
+    stationary on a branch (the states: jkrcyl.analysis.forward.stationary_points)."""
+    return [(r, "min" if sgn > 0 else "max") for r, sgn in roots(pb, regime, CONTROLS[control].field_slope, n=n)]

@@ -25,7 +25,7 @@ import numpy as np
 from ..model.problem import Problem
 from ..numerics import cohesive_pull_off as _cpo
 from ..numerics import cohesive_scales as _scales
-from . import forward as _fw
+from ..units import Units
 from . import pull_off as _po
 
 OUTCOMES = ("fold", "touch", "no adherence force", "no zero-load contact",
@@ -65,7 +65,8 @@ def _row(lam, Ms, theta, gb, ar):
 
 def jkr_pull_off(M, theta, gb, ar=0.0):
     """P* of JKR's load-control pull-off (the model core's walker), NaN where it does not detach."""
-    r = _po.pull_off(Problem(M, theta, gb, ar), _fw.Units(1.0, 1.0, 1.0, 0.0), "load")
+    pb = Problem(M, theta, gb, ar)
+    r = _po.pull_off(pb, Units.normalised(pb), "load")
     return math.nan if r.P is None else r.P
 
 

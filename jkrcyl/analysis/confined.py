@@ -22,7 +22,7 @@ from ..model import two_patch as _two
 from ..model.problem import Problem
 from ..results import ConfinedEvents
 from . import branches as _br
-from . import forward as _fw
+from ..units import Units
 from . import path as _path
 from . import pull_off as _po
 from . import tracing as _tr
@@ -45,10 +45,10 @@ def _onsets(pb: Problem):
 def confined_events(pb: Problem) -> ConfinedEvents:
     """Classify the confined regime of a problem (finite vartheta, M > 0): see the module docstring."""
     _two.require_finite_theta(pb)
-    un = _fw.Units(1.0, 1.0, 1.0, 1.0)              # normalised: P = P*, delta = delta/Delta
+    un = Units.normalised(pb, K_edge=1.0)           # normalised: P = P*, delta = delta/Delta
     bs = _tr.branches(pb)
-    grip = [p for r in _br.solver(pb).regimes() for p in _br.stationary_points(pb, "grip", r)
-            if p.kind == "min" and p.feasible]
+    grip = [a for r in _br.solver(pb).regimes() for a, kind in _br.stationary_roots(pb, "grip", r)
+            if kind == "min" and bool(_br.values_at(pb, r, a).feasible[0])]
     common = dict(onsets=_onsets(pb), grip_detachment=bool(grip),
                   two_patch_stable_load=any(b.stable_load.any() for b in bs),
                   two_patch_stable_grip=any(b.stable_grip.any() for b in bs),

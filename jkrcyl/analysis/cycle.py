@@ -18,11 +18,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..model import full_contact as _full
 from ..model.problem import Problem
 from ..results import Cycle, Jump
-from ..results.states import CONTROLS
+from ..units import CONTROLS, Units
 from . import forward as _fw
 from . import path as _path
+from . import reasons as _reasons
 
 MAX_REPEATS = 3          # cycles driven until the loop closes (the state at the top of the cycle repeats)
 MAX_JUMPS = 20           # jumps per leg at most
@@ -31,7 +33,7 @@ MAX_JUMPS = 20           # jumps per leg at most
 class _Run:
     """A cycle being driven: the recorded points (P, delta, branch, a, stable, leg), jumps and tracks."""
 
-    def __init__(self, pb: Problem, un: _fw.Units, control: str):
+    def __init__(self, pb: Problem, un: Units, control: str):
         self.pb, self.un, self.control = pb, un, control
         self.pts, self.jumps, self.tracks = [], [], {}
 
@@ -79,8 +81,11 @@ class _Run:
         """Move along the current branch: (state, event)."""
         pb, un, ctl = self.pb, self.un, self.control
         if s.branch == "full-contact":
-            t = target / (un.load_scale if ctl == "load" else un.Delta)
-            e = _fw.full_contact_state(pb, un, CONTROLS[ctl][0], t, ctl)
+            e = _fw.full_contact_state(pb, un, CONTROLS[ctl].normalised, un.normalise(ctl, target), ctl)
+            if e is not None and not e.feasible:      # the bond breaks first (a law of finite strength)
+                e = _fw.full_contact_state(pb, un, "P_star", _full.bond_limit(pb, e.P_star), ctl)
+                self.add(e, leg)
+                return e, "end"
             self.add(e, leg)
             return e, "target"
         if s.branch == "separated":
@@ -114,14 +119,14 @@ def _same(s1, s2, rel=1e-6):
         abs(s1.P - s2.P) <= rel * max(abs(s1.P), 1e-300) + 1e-300
 
 
-def cycle(pb: Problem, un: _fw.Units, control: str, hi: float, lo: float, n: int, delta_work_of) -> Cycle:
+def cycle(pb: Problem, un: Units, control: str, hi: float, lo: float, n: int, delta_work_of) -> Cycle:
     """The cycle between the held limits lo < hi (P [N/m] or an approach [m]); delta_work_of(P, delta) the
     work-conjugate approach [m] of the Contact (for the returned path)."""
     run = _Run(pb, un, control)
     sep, to, kind = _path.first_contact(pb, un, control)
     run.add(sep, 0)
-    if to is None or _path.unmodelled(pb):
-        why = _path.unmodelled(pb) or _path.no_first_contact_reason(pb, control)
+    if to is None or _reasons.unmodelled(pb):
+        why = _reasons.unmodelled(pb) or _reasons.no_first_contact_reason(pb, control)
         return _finish(run, n, None, why, delta_work_of, (lo, hi))
     if kind != "continue":                   # a floating pin goes on onto its contact without a jump
         run.jumps.append(Jump(kind, 0, sep, to))

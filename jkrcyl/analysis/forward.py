@@ -8,7 +8,8 @@
   phi -> phi + pi: P -> -P, delta -> -2 Delta - delta (either approach);
 * ``two-patch``: contact at the bottom and the top at once (jkrcyl.analysis.tracing), present when a single patch
   can close the gap at phi = pi (the confined regime, :func:`confined`);
-* ``full-contact``: the pin bonded all round (no edge, always stable), confined regime only;
+* ``full-contact``: the pin bonded all round (no edge; stable where the bond holds, jkrcyl.model.full_contact
+  .holds), confined regime only (any finite vartheta for a law without two patches, the cohesive one);
 * ``separated``: the free pin (no contact, P = 0), for a given approach -2 Delta < delta < 0 only (within
   -2 Delta + h0 < delta < -h0 for a cohesive law of range h0);
 * ``contactless``, ``contactless-top``: cohesive law only -- the pin without contact held by its zone at the
@@ -16,10 +17,11 @@
   opening grows with it.
 
 With a cohesive (Maugis-Dugdale) edge law the single-patch branches (sub- and super-critical, contactless) are
-the solver's (jkrcyl.model.cohesive) and two patches and full contact are not modelled: those branches return no state in a search of every branch, and
-asking for them by name raises ValueError.
+the solver's (jkrcyl.model.cohesive), full contact is JKR's bonded pin where the tension stays below sigma0, and
+two patches are not modelled: that branch returns no state in a search of every branch, and asking for it by
+name raises ValueError.
 
-Stability is that of the control (jkrcyl.results.states.CONTROLS): fixed load for P, fixed paper's approach for
+Stability is that of the control (jkrcyl.units.CONTROLS): fixed load for P, fixed paper's approach for
 delta ('grip'), fixed work-conjugate approach for delta_work ('grip-work').  Signs as in section 6: P and delta
 are positive downward (pushing the pin into the bottom of the hole).
 """
@@ -27,7 +29,6 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import dataclass
 from typing import Callable, Dict, List
 
 import numpy as np
@@ -38,31 +39,10 @@ from ..model import two_patch as _two
 from ..model.problem import Problem
 from ..model.single_patch import solver
 from ..notices import BranchLimitWarning
-from ..results import Equilibrium
-from ..results.states import CONTROLS
+from ..results import Equilibrium, Point
+from ..units import CONTROLS, Units
 from . import branches as _br
 from . import tracing as _tr
-
-#: normalised key of each control (results.states.CONTROLS) -> the single-patch solver field
-FIELD_OF_KEY = {"P_star": "p", "delta_over_Delta": "dn", "delta_work_over_Delta": "dw"}
-
-
-@dataclass(frozen=True)
-class Units:
-    """What turns a normalised state dimensional: R, Delta [m], P/P* [N/m], K at an edge in equilibrium
-    [Pa m^1/2] and the energy unit 4 pi Delta^2/beta* [J/m] of the kernel scale."""
-
-    R: float
-    Delta: float
-    load_scale: float
-    K_edge: float
-    energy_scale: float = 1.0
-
-    @classmethod
-    def of(cls, contact) -> "Units":
-        return cls(contact.R, contact.Delta, contact.load_scale,
-                   contact.law.stress_intensity(contact),
-                   4 * math.pi * contact.Delta ** 2 / contact.beta)
 
 
 def _state(pb, un, branch, control, side, a, eps, P_star, dn, h, flags, U, a_top=0.0, eps_top=0.0, K=None,
@@ -73,7 +53,8 @@ def _state(pb, un, branch, control, side, a, eps, P_star, dn, h, flags, U, a_top
     dw = dn + pb.work_shift * pb.scale * P_star
     energy = un.energy_scale * (U - 2 * pb.m ** 2 * (eps + eps_top) if total is None else total)
     return Equilibrium(branch=branch, control=control, a=a, eps=eps, contact_width=2 * un.R * (eps + eps_top),
-                       P=P_star * un.load_scale, delta=dn * un.Delta, delta_work=dw * un.Delta, h_pi=h * un.Delta,
+                       P=un.physical("load", P_star), delta=un.physical("grip", dn),
+                       delta_work=un.physical("grip-work", dw), h_pi=h * un.Delta,
                        K=un.K_edge if K is None else K, P_star=P_star, delta_over_Delta=dn,
                        delta_work_over_Delta=dw, feasible=bool(flags[0]), stable_load=bool(flags[1]),
                        stable_grip=bool(flags[2]), stable_grip_work=bool(flags[3]), side=side, a_top=a_top,
@@ -102,14 +83,27 @@ def single_patch_states(pb: Problem, un: Units, regime: str, a, control: str, si
     return out
 
 
+def stationary_points(pb: Problem, un: Units, control: str, regime: str, n=None) -> List[Point]:
+    """Every state of a branch where the held quantity of ``control`` is stationary (folds: 'min' or 'max'),
+    sorted by a (jkrcyl.analysis.branches.stationary_roots; n: a root grid of n points instead of the table)."""
+    found = _br.stationary_roots(pb, control, regime, n)
+    if not found:
+        return []
+    a = [r for r, _ in found]
+    c = _br.values_at(pb, regime, a)
+    return [Point.of(s, kind=kind, M=pb.M, theta=pb.theta, gb=pb.gb, alpha_ratio=pb.alpha_ratio,
+                     eps_star=float(c.eps_star[i]), h_pi_over_Delta=float(c.h_pi_over_Delta[i]))
+            for i, (s, (_, kind)) in enumerate(zip(single_patch_states(pb, un, regime, a, control), found))]
+
+
 def _single(regime: str, side: str = "bottom"):
     def solver(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
         if not _br.solver(pb).has(regime):
             return []
         if side == "top":                        # mirror: P* -> -P*, either approach -> -2 - itself
             target = -target if key == "P_star" else -2.0 - target
-        field = FIELD_OF_KEY[key]
-        t = target * (pb.scale if field == "p" else 1.0)
+        field = CONTROLS[control].field
+        t = target * (pb.scale if CONTROLS[control].is_load else 1.0)    # normalised -> kernel scale
         _warn_past_table(pb, un, regime, field, t, side)
         return single_patch_states(pb, un, regime, [r for r, _ in _br.roots(pb, regime, field, t)], control, side)
     solver.__doc__ = f"{regime} single patch at the {side} of the hole."
@@ -126,7 +120,7 @@ def _warn_past_table(pb, un, regime, field, target, side):
     last = values[-1]
     beyond = (target > values.max() and last >= values.max()) or (target < values.min() and last <= values.min())
     if beyond and solver(pb).stops_short(regime):
-        what, unit = ("P", un.load_scale / pb.scale) if field == "p" else ("the approach", un.Delta)
+        what, unit = ("P", un.per_kernel("load")) if field == "p" else ("the approach", un.Delta)
         sgn = -1.0 if side == "top" else 1.0
         end = sgn * last * unit
         warnings.warn(f"{what}: the {regime}{'-top' if side == 'top' else ''} branch of the {pb.edge.name} law is "
@@ -162,13 +156,16 @@ def full_contact_state(pb: Problem, un: Units, key: str, target: float, control:
               else _full.state(pb, **{key: target}))
     except ValueError:
         return None
+    holds = _full.holds(pb, fc)
     return _state(pb, un, "full-contact", control, "both", math.inf, math.pi, fc.P_star, fc.delta_over_Delta, 0.0,
-                  (True, True, True, True), pb.scale * fc.energy, a_top=math.inf, K=0.0,
+                  (holds,) * 4, pb.scale * fc.energy, a_top=math.inf, K=0.0,
                   extra={"tension_everywhere": fc.tension_everywhere})
 
 
 def _full_contact_solver(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
-    if not confined(pb):
+    # a law with two patches reaches full contact through them (the confined regime); one without (the cohesive
+    # law) from its contact branches' ends and at first touch: the bonded pin at any finite vartheta
+    if not (confined(pb) if pb.models("two-patch") else pb.models("full-contact") and not pb.rigid_cradle):
         return []
     s = full_contact_state(pb, un, key, target, control)
     return [] if s is None else [s]
@@ -223,7 +220,7 @@ def check_branches(branches, pb: Problem = None) -> list:
 def solve_normalised(pb: Problem, un: Units, control: str, target: float, branches=None) -> List[Equilibrium]:
     """Every equilibrium with the held quantity of ``control`` at the normalised target (P*, delta/Delta or
     delta_work/Delta), sorted by contact size then branch order."""
-    key = CONTROLS[control][0]
+    key = CONTROLS[control].normalised
     out = []
     for name in check_branches(branches):
         out += BRANCH_SOLVERS[name](pb, un, key, target, control)

@@ -18,9 +18,8 @@ import numpy as np
 
 from ..model import two_patch as _two
 from ..model.problem import Problem
-from ..model.single_patch import SLOPE_OF, solver
-from ..model.stability import HELD
-from ..results.states import CONTROLS
+from ..model.single_patch import solver
+from ..units import CONTROLS, CURVE_FIELD, Units
 from . import branches as _br
 from . import forward as _fw
 from . import tracing as _tr
@@ -29,33 +28,33 @@ from . import tracing as _tr
 class SingleTrack:
     """A single-patch branch (bottom or top, the mirror) on its dense table, the held quantity physical."""
 
-    def __init__(self, pb: Problem, un: _fw.Units, regime: str, side: str, control: str):
+    def __init__(self, pb: Problem, un: Units, regime: str, side: str, control: str):
         c = _br.table(pb, regime)
         self.pb, self.un, self.regime, self.side, self.control = pb, un, regime, side, control
         self.name = regime + ("-top" if side == "top" else "")
         self.a = np.asarray(c.a)
         sgn = -1.0 if side == "top" else 1.0
-        self.P = sgn * np.asarray(c.P_star) * un.load_scale
+        self.P = un.physical("load", sgn * np.asarray(c.P_star))
         d, dw = np.asarray(c.delta_over_Delta), np.asarray(c.delta_work_over_Delta)
-        self.delta = (-2 - d if side == "top" else d) * un.Delta
-        self.delta_work = (-2 - dw if side == "top" else dw) * un.Delta
-        self.stable = np.asarray(getattr(c, CONTROLS[control][2]))
+        self.delta = un.physical("grip", -2 - d if side == "top" else d)
+        self.delta_work = un.physical("grip-work", -2 - dw if side == "top" else dw)
+        self.stable = np.asarray(getattr(c, CONTROLS[control].stable))
         self.feasible = np.asarray(c.feasible)
 
     @property
     def y(self):
-        return getattr(self, CONTROLS[self.control][3])
+        return getattr(self, CONTROLS[self.control].physical)
 
     def state_at(self, a):
         return _fw.single_patch_states(self.pb, self.un, self.regime, a, self.control, self.side)[0]
 
     def _field_target(self, value):
         """The solver field of the held quantity and the bottom branch's target for a physical value."""
-        field = HELD[self.control][0]
-        if self.control == "load":
-            return field, (-value if self.side == "top" else value) / self.un.load_scale * self.pb.scale
-        t = value / self.un.Delta
-        return field, (-2 - t if self.side == "top" else t)
+        ctl = CONTROLS[self.control]
+        if ctl.is_load:                                     # mirror: P -> -P, either approach -> -2 Delta - itself
+            return ctl.field, self.un.to_kernel("load", -value if self.side == "top" else value)
+        t = self.un.to_kernel(self.control, value)
+        return ctl.field, (-2 - t if self.side == "top" else t)
 
     def exact(self, j, k, target):
         """The state between grid indices j, k where the held quantity equals target."""
@@ -69,9 +68,9 @@ class SingleTrack:
     def fold_a(self, j):
         """Contact parameter of the stationary point of the held quantity next to grid index j: the sign change
         of its slope in the table cell on either side of j, refined exactly as branches.roots refines it (the
-        same bracket, so the same double as jkrcyl.analysis.branches.stationary_points)."""
-        field = SLOPE_OF[HELD[self.control][0]]
-        name, scaled = _br.SLICE_OF_CURVE[field]
+        same bracket, so the same double as jkrcyl.analysis.branches.stationary_roots)."""
+        field = CONTROLS[self.control].field_slope
+        name, scaled = CURVE_FIELD[field]
         v = np.asarray(getattr(_br.table(self.pb, self.regime), name)) * (self.pb.scale if scaled else 1.0)
         sv = solver(self.pb)
         for i in (j - 1, j):
@@ -97,7 +96,7 @@ def walk(track: SingleTrack, i: int, target: float):
         return [i], "target", track.state_at(track.a[i])
     nxt = [k for k in (i - 1, i + 1) if 0 <= k < y.size and sgn * (y[k] - y[i]) > 0 and stable[k] and feas[k]]
     if not nxt:
-        return [i], "fold", track.fold(i)
+        return [i], "fold", _fold(track, i, sgn)
     step = nxt[0] - i
     j, passed = i, [i]
     while 0 <= j + step < y.size:
@@ -107,13 +106,21 @@ def walk(track: SingleTrack, i: int, target: float):
         if not feas[k]:
             return passed, "gap", track.state_at(track.a[j])
         if not stable[k] or sgn * (y[k] - y[j]) <= 0:
-            return passed, "fold", track.fold(j)
+            return passed, "fold", _fold(track, j, sgn)
         j = k
         passed.append(j)
     return passed, "end", track.state_at(track.a[j])
 
 
-def walk_two_patch(pb: Problem, un: _fw.Units, s, target: float, control: str):
+def _fold(track, j: int, sgn: int):
+    """The fold next to grid index j; the point j itself where the refined stationary point holds less than it
+    (a corner of the branch, as the cohesive round-zone tail's join: no smooth extremum between the points)."""
+    f = track.fold(j)
+    held = getattr(f, "held", None)           # (a track of the fit's own states: no held value to compare)
+    return f if held is None or sgn * (held() - track.y[j]) >= 0 else track.state_at(track.a[j])
+
+
+def walk_two_patch(pb: Problem, un: Units, s, target: float, control: str):
     """On a traced two-patch branch from state s towards target: (visited states, event, end state); states
     between branch points by linear interpolation of the half-angles, solved afresh."""
     best = None
@@ -122,9 +129,9 @@ def walk_two_patch(pb: Problem, un: _fw.Units, s, target: float, control: str):
         if best is None or d.min() < best[0]:
             best = (d.min(), b, int(np.argmin(d)))
     _, b, i = best
-    key, _, stab, _ = CONTROLS[control]
-    y = np.asarray(getattr(b, key)) * (un.load_scale if control == "load" else un.Delta)
-    stable = getattr(b, stab)
+    ctl = CONTROLS[control]
+    y = np.asarray(getattr(b, ctl.normalised)) * un.per_normalised(control)
+    stable = getattr(b, ctl.stable)
     state = lambda e, et: _fw.two_patch_state(pb, un, _tr._two.equilibrium_state(pb, e, et), control)
     sgn = 1 if target > y[i] else -1
     step = next((k - i for k in (i - 1, i + 1) if 0 <= k < y.size and sgn * (y[k] - y[i]) > 0), None)
@@ -140,7 +147,7 @@ def walk_two_patch(pb: Problem, un: _fw.Units, s, target: float, control: str):
         if not stable[k] or not b.feasible[k] or sgn * (y[k] - y[j]) <= 0:
             return seen, "fold", state(float(b.eps[j]), float(b.eps_top[j]))
         j = k
-        seen.append((b.P_star[j] * un.load_scale, b.delta_over_Delta[j] * un.Delta, "two-patch", b.a[j]))
+        seen.append((un.physical("load", b.P_star[j]), un.physical("grip", b.delta_over_Delta[j]), "two-patch", b.a[j]))
     return seen, "fold", state(float(b.eps[j]), float(b.eps_top[j]))
 
 
@@ -148,9 +155,16 @@ def _other(side):
     return {"bottom": "top", "top": "bottom"}.get(side, side)
 
 
-def continuation(pb: Problem, un: _fw.Units, s, control: str):
+def continuation(pb: Problem, un: Units, s, control: str):
     """The state where the branch of s continues past its end (the cohesive contact branch's touch end and the
-    zone-only branch, SinglePatch.continues; a floats_onto touch end: the free pin at its range's end), or None."""
+    zone-only branch, SinglePatch.continues; the round-zone tail and the bonded pin at its bond limit, into each
+    other; a floats_onto touch end: the free pin at its range's end), or None."""
+    if s.branch == "full-contact":            # the bond breaks: at the top pushing (P > 0), at the bottom pulling
+        sv = solver(pb)
+        end = float(np.asarray(_br.table(pb, "super-critical").a)[-1]) if sv.has("super-critical") else None
+        ok = end is not None and sv.continues("super-critical", end) == ("full-contact", math.inf)
+        return _fw.single_patch_states(pb, un, "super-critical", [end], control,
+                                       "bottom" if s.P_star > 0 else "top")[0] if ok else None
     regime = s.branch.replace("-top", "")
     if regime == "sub-critical" and s.a == solver(pb).floats_onto():     # back to the touch: the pin floats
         hi = solver(pb).free_range()[1]
@@ -158,10 +172,13 @@ def continuation(pb: Problem, un: _fw.Units, s, control: str):
     nxt = solver(pb).continues(regime, s.a) if solver(pb).has(regime) else None
     if nxt is None:
         return None
+    if nxt[0] == "full-contact":              # the round-zone tail closing into the bonded pin, at the held value
+        key = CONTROLS[control].normalised
+        return _fw.full_contact_state(pb, un, key, getattr(s, key), control)     # either side: the same pin
     return _fw.single_patch_states(pb, un, nxt[0], [nxt[1]], control, s.side)[0]
 
 
-def land(pb: Problem, un: _fw.Units, s, event: str, control: str, value: float, up: bool):
+def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: bool):
     """The state a jump from s lands on, at the same held value, and the jump's kind ('snap-in', 'pull-off',
     'zip', 'top-contact'; 'continue' where a branch goes on as another, without a jump); (None, kind) when no
     stable, feasible state is there."""
@@ -177,7 +194,7 @@ def land(pb: Problem, un: _fw.Units, s, event: str, control: str, value: float, 
     # two-patch states are traced by continuation: only where the contact grows or the top closes
     quick = event == "touch" or (event == "fold" and s.branch.startswith("sub-critical"))
     names = [b for b in _fw.BRANCH_SOLVERS if not (quick and b == "two-patch")]
-    target = value / (un.load_scale if control == "load" else un.Delta)
+    target = un.normalise(control, value)
 
     def candidates(branches):
         return [x for x in _fw.solve_normalised(pb, un, control, target, branches) if x.stable and x.feasible
@@ -196,7 +213,8 @@ def land(pb: Problem, un: _fw.Units, s, event: str, control: str, value: float, 
             return floated, "continue"
         if first != names and not any(x.side == side for x in cands):
             cands = candidates(names)
-        on = [x for x in cands if x.side == side] or [x for x in cands if x.side == "both"]
+        on = [x for x in cands if x.side == side] or [x for x in cands if x.side == "both" and
+                                                      _zips_round(pb, un, control, target, side)]
         return (min(on, key=lambda x: x.size), "snap-in") if on else (None, "snap-in")
     if event in ("fold", "end") and s.branch.startswith("contactless"):    # the zone-only pin (cohesive)
         if up:
@@ -220,7 +238,19 @@ def land(pb: Problem, un: _fw.Units, s, event: str, control: str, value: float, 
     if event == "fold":
         grow = [x for x in cands if x.size > s.size and x.side in (s.side, "both")]
         return (min(grow, key=lambda x: x.size), "zip") if grow else (None, "zip")
+    if not pb.models("two-patch"):       # the top closes: the nascent top contact needs two patches
+        return None, "top-contact"
     return _land_on_top_contact(pb, s, cands, control, target), "top-contact"
+
+
+def _zips_round(pb, un, control, target, side):
+    """Whether a pin with no stable, feasible state on its side at first touch zips round (lands on both): with
+    two patches modelled always, else where it has no single-patch state there at all (one overlapping the top
+    would form a second patch)."""
+    if pb.models("two-patch"):
+        return True
+    names = [b for b in _fw.BRANCH_SOLVERS if b not in ("separated", "full-contact", "two-patch")]
+    return not any(x.side == side for x in _fw.solve_normalised(pb, un, control, target, names))
 
 
 def _pull_off_landing(s, cands, control):
@@ -259,7 +289,7 @@ def _land_on_top_contact(pb, s, cands, control, target):
     return min(pool, key=lambda x: math.hypot(x.eps - end[0], x.eps_top - end[1]))
 
 
-def first_contact(pb: Problem, un: _fw.Units, control: str):
+def first_contact(pb: Problem, un: Units, control: str):
     """(free pin touching the bottom, the state it snaps into, kind): at P = 0 under load control (the zero-load
     contact (8.1); full contact when there is none, M > M_max), at the held approach 0 under grip.
 
@@ -273,7 +303,7 @@ def first_contact(pb: Problem, un: _fw.Units, control: str):
     return sep, to, kind
 
 
-def _floats_onto(pb: Problem, un: _fw.Units, control: str, side: str):
+def _floats_onto(pb: Problem, un: Units, control: str, side: str):
     """The touch end (SinglePatch.floats_onto) a pin floating in a cohesive range goes on onto at the side, no
     jump, if stable, feasible and, under load, pushing (else the pin is drawn in); else None."""
     a = solver(pb).floats_onto()
@@ -285,41 +315,7 @@ def _floats_onto(pb: Problem, un: _fw.Units, control: str, side: str):
     return s if s.stable and s.feasible and at else None
 
 
-def unmodelled(pb: Problem) -> str:
-    """Why no path can be followed on this problem's branch ('' when it can; the single-patch solver knows)."""
-    return solver(pb).unmodelled
-
-
-def no_first_contact_reason(pb: Problem, control: str = "load") -> str:
-    """Why first contact snaps into no state: the reason pull_off and cycle print."""
-    why = "no stable, feasible state at first contact"
-    if not pb.models("two-patch"):      # e.g. the cohesive law: one patch, traced on its sub-critical branch
-        return why + (_single_patch_only(pb) if control == "load" else "") + (
-            f" (on the single-patch branches, the ones modelled for the {pb.edge.name} law: two patches and full "
-            "contact are not)")
-    if pb.rigid_cradle:      # full contact and two patches need a finite vartheta (model.full_contact)
-        why += (" (a rigid cradle, vartheta = inf: a pin that zips round into full contact at first touch is not "
-                "modelled, full contact and two patches needing a finite vartheta)")
-    return why
-
-
-def _single_patch_only(pb: Problem) -> str:
-    """What a law with one patch only misses at first contact under load: its zero-load states overlap the top
-    (h(pi) < 0, where JKR's pin forms a second patch), or it has none (M above the largest M with one, where
-    JKR's pin zips round into full contact); '' otherwise -- each with the law's own message (Edge.require)."""
-    sv = solver(pb)
-    h = [sv.value("h", a) for regime in sv.regimes() if regime != _br.ZONE_ONLY for a, _ in _br.roots(pb, regime, "p")]
-    if any(x < 0 for x in h):
-        return (f": the zero-load contact overlaps the top of the hole (h(pi) = {min(h):.6g} Delta < 0), where "
-                "a second patch forms -- " + pb.not_modelled("two-patch", "a contact at the bottom and the top "
-                                                                          "(two patches) is"))
-    if not h:
-        return (": no zero-load contact on one patch (M above the largest M with one: the pin zips round at first "
-                "touch) -- " + pb.not_modelled("full-contact", "the pin bonded all round (full contact) is"))
-    return ""
-
-
-def pull_path(pb: Problem, un: _fw.Units, control: str):
+def pull_path(pb: Problem, un: Units, control: str):
     """The path of slow pulling from first contact: (start, event, state).  start is the state first contact
     snaps into (None: no stable, feasible one); event: 'bonded' (start is full contact), 'elsewhere' (start is
     not a bottom single patch), else the walk's event down the start's branch to -inf (fold, gap, end) and the

@@ -17,8 +17,9 @@ from __future__ import annotations
 from ..model.problem import Problem
 from ..model.single_patch import solver
 from ..results import PullOff
-from . import forward as _fw
+from ..units import Units
 from . import path as _path
+from . import reasons as _reasons
 
 
 def grows_under_pull(pb: Problem, a: float, control: str) -> bool:
@@ -27,7 +28,7 @@ def grows_under_pull(pb: Problem, a: float, control: str) -> bool:
     return solver(pb).grows_under_pull(a, control)
 
 
-def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
+def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
     """Detachment along the quasi-static path (module docstring) under ``control``."""
     if pb.M == 0:
         return PullOff(control, None, None, None, None, "no adhesion (w = 0): the contact vanishes at P = 0")
@@ -40,7 +41,7 @@ def pull_off(pb: Problem, un: _fw.Units, control: str) -> PullOff:
         return PullOff(control, None, None, None, None, solver(pb).no_adherence_reason)
     start, event, s = _path.pull_path(pb, un, control)
     if event == "none":
-        return PullOff(control, None, None, None, None, _path.no_first_contact_reason(pb, control) + ": no path to follow")
+        return PullOff(control, None, None, None, None, _reasons.no_first_contact_reason(pb, control) + ": no path to follow")
     if event == "bonded":
         return PullOff(control, None, None, None, start,
                        "no stable zero-load contact (M above the largest M with one): at first touch the contact "

@@ -18,8 +18,8 @@ def run(args):
     table.update({k: getattr(cv, k) for k in ("c", "c_top") if getattr(cv, k) is not None})   # cohesive zone ends
     c = pi.contact
     if c is not None:
-        table.update(P=cv.P_star * c.load_scale, delta=cv.delta_over_Delta * c.Delta,
-                     delta_work=cv.delta_work_over_Delta * c.Delta)
+        dimensional = cv.with_units(c.units)
+        table.update({k: getattr(dimensional, k) for k in ("P", "delta", "delta_work")})
     out = open(args.output, "w") if args.output else sys.stdout
     try:
         if args.format == "json":

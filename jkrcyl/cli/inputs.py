@@ -33,6 +33,7 @@ from .. import equilibria as eq
 from ..contact import Contact
 from ..laws import CrackKinetics
 from ..materials import Materials
+from ..units import CONTROLS
 
 PHYSICAL = (("E", "Young's modulus of the body with the hole [Pa] (inf: rigid)"), ("nu", "its Poisson ratio"),
             ("E-I", "Young's modulus of the cylinder [Pa] (inf: rigid)"), ("nu-I", "its Poisson ratio"),
@@ -43,7 +44,7 @@ GB_HELP = ("(1/G_I)/beta* in [0, 1]: only delta/Delta, delta_work/Delta and the 
            "bodies have 1/2.8 = 0.3571, a rigid pin 0). The value used is printed with every answer")
 UNITS = {"a": "", "a_top": "", "eps": "rad", "eps_top": "rad", "contact_width": "m", "P": "N/m", "delta": "m",
          "delta_work": "m", "h_pi": "m", "K": "Pa m^1/2", "P_star": "", "delta_over_Delta": "", "energy": "J/m"}
-PHYSICAL_UNITS = {"P": "N/m", "delta": "m", "delta_work": "m"}
+PHYSICAL_UNITS = {c.physical: c.unit for c in CONTROLS.values()}
 
 
 def number_arg(text):

@@ -3,7 +3,7 @@ only."""
 from __future__ import annotations
 
 from ..analysis.forward import BRANCH_SOLVERS
-from ..results.states import CONTROLS
+from ..units import control_of_physical
 from . import inputs
 
 
@@ -14,7 +14,7 @@ def run(args):
         raise ValueError("P: give exactly one of --P [N/m], --delta [m] and --delta-work [m]")
     branches = [b for b in BRANCH_SOLVERS if b != "two-patch"] if args.no_two_patch else None
     states = c.solve(**given, branches=branches)
-    control = next(k for k, spec in CONTROLS.items() if spec[3] in given)
+    control = control_of_physical(next(iter(given))).name
     pb = c.problem
     meta = {"M": pb.M, "theta": pb.theta, "gb": pb.gb, "alpha_ratio": pb.alpha_ratio, "control": control,
             "edge": pb.edge.name, "h0": c.h0}

@@ -21,9 +21,9 @@ from ..contact import Contact
 from ..laws import CrackKinetics
 from ..materials import Materials
 from ..model.single_patch import solver
+from ..units import CONTROLS as UNIT_CONTROLS
 
 CONTROLS = ("load", "grip-work", "grip")        # jkrcyl._validate.CONTROLS, in the order the page shows them
-STABLE_FLAG = {"load": "stable_load", "grip-work": "stable_grip_work", "grip": "stable_grip"}
 BRANCHES = ("sub-critical", "super-critical", "contactless")   # one patch at the bottom (a law has two of them)
 CYCLE_POINTS = 400
 CURVE_POINTS = 500
@@ -149,10 +149,10 @@ def _branches(c: Contact, control: str) -> list:
     pb = c.problem
     out = []
     for regime in solver(pb).regimes():
-        cv = _tables.table(pb, regime).with_units(c.load_scale, c.Delta)
+        cv = _tables.table(pb, regime).with_units(c.units)
         keep = np.unique(np.linspace(0, len(cv.P) - 1, min(len(cv.P), CURVE_POINTS)).astype(int))
         out.append(Branch(regime, np.asarray(cv.delta_work)[keep], np.asarray(cv.P)[keep],
-                          np.asarray(getattr(cv, STABLE_FLAG[control]), dtype=bool)[keep],
+                          np.asarray(getattr(cv, UNIT_CONTROLS[control].stable), dtype=bool)[keep],
                           np.asarray(cv.feasible, dtype=bool)[keep]))
     return out
 

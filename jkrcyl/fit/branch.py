@@ -23,6 +23,7 @@ from scipy.interpolate import CubicSpline
 from ..analysis import path as _path
 from ..model import stability as _stab
 from ..numerics import roots as _roots
+from ..units import CONTROLS
 from . import model
 
 RIGID_A_MAX = 3.0    # vartheta = inf, alpha* = 0: no pole; the branch is searched up to this a
@@ -127,7 +128,7 @@ class Track:
         self.tab = table(sp.materials)
         self.k = sp.k
         s = model.superpose(self.tab.unit, self.k)
-        self.held, self.held_slope = _stab.HELD[control]
+        self.held, self.held_slope = CONTROLS[control].field, CONTROLS[control].field_slope
         self.a = self.tab.a
         self.y = getattr(s, self.held)
         self.slope_y = getattr(s, self.held_slope)

@@ -169,7 +169,15 @@ def validate(P, width=None, delta_work=None, sigma_P=None, sigma_width=None, sig
 class Table:
     """A CSV file read by :func:`read_csv`: ``columns`` (keyword arguments of jkrcyl.fit: P, width or delta_work,
     sigma_*, leg) and ``meta`` (the '# key=value' settings of its comment lines: R, Delta, E, nu, E_I, nu_I,
-    control, w)."""
+    control, w).
+
+    Examples
+    --------
+    >>> import pathlib, jkrcyl
+    >>> t = jkrcyl.fit.read_csv(pathlib.Path(jkrcyl.__file__).parents[1] / "docs" / "fit_example.csv")
+    >>> type(t).__name__, len(t.columns["P"]) == len(t.columns["width"]), t.meta["Delta"]
+    ('Table', True, 3e-06)
+    """
 
     columns: dict
     meta: dict = field(default_factory=dict)

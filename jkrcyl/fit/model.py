@@ -45,8 +45,10 @@ def width_of_a(a, R):
 
 def contact(R, Delta, w, materials, strength=None, law=None) -> Contact:
     """The library's contact (validates R, Delta, w; strength: the cohesive sigma0 [Pa], None for JKR; law: an edge
-    law, Contact(..., law=)): every contact of the fit is built here."""
-    return Contact(R=R, Delta=Delta, w=w, materials=materials, sigma0=strength, law=law)
+    law, Contact(..., law=)): every contact of the fit is built here.  A strength makes the law Dugdale's: the
+    superposed path's law (resolved once from the user's, jkrcyl.fit.estimate) then has no say."""
+    return Contact(R=R, Delta=Delta, w=w, materials=materials, sigma0=strength,
+                   law=law if strength is None else None)
 
 
 def contact_with_lambda(R, Delta, w, materials, lambda_) -> Contact:
@@ -181,7 +183,7 @@ class States(NamedTuple):
 
 def load_per_p(c: Contact) -> float:
     """P / p: 4 pi Delta/beta* [N/m] (the kernel scale, section 6: p = vartheta P*, P* = P/load_scale)."""
-    return c.load_scale / c.problem.scale
+    return c.units.per_kernel("load")
 
 
 REF_W = 1.0          # [J/m^2] the reference contact of a pair's shape (any w > 0: M is proportional to sqrt(w))
@@ -211,7 +213,7 @@ class Superposed:
     @classmethod
     def of(cls, c: Contact, materials: Materials) -> "Superposed":
         pb = c.problem
-        return cls(materials, law_coefficient(pb, pb.m), c.load_scale / pb.scale, c.Delta, pb.work_shift,
+        return cls(materials, law_coefficient(pb, pb.m), c.units.per_kernel("load"), c.Delta, pb.work_shift,
                    lambda: c)
 
     @classmethod
@@ -222,7 +224,7 @@ class Superposed:
             raise ValueError(f"Delta, w: outside 0 < Delta < R, w >= 0 (Delta = {Delta!r}, w = {w!r}, f = {f!r})")
         ref, pb = reference(R, materials, law)
         M = pb.M * math.sqrt(ref.law.edge_work(w) / (ref.law.edge_work(REF_W) * f)) * ref.Delta / Delta
-        return cls(materials, law_coefficient(pb, M * pb.scale), ref.load_scale / pb.scale * f * Delta / ref.Delta,
+        return cls(materials, law_coefficient(pb, M * pb.scale), ref.units.per_kernel("load") * f * Delta / ref.Delta,
                    Delta, pb.work_shift,
                    lambda: contact(R, Delta, w, scaled(materials, f) if f != 1.0 else materials, law=law))
 

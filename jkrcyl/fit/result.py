@@ -24,6 +24,19 @@ class FitResult:
     stated standard deviations (equal to residuals when none was stated).  pull_off: {w [J/m^2]: the fixed-load
     pull-off force [N/m] of the fitted contact (None: no detachment on the path from first contact)}, the force the
     rows were checked against (Contact.pull_off's path; jkrcyl.fit.checks).
+
+    Examples
+    --------
+    >>> import jkrcyl, numpy as np
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> c = jkrcyl.Contact(R=0.01, Delta=3e-6, w=0.05, materials=m)     # synthetic widths of a known contact
+    >>> width = np.linspace(7e-3, 20e-3, 12)
+    >>> res = jkrcyl.fit(P=c.state(np.tan(width / 0.04)).P, width=width, R=0.01, Delta=3e-6, materials=m,
+    ...                  free=("w",), sigma_P=1.0, interval=None)
+    >>> res.names, res.kind, res.n, round(res.contact().w, 6)
+    (('w',), 'width', 12, 0.05)
+    >>> res.table().splitlines()[0].split()[:3]
+    ['parameter', 'value', 'std']
     """
 
     names: tuple

@@ -11,6 +11,7 @@ import numpy as np
 
 from .._validate import count, finite_scalar, real_array
 from ..laws.kinetic import kinetics_of
+from ..units import CONTROLS
 from .history import TERMINAL
 from .results import RateCycle, RatePullOff
 from .run import Run, rest_start
@@ -18,7 +19,6 @@ from .run import Run, rest_start
 MAX_RAMPS = 40             # a pull-off ramp is extended by factors of 4 at most this often
 MAX_LOOPS = 60             # cycles driven at most until the loop repeats
 LOOP_REPEATS = 1e-6        # relative change of the loop's work from one cycle to the next that counts as a repeat
-HELD_NAME = {"load": "P", "grip": "delta", "grip-work": "delta_work"}
 
 
 def check_rate(rate) -> float:
@@ -51,7 +51,7 @@ def pull_off(contact, control: str, rate: float, route: str = "table", rtol: flo
     hist = run.history()
     if end not in TERMINAL:
         return RatePullOff(control, None, None, None, None, f"no event up to t = {hist.t[-1]:.6g} s "
-                           f"({HELD_NAME[control]} = {x0 - rate * hist.t[-1]:.6g})", rate=rate, history=hist)
+                           f"({CONTROLS[control].physical} = {x0 - rate * hist.t[-1]:.6g})", rate=rate, history=hist)
     i = hist.peak
     ev = hist.events[-1]
     what = {"separation": "the contact vanished", "top-contact": "the gap at phi = pi closed first",
@@ -119,7 +119,7 @@ def cycle(contact, control, hi, lo, rate, n=2000, route="table", rtol=None) -> R
         raise ValueError(f"rate: {why or 'no adhesion (w = 0)'}: no cycle to drive")
     x0 = start.held(control)
     if not lo < x0 < hi:
-        raise ValueError(f"{HELD_NAME[control]}: the cycle must contain the start at rest, {lo!r} < {x0!r} < {hi!r}")
+        raise ValueError(f"{CONTROLS[control].physical}: the cycle must contain the start at rest, {lo!r} < {x0!r} < {hi!r}")
     run = Run(contact, control, start, _largest_contact(contact, control, start, hi), route, rtol)
     legs, tops, loops, end, repeated = [0], [], [], "", False
     t, x = 0.0, x0

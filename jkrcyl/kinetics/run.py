@@ -11,8 +11,8 @@ import math
 
 import numpy as np
 
-from ..analysis import forward as _fw
 from ..analysis import path as _path
+from ..analysis import reasons as _reasons
 from ..laws.kinetic import kinetics_of
 from . import integrate as _int
 from .arc import DirectArc, TabulatedArc
@@ -33,10 +33,10 @@ def rest_start(contact, control: str, held=None):
     """The equilibrium at rest a drive starts from: the zero-load contact of first contact (the quasi-static
     path, jkrcyl.analysis.path) or, with ``held`` (the held quantity, SI), the state that path reaches at it.
     Returns (state, '') or (None, why not); cached per contact."""
-    pb, un = contact.problem, _fw.Units.of(contact)
+    pb, un = contact.problem, contact.units
     _, to, _ = _path.first_contact(pb, un, "load")
     if to is None:
-        return None, _path.no_first_contact_reason(pb)
+        return None, _reasons.no_first_contact_reason(pb)
     if to.branch != "sub-critical" or to.side != "bottom":
         return None, (f"the zero-load contact is on the {to.branch} branch (full contact, two patches or a "
                       "super-critical contact: crack kinetics are modelled for the sub-critical bottom patch)")
@@ -57,7 +57,7 @@ class Run:
         self.law = kinetics_of(contact.law)
         self.contact, self.control = contact, control
         pb = self.problem = contact.problem
-        self.units = _fw.Units.of(contact)
+        self.units = contact.units
         self.rtol = _int.RTOL if rtol is None else rtol
         a0 = start.a
         if check_route(route) == "direct":
@@ -76,7 +76,7 @@ class Run:
     @property
     def unit(self) -> float:
         """SI per kernel unit of the held quantity: N/m (load) or m (either approach)."""
-        return self.units.load_scale / self.problem.scale if self.control == "load" else self.units.Delta
+        return self.units.per_kernel(self.control)
 
     def to_kernel(self, value):
         return value / self.unit
@@ -124,7 +124,7 @@ class Run:
         t, p, dn, dw, eps, x, V, h, W, D, total = ode.record(Y, np.array(self.held_at))
         W = W - W[0]                                       # the work since the start
         w = self.contact.law.edge_work(self.contact.w)
-        P = p * self.units.load_scale / self.problem.scale
+        P = self.units.from_kernel("load", p)
         hist = History(control=self.control, t=t, P=P, delta=dn * un.Delta, delta_work=dw * un.Delta, eps=eps,
                        contact_width=2 * un.R * eps, G=w * x, v=V, h_pi=h * un.Delta, work=W * un.energy_scale,
                        dissipated=D * un.energy_scale, potential=total * un.energy_scale, note=self._note())

@@ -56,6 +56,16 @@ class RateSweep:
         The high-rate power law per rate [N/m] (:func:`high_rate_pull_off`; load control, NaN otherwise).
     exponent : float
         Its exponent n/(n + 2).
+
+    Examples
+    --------
+    >>> import jkrcyl
+    >>> m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    >>> pin = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m,
+    ...                      kinetics=jkrcyl.CrackKinetics(v_star=1e-6, n=0.6))
+    >>> sw = rate_sweep(pin, [1e-12, 1e-11], control="grip-work")    # m/s
+    >>> list(sw.table()), sw.exponent == 0.6 / 2.6                  # Barquins' high-rate exponent n/(n + 2)
+    (['rate', 'P', 'kind', 'asymptote'], True)
     """
 
     control: str
@@ -169,7 +179,7 @@ def frozen_pull_off(contact) -> Optional[float]:
     if not y[H1] < 0:
         return None
     g = -y[H0] / y[H1]
-    return float((y[P0] + g * y[P1]) * contact.load_scale / contact.problem.scale)
+    return float(contact.units.from_kernel("load", y[P0] + g * y[P1]))
 
 
 def high_rate_pull_off(contact, rate: float) -> Optional[float]:
@@ -214,7 +224,7 @@ def high_rate_pull_off(contact, rate: float) -> Optional[float]:
         return 2 * R * abs(arc.at(u)[0][P1]) ** (2 / n) / ((1 + a * a) * v) * a
 
     I = quad(integrand, math.log(start.a * _int.A_FLOOR), math.log(start.a), limit=200, epsrel=1e-12)[0]
-    unit = contact.load_scale / contact.problem.scale               # N/m per kernel unit of load
+    unit = contact.units.per_kernel("load")                         # N/m per kernel unit of load
     rho = rate / unit
     t_s = ((1 + 2 / n) * I / rho ** (2 / n)) ** (n / (n + 2))
     return -rate * t_s

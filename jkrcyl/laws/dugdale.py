@@ -4,8 +4,9 @@ w = sigma0 h0.
 Dimensional: :class:`Dugdale` (sigma0 [Pa]).  Normalised: :class:`DugdaleEdge`, s0 = sigma0 R beta*/(4 pi Delta)
 (the zone traction in the units of nu = N R beta*/(4 pi Delta)), range h0/Delta = m^2/s0; the contact edge has a
 finite stress in equilibrium (edge coefficient 0, Maugis).  Its single-patch solver is jkrcyl.model.cohesive (the
-contact branches with their zone on either side of the receding limit, traced; the zone-only pin); two patches and
-full contact are not modelled for it.
+contact branches with their zone on either side of the receding limit, traced; the zone-only pin); full contact
+is JKR's bonded pin where the tension stays below s0 (:meth:`DugdaleEdge.bond_strength`,
+jkrcyl.model.full_contact.holds); two patches are not modelled for it.
 """
 from __future__ import annotations
 
@@ -22,8 +23,8 @@ from .griffith import GRIFFITH_EDGE
 class DugdaleEdge(Edge):
     """The normalised Maugis-Dugdale law: the zone traction s0 = sigma0 R beta*/(4 pi Delta) > 0.
 
-    Its branch families: the sub- and super-critical single patch with its zone and the zone alone
-    ('contactless').
+    Its branch families: the sub- and super-critical single patch with its zone, the zone alone
+    ('contactless') and the bonded pin ('full-contact', where the tension stays below s0).
 
     Examples
     --------
@@ -38,7 +39,7 @@ class DugdaleEdge(Edge):
     s0: float
     name = "Maugis-Dugdale"
     param = "sigma0"
-    families = frozenset({"contactless", "super-critical"})
+    families = frozenset({"contactless", "super-critical", "full-contact"})
 
     def __post_init__(self):
         object.__setattr__(self, "s0", finite_scalar("s0", self.s0, low=0.0, low_open=True))
@@ -90,6 +91,16 @@ class DugdaleEdge(Edge):
         'Cohesive'
         """
         return Cohesive(problem)
+
+    def bond_strength(self) -> float:
+        """s0: the bonded pin holds a tension up to the zone traction (Edge.bond_strength).
+
+        Examples
+        --------
+        >>> DugdaleEdge(s0=0.1).bond_strength()
+        0.1
+        """
+        return self.s0
 
     def edge_coefficient(self, m: float) -> float:
         """0: a finite stress at the contact edge in equilibrium (Maugis; Edge.edge_coefficient).

@@ -115,10 +115,6 @@ class Griffith(EdgeLaw):
 
     name = "JKR"
 
-    def arguments(self) -> dict:
-        """``{}`` for JKR itself (Contact's default law), ``{"law": self}`` for a law of one's own derived from it."""
-        return {} if self == Griffith() else {"law": self}
-
     def edge(self, contact: "jkrcyl.Contact") -> Edge:
         """:data:`GRIFFITH_EDGE`, whatever the contact (EdgeLaw.edge).
 

@@ -29,9 +29,9 @@ zone end grows with the zone).  The total potential (elastic + Dugdale interface
 dE = p d(delta/Delta) along the branches.  A zone reaching round at the touch end that stops reaching round by
 a jump of its first zone-end root (jkrcyl.numerics.cohesive_branch.top_opens) is an S-shaped branch -- the round
 zone, then the root near the top back in eps to a fold, then the first root -- traced whole
-(jkrcyl.numerics.cohesive_round), or a top bridge.  Not modelled: two patches and full contact
-(jkrcyl.laws.dugdale: the law's families), super-critical states with a zone all round (past the zone reaching
-round), top-zone bridges (jkrcyl.numerics.cohesive_zones finds them; :attr:`unmodelled` says so).
+(jkrcyl.numerics.cohesive_round), or a top bridge.  Full contact is the bonded pin of jkrcyl.model.full_contact
+(where the tension stays below s0).  Not modelled: two patches (jkrcyl.laws.dugdale: the law's families),
+top-zone bridges (jkrcyl.numerics.cohesive_zones finds them; :attr:`unmodelled` says so).
 """
 from __future__ import annotations
 
@@ -71,14 +71,17 @@ class Cohesive(SinglePatch):
     @functools.cached_property
     def _sub(self):
         """The sub-critical branch (jkrcyl.numerics.cohesive_branch.trace), a = 2 + t."""
-        return _ct.Traced(self.law, _cb.trace(self.law), _ct.SUB_OFFSET)
+        got = _cb.trace(self.law)                  # (x, kind, reason[, n_round]: the S-branch's round prefix)
+        return _ct.Traced(self.law, got[:3], _ct.SUB_OFFSET, n_round=got[3] if len(got) > 3 else 0)
 
     @functools.cached_property
     def _super(self):
         """The super-critical branch (jkrcyl.numerics.cohesive_super.trace), a = SUPER_OFFSET + t; None where
         there is none or it has no state below the load cap."""
         got = _csu.trace(self.law)
-        return None if got is None or len(got[0]) < 2 else _ct.Traced(self.law, got, _ct.SUPER_OFFSET)
+        if got is None or len(got[0]) < 2:
+            return None
+        return _ct.Traced(self.law, got[:3], _ct.SUPER_OFFSET, tail=got[3] if len(got) > 3 else ())   # [3]: its tail
 
     def _branch(self, regime):
         if regime == "super-critical":
@@ -260,7 +263,9 @@ class Cohesive(SinglePatch):
 
     def continues(self, regime, a):
         """The contact branch's touch end (a = 2) continues as the contactless one from the touch (a = 1) and
-        back."""
+        back; the super-critical round-zone tail's end next to full contact as the bonded pin (a = inf)."""
+        if regime == "super-critical" and self.has(regime) and _csu.reaches_full(self._super.tail, a, self._super):
+            return "full-contact", math.inf
         if self._contactless is None:
             return None
         if regime == "sub-critical" and a <= 2.0 + 1e-9 * max(1.0, self._sub.t[-1]):

@@ -17,19 +17,32 @@ from ..numerics import cohesive_branch as _cb
 from ..numerics import cohesive_super as _csu
 
 SUB_OFFSET = 2.0
+JOIN = 1e-6              # the parameter step from a trace's last zone point to its round-zone tail (the zone
+                         # states between, c -> pi, are not traced: a state there is the tail's first)
 SUPER_OFFSET = 1000.0     # above any sub-critical parameter: that trace's arclength is at most 1500 x 0.25 = 375
 
 
 class Traced:
     """A traced branch: ``x`` (n, 2), ``t`` (n,), ``kind`` ('zone' or 'all'), ``reason`` ('' when the trace ended
-    where the branch leaves its domain) and ``offset`` (a = offset + t)."""
+    where the branch leaves its domain) and ``offset`` (a = offset + t).  A sub-critical trace can start with a
+    round prefix (``n_round`` points with the zone all round: the S-shaped branch, jkrcyl.numerics.cohesive_round).
+    A super-critical 'zone' trace whose zone reached round can carry a tail (``tail``: the eps of its states with
+    the zone all round, beyond the last point, from its join): t goes on there as JOIN + log(eps/eps_join)."""
 
-    def __init__(self, law, traced, offset):
-        x, kind, reason = traced[:3]
+    def __init__(self, law, traced, offset, n_round=0, tail=()):
+        x, kind, reason = traced
         keep = np.concatenate([[True], np.any(np.diff(x, axis=0) != 0, axis=1)])
         self.law, self.x, self.kind, self.reason, self.offset = law, x[keep], kind, reason, offset
-        self.n_round = int(np.count_nonzero(keep[:traced[3]])) if len(traced) > 3 else 0
+        self.n_round = int(np.count_nonzero(keep[:n_round]))
         self.t = self.x[:, 0] - self.x[0, 0] if kind == "all" else _cb.arclength(self.x)
+        self.tail = np.asarray(tail, dtype=float)
+        self.t_round = float(self.t[-1])               # the last zone point; the tail starts JOIN past it
+        if self.tail.size:
+            self.t = np.concatenate([self.t, self.t_round + JOIN + np.log(self.tail / self.tail[0])])
+
+    def on_tail(self, a) -> bool:
+        """Whether the parameter a lies on the round-zone tail (beyond the traced zone end)."""
+        return bool(self.tail.size) and a - self.offset > self.t_round
 
     @property
     def a_end(self) -> float:
@@ -47,7 +60,9 @@ class Traced:
     def where(self, t):
         """(eps, c, direction) of the branch at t (exact: projected onto the curve); direction = (d eps, d c) of
         increasing t."""
-        x, tt = self.x, self.t
+        if self.tail.size and t > self.t_round:        # the round-zone tail: t = t_round + JOIN + log(eps/eps_join)
+            return self.tail[0] * math.exp(max(t - self.t_round - JOIN, 0.0)), math.pi, (1.0, 0.0)
+        x, tt = self.x, self.t[:len(self.x)]
         j = int(np.clip(np.searchsorted(tt, t) - 1, 0, len(tt) - 2))
         f = (t - tt[j]) / (tt[j + 1] - tt[j])
         chord = x[j + 1] - x[j]
@@ -87,8 +102,7 @@ def super_short(sv, br, a):
         return br.reason
     eps, c, _ = sv._where(br.a_end)
     if br.kind == "zone" and c >= math.pi - 2 * _csu.ROUND_MARGIN:
-        return (f"the zone reaches round the hole at eps = {eps:.6g} rad (h(pi) = h0): the super-critical "
-                "states beyond, with a zone all round, are not traced")
+        return _csu.round_end(eps, br.tail)
     if eps < _csu.EPS_TOP - 1e-2 and abs(sv.value("p", br.a_end)) > 0.5 * sv.law.p_cap:
         return f"traced up to |p| = P_CAP m^(4/3) = {sv.law.p_cap:.6g}"
     if a is None:              # the table's extent (forward searches): the branch's end, as the sub-critical one

@@ -87,6 +87,11 @@ class Edge:
         """
         raise NotImplementedError
 
+    def bond_strength(self) -> float:
+        """The largest tension -nu (kernel scale) a bonded interface holds: inf (JKR; the Maugis-Dugdale law: s0,
+        an opening of the bonded pin costs s0 h and releases the tension times h)."""
+        return math.inf
+
     def check(self, problem: "jkrcyl.model.problem.Problem") -> None:
         """Reject a problem the law cannot be used with (called once, when the Problem is made).
 
@@ -182,8 +187,8 @@ class Edge:
         Examples
         --------
         >>> from jkrcyl.laws import GRIFFITH_EDGE, DugdaleEdge
-        >>> GRIFFITH_EDGE.not_modelled("full-contact"), DugdaleEdge(s0=0.1).not_modelled("full-contact").split(" law")[0]
-        ('', 'sigma0: full-contact not modelled for the Maugis-Dugdale')
+        >>> GRIFFITH_EDGE.not_modelled("two-patch"), DugdaleEdge(s0=0.1).not_modelled("two-patch").split(" law")[0]
+        ('', 'sigma0: two-patch not modelled for the Maugis-Dugdale')
         """
         if self.models(family):
             return ""
@@ -265,13 +270,13 @@ class EdgeLaw:
         Returns
         -------
         dict
-            ``{"law": self}`` (JKR: ``{}``, the default; Dugdale: ``{"sigma0": sigma0}``, its shorthand).
+            ``{"law": self}`` (Dugdale: ``{"sigma0": sigma0}``, its shorthand: the same contact either way).
 
         Examples
         --------
         >>> import jkrcyl
         >>> jkrcyl.laws.Griffith().arguments()
-        {}
+        {'law': Griffith()}
         >>> jkrcyl.laws.Dugdale(sigma0=5e6).arguments()
         {'sigma0': 5000000.0}
         """

@@ -3,6 +3,13 @@
 n = N0 + N1 cos(phi) all round (the Fourier modes 0 and 1 of the kernel K of numerics.arcs, a convolution on the
 circle), N0 = -1/(pi (1 - 2 vartheta alpha*/beta*)) (-1/pi at alpha* = 0: the interface is in tension wherever
 |P*| < 1/(1 - 2 vartheta alpha*/beta*)).
+
+Any edge law: with no gap there is no edge and no zone, so the state is the same for every law with the same w
+(the elastic field fixes n, the interface energy is -w over the whole circle).  A law of finite strength (the
+Maugis-Dugdale traction s0, Edge.bond_strength) holds the bond only where the tension -vartheta n <= s0: an
+opening h > 0 anywhere costs s0 h of interface energy and releases -vartheta n h of elastic energy to first
+order, so the bonded pin is a strict minimum (stable under any control) where the tension is below s0
+everywhere, and no equilibrium where it exceeds it (:func:`holds`).
 """
 from __future__ import annotations
 
@@ -57,3 +64,17 @@ def at_work(pb: Problem, delta_work_over_Delta) -> FullContact:
     if slope == 0:
         raise ValueError("delta_work: full contact fixes no load at this delta_work (zero compliance)")
     return state(pb, P_star=(finite_scalar("delta_work", delta_work_over_Delta) + 1.0) / slope)
+
+
+def holds(pb: Problem, fc: FullContact) -> bool:
+    """Whether the bond holds under the edge law: the largest tension vartheta (|N1| - N0) (kernel scale, at phi = 0
+    or pi) is at most the law's bond strength (module docstring; always for JKR)."""
+    return pb.theta * (abs(fc.N1) - fc.N0) <= pb.edge.bond_strength()
+
+
+def bond_limit(pb: Problem, sign: float) -> float:
+    """P* (of the sign of ``sign``) where the bond stops holding, vartheta (|N1| - N0) = bond strength with
+    N1 = P*/pi: pi (strength/vartheta + N0) in magnitude (inf for JKR); nan where it never holds."""
+    N0, _ = law(pb)
+    size = math.pi * (pb.edge.bond_strength() / pb.theta + N0)
+    return math.copysign(size, sign) if size >= 0 else math.nan

@@ -9,13 +9,15 @@ from typing import NamedTuple
 import numpy as np
 
 from .._validate import A_MAX
+from ..units import CONTROLS
 from ..numerics import roots as _roots
 from . import stability as _stab
 
 A_SMALLEST = 1e-15       # the dense tables reach down to this contact parameter (or below, for tiny M)
 
 FIELDS = ("p", "dp_da", "dn", "ddn_da", "dw", "ddw_da", "h")
-SLOPE_OF = {"p": "dp_da", "dn": "ddn_da", "dw": "ddw_da"}
+#: solver field of a held quantity -> its slope along the branch (jkrcyl.units.CONTROLS)
+SLOPE_OF = {c.field: c.field_slope for c in CONTROLS.values()}
 
 
 class Slice(NamedTuple):

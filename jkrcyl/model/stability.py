@@ -19,8 +19,7 @@ import math
 
 import numpy as np
 
-#: control -> (the held quantity of a single-patch Slice, its slope along the equilibrium)
-HELD = {"load": ("p", "dp_da"), "grip": ("dn", "ddn_da"), "grip-work": ("dw", "ddw_da")}
+from ..units import CONTROLS
 
 
 def stable(dX_da, dX_dk):
@@ -36,15 +35,15 @@ def fixed_arc_derivatives(s, work_shift):
 def single_patch_flags(s, work_shift):
     """{control: stable (bool array)} of a single-patch Slice (module docstring)."""
     d = fixed_arc_derivatives(s, work_shift)
-    return {ctl: stable(getattr(s, HELD[ctl][1]), d[ctl]) for ctl in HELD}
+    return {ctl: stable(getattr(s, CONTROLS[ctl].field_slope), d[ctl]) for ctl in CONTROLS}
 
 
 def release_rates(s, m, work_shift):
     """{control: (1/w) dG/da at fixed X} (section 8.3), NaN without adhesion (m = 0: w = 0)."""
     d = fixed_arc_derivatives(s, work_shift)
     with np.errstate(divide="ignore", invalid="ignore"):
-        return {ctl: (-2 * math.pi / m * getattr(s, HELD[ctl][1]) / d[ctl]) if m > 0
-                else np.full(np.shape(s.p), np.nan) for ctl in HELD}
+        return {ctl: (-2 * math.pi / m * getattr(s, CONTROLS[ctl].field_slope) / d[ctl]) if m > 0
+                else np.full(np.shape(s.p), np.nan) for ctl in CONTROLS}
 
 
 def positive_definite(H) -> bool:

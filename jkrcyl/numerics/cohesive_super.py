@@ -9,9 +9,10 @@ the root that tends to JKR) on the other side of the pole: traced by the same co
 (jkrcyl.numerics.cohesive_follow) in x = (log eps, log(c - eps)) from just past the pole -- eps_crit (1 +
 EPS_MARGIN), or further where |p| exceeds the load cap P_CAP m^(4/3) there -- towards growing eps, up to
 eps = pi - 0.05 (the limit of the sub-critical trace too), the load cap, or the zone reaching round (h(pi) = h0:
-a top gap within the range; the trace stops ROUND_MARGIN below c = pi, and the states beyond, with a zone all
-round, are not on it).  Where the zone reaches round already at the
-start, the branch has zones 'all' (no zone end: k = 0 alone) and is sampled in eps.
+a top gap within the range; the trace stops ROUND_MARGIN below c = pi; beyond, the branch goes on with its zone
+all round -- :func:`round_tail`, sampled in eps towards full contact, where its load tends to the bond limit of
+jkrcyl.model.full_contact.holds).  Where the zone reaches round already at the start, the branch has zones
+'all' (no zone end: k = 0 alone) and is sampled in eps.
 
 JKR limit (measured, identical bodies, M = 0.4 and 0.8): at a fixed contact 2.0 <= eps <= 2.7 the load differs
 from JKR's (4.4) by C/lambda^2, |C| <= 5 in P* (2e-3 at lambda = 50); the limit is not uniform at either end: next
@@ -26,6 +27,7 @@ import math
 
 import numpy as np
 
+from . import cohesive as _co
 from . import cohesive_branch as _cb
 from . import cohesive_follow as _fo
 from . import one_arc as _one
@@ -33,6 +35,9 @@ from . import roots as _roots
 
 EPS_TOP = math.pi - 0.05      # the branch is traced up to this contact half-angle (as the sub-critical one)
 START_SCAN = 24               # contacts scanned past the pole for the first one below the load cap
+EPS_CLOSE = 1e-3              # the round-zone tail stops this far from full contact [rad] (nodes ~ sqrt(eps/(pi - eps)))
+TAIL_POINTS = 40
+JOIN_SCAN, JOIN_STEP = 40, 5e-3     # the downward scan for the tail's join below the trace's end [rad]
 ROUND_MARGIN = 1e-3           # the zone end stops this far below pi [rad]: it reaches round as a square root
                               # (h(c) - h0 has a double root at c = pi, h being even about the top), where the
                               # trace would need steps ~ pi - c
@@ -72,7 +77,8 @@ def start(law, lo, hi):
 def trace(law):
     """The super-critical branch as (x points (n, 2), kind, reason) -- as jkrcyl.numerics.cohesive_branch.trace:
     kind 'zone' (x = (log eps, log(c - eps))) or 'all' (x = (log eps, 0)); reason '' when the trace ends where the
-    branch leaves its domain (eps = pi - 0.05, the load cap, the zone reaching round), else why it stopped; None
+    branch leaves its domain (eps = pi - 0.05, the load cap, the zone reaching round), else why it stopped -- and,
+    where the zone reaches round, a fourth item: the eps of the round-zone tail (:func:`round_tail`); None
     when the law has no super-critical branch (:func:`eps_range`) or no contact on it below the load cap."""
     span = eps_range(law)
     if span is None:
@@ -95,4 +101,64 @@ def trace(law):
 
     x0 = np.array([math.log(eps0), math.log(first.c - eps0)])
     got = _fo.follow(law, x0, inside)
-    return got.points, "zone", got.reason
+    eps_end, c_end = math.exp(got.points[-1, 0]), math.exp(got.points[-1, 0]) + math.exp(got.points[-1, 1])
+    if got.reason or c_end < math.pi - 2 * ROUND_MARGIN:
+        return got.points, "zone", got.reason
+    return got.points, "zone", "", round_tail(law, eps_end)
+
+
+def round_state(law, eps):
+    """The contact |phi| < eps with its zone all round (zones 'all': k = 0 alone), as a CohesiveState."""
+    fc, zones = law.fixed(eps), _co.zones_of(math.pi)
+    dn, u = fc.solve(zones, law.s0)
+    return _co._state(eps, math.pi, fc, dn, u, zones, law.m, law.s0, law.kernel, law.gb, fc.sys.n)
+
+
+def round_tail(law, eps_round):
+    """Where the zone reaches round, the branch goes on with its zone all round.  The trace stops at
+    c = pi - ROUND_MARGIN (eps_round), but c reaches pi only where the round zone's own gap at the top is h0 --
+    at eps_join, below eps_round (the state with the last ROUND_MARGIN of traction removed differs from the round
+    one by the log kernel's local response; identical bodies, lambda = 5, M = 0.5: eps_join = 2.3418 against
+    2.3576): there the branch turns back in eps (a fold: p is largest there) and the round-zone states run from
+    eps_join towards full contact, as long as they obey the law (0 <= h <= h0 on the gap:
+    jkrcyl.numerics.cohesive.gap_check), up to pi - EPS_CLOSE (TAIL_POINTS, geometric in pi - eps), where the load
+    tends to the bond limit (jkrcyl.model.full_contact.holds), or until the top touches (h(pi) < 0) or the gap
+    leaves the range.  The eps of those states (increasing, the first eps_join; empty if the round zone at
+    eps_round leaves the range).  The zone states between eps_join and eps_round are not traced."""
+    top = lambda eps: round_state(law, eps).h_pi_over_Delta - law.h0
+    if not _co.gap_check(round_state(law, eps_round), 120).feasible:
+        return np.zeros(0)
+    lo, hi = eps_round, eps_round
+    for _ in range(JOIN_SCAN):
+        lo = hi - JOIN_STEP
+        if top(lo) > 0:
+            break
+        hi = lo
+    else:
+        return np.zeros(0)
+    join = _roots.root(top, lo, hi, xtol=1e-12) + 1e-12
+    gap = (math.pi - join) * np.geomspace(1.0, EPS_CLOSE / (math.pi - join), TAIL_POINTS)
+    tail = []
+    for eps in math.pi - gap:
+        if not _co.gap_check(round_state(law, eps), 120).feasible:
+            break
+        tail.append(eps)
+    return np.array(tail)
+
+
+def round_end(eps, tail):
+    """Why a super-critical table whose zone reached round ends at eps ('' where its round-zone tail reaches
+    full contact: the branch goes on as the bonded pin)."""
+    if tail.size == TAIL_POINTS:
+        return ""
+    if tail.size == 0:
+        return (f"the zone reaches round the hole at eps = {eps:.6g} rad (h(pi) = h0) and the states beyond with a "
+                "zone all round leave the range (0 <= h <= h0): not traced")
+    return (f"the zone all round leaves the range at eps = {eps:.6g} rad (the top closing, h(pi) < 0, or the gap "
+            "exceeding h0): the states beyond are not traced")
+
+
+def reaches_full(tail, a, branch):
+    """Whether the branch parameter a is the end of a round-zone tail that reaches full contact (TAIL_POINTS
+    states up to pi - EPS_CLOSE)."""
+    return tail.size == TAIL_POINTS and a >= branch.offset + (branch.a_end - branch.offset) * (1 - 1e-9)

@@ -18,8 +18,8 @@ import numpy as np
 
 from .. import equilibria as eq
 from .._validate import finite_scalar, theta as _check_theta
-from ..analysis import forward as _fw
 from ..analysis import path as _path
+from ..units import Units
 from . import style as st
 
 FIGURE_MS = (0.3, 0.4, 0.5, 0.8)
@@ -51,7 +51,7 @@ def _styled(ax, x, y, feasible, load, grip, sty):
 def _load_path(pb):
     """(start, event, end, landing) of slow pulling under load, normalised (P = P*, delta = delta/Delta): the
     walk of jkrcyl.analysis.path from first contact (as confined_events), the jump's landing state or None."""
-    un = _fw.Units(1.0, 1.0, 1.0, 1.0)
+    un = Units.normalised(pb, K_edge=1.0)
     start, event, end = _path.pull_path(pb, un, "load")
     if event in ("none", "bonded", "elsewhere"):
         return start, None, None, None

@@ -1,16 +1,19 @@
 """Branches of equilibria and points on them: :class:`Curve` (one patch), :class:`Point`, :class:`TwoPatchCurve`."""
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+import math
+from dataclasses import dataclass, fields as dataclass_fields, replace
 from typing import Dict, Optional
 
 import numpy as np
 
+from ..units import CONTROLS, Units
+from .states import Equilibrium
 
-def _with_units(obj, load_scale, Delta):
+
+def _with_units(obj, units: Units):
     """The dimensional fields P [N/m], delta, delta_work [m] from the normalised ones."""
-    return replace(obj, P=obj.P_star * load_scale, delta=obj.delta_over_Delta * Delta,
-                   delta_work=obj.delta_work_over_Delta * Delta)
+    return replace(obj, **{c.physical: units.physical(c.name, getattr(obj, c.normalised)) for c in CONTROLS.values()})
 
 
 @dataclass(frozen=True)
@@ -86,15 +89,13 @@ class Curve:
     COLUMNS = ("a", "eps", "eps_star", "P_star", "delta_over_Delta", "delta_work_over_Delta", "h_pi_over_Delta",
                "feasible", "stable_load", "stable_grip", "stable_grip_work")
 
-    def with_units(self, load_scale: float, Delta: float) -> "Curve":
+    def with_units(self, units: Units) -> "Curve":
         """This curve with the dimensional fields P [N/m], delta and delta_work [m].
 
         Parameters
         ----------
-        load_scale : float
-            P/P* [N/m]: 4 pi Delta vartheta/beta* (section 6; :attr:`jkrcyl.Contact.load_scale`).
-        Delta : float
-            The clearance [m].
+        units : jkrcyl.Units
+            The contact's scales (:attr:`jkrcyl.Contact.units`): P = P* load_scale, delta = (delta/Delta) Delta.
 
         Returns
         -------
@@ -103,11 +104,12 @@ class Curve:
         Examples
         --------
         >>> import jkrcyl
-        >>> c = jkrcyl.equilibria.curve(0.3, 1.0, n=5, gb=1 / 2.8).with_units(1000.0, 1e-6)
+        >>> units = jkrcyl.Units(Delta=1e-6, load_scale=1000.0)          # P = 1000 N/m P*, Delta = 1 um
+        >>> c = jkrcyl.equilibria.curve(0.3, 1.0, n=5, gb=1 / 2.8).with_units(units)
         >>> bool((c.P == 1000.0 * c.P_star).all()), bool((c.delta == 1e-6 * c.delta_over_Delta).all())
         (True, True)
         """
-        return _with_units(self, load_scale, Delta)
+        return _with_units(self, units)
 
     def table(self) -> Dict[str, np.ndarray]:
         """Columns of :attr:`COLUMNS` (plus P [N/m], delta, delta_work [m] when dimensional, c, c_top for the
@@ -133,79 +135,56 @@ class Curve:
                 f"{', dimensional' if self.P is not None else ''})")
 
 
-@dataclass(frozen=True)
-class Point:
-    """A stationary point on a branch: a minimum or maximum of P* (control 'load') or of the approach (grip).
+@dataclass(frozen=True, repr=False)
+class Point(Equilibrium):
+    """A stationary point on a branch: the equilibrium where the held quantity of ``control`` (P*, delta or
+    delta_work) is a minimum or maximum along the branch -- an :class:`~jkrcyl.results.Equilibrium` with what
+    kind of point it is.
 
-    What :func:`jkrcyl.equilibria.stationary_points` and :func:`jkrcyl.equilibria.adherence` return.
+    What :func:`jkrcyl.equilibria.stationary_points`, :func:`jkrcyl.equilibria.adherence` (normalised: P = P*,
+    delta = delta/Delta) and :meth:`jkrcyl.Contact.adherence` (SI) return.
 
     Attributes
     ----------
-    control, regime, kind : str
-        'load', 'grip' or 'grip-work'; the branch; 'min' or 'max'.
-    M, theta, gb, alpha_ratio : float
-        The problem (section 6).
-    a, eps, eps_star, P_star, delta_over_Delta, delta_work_over_Delta, h_pi_over_Delta : float
-        The state, normalised as in :class:`Curve`.
-    feasible : bool
-        The gap inequality h(pi) >= 0.
-    P, delta, delta_work : float or None
-        [N/m], [m], [m] when made from a Contact.
+    (those of Equilibrium), and
+    kind : str
+        'min' or 'max'.
     outcome : str or None
         Control 'load', from adherence: what a further pull does -- 'detachment' (a feasible sub-critical
         minimum: the contact shrinks away), 'zip-full' (a feasible super-critical minimum: the contact grows round
         into full contact), for an infeasible point (h(pi) < 0: the gap at the top closes first) the regime of the
         confined analysis (jkrcyl.results.paths.REGIMES), or 'gap-closes-first' where that analysis does not apply
         (vartheta = inf).
+    M, theta, gb, alpha_ratio : float
+        The problem (section 6).
+    eps_star, h_pi_over_Delta : float
+        eps* = 2 atan(a/a_crit)/pi and h(pi)/Delta (5.10), as in :class:`Curve`.
 
     Examples
     --------
     >>> import jkrcyl
     >>> p = jkrcyl.equilibria.adherence(0.3, 1.0, gb=1 / 2.8)[0]
-    >>> p.kind, round(p.P_star, 4), p.outcome
-    ('min', -0.2856, 'detachment')
+    >>> p.kind, round(p.P_star, 4), p.outcome, p.P == p.P_star, p.stable
+    ('min', -0.2856, 'detachment', True, False)
     """
 
-    control: str
-    regime: str
-    kind: str
-    M: float
-    theta: float
-    a: float
-    eps: float
-    eps_star: float
-    P_star: float
-    delta_over_Delta: float
-    h_pi_over_Delta: float
-    feasible: bool
-    delta_work_over_Delta: Optional[float] = None
-    P: Optional[float] = None
-    delta: Optional[float] = None
-    delta_work: Optional[float] = None
+    kind: str = "min"
     outcome: Optional[str] = None
+    M: float = math.nan
+    theta: float = math.nan
     gb: Optional[float] = None
     alpha_ratio: float = 0.0
+    eps_star: float = math.nan
+    h_pi_over_Delta: float = math.nan
 
-    def with_units(self, load_scale: float, Delta: float) -> "Point":
-        """This point with P [N/m], delta and delta_work [m]: :meth:`Curve.with_units`.
+    @classmethod
+    def of(cls, state: Equilibrium, **fields) -> "Point":
+        """The point at an equilibrium ``state`` (the fields of Point beyond Equilibrium's as keywords)."""
+        return cls(**{f.name: getattr(state, f.name) for f in dataclass_fields(Equilibrium)}, **fields)
 
-        Parameters
-        ----------
-        load_scale, Delta : float
-            P/P* [N/m] and the clearance [m].
-
-        Returns
-        -------
-        Point
-
-        Examples
-        --------
-        >>> import jkrcyl
-        >>> p = jkrcyl.equilibria.adherence(0.3, 1.0, gb=1 / 2.8)[0].with_units(1000.0, 1e-6)
-        >>> round(p.P, 1), round(p.delta * 1e9, 1)
-        (-285.6, -307.6)
-        """
-        return _with_units(self, load_scale, Delta)
+    def __repr__(self) -> str:
+        return (f"Point({self.kind} of {CONTROLS[self.control].physical} on {self.branch}, a={self.a:.6g}, "
+                f"P*={self.P_star:.6g}, feasible={self.feasible}, outcome={self.outcome})")
 
 
 @dataclass(frozen=True)
@@ -266,13 +245,13 @@ class TwoPatchCurve:
     COLUMNS = ("a", "a_top", "eps", "eps_top", "eps_star", "eps_top_star", "P_star", "delta_over_Delta",
                "delta_work_over_Delta", "gap_min", "feasible", "stable_load", "stable_grip", "stable_grip_work")
 
-    def with_units(self, load_scale: float, Delta: float) -> "TwoPatchCurve":
+    def with_units(self, units: Units) -> "TwoPatchCurve":
         """This branch with P [N/m], delta and delta_work [m]: :meth:`Curve.with_units`.
 
         Parameters
         ----------
-        load_scale, Delta : float
-            P/P* [N/m] and the clearance [m].
+        units : jkrcyl.Units
+            The contact's scales (:attr:`jkrcyl.Contact.units`).
 
         Returns
         -------
@@ -282,10 +261,10 @@ class TwoPatchCurve:
         --------
         >>> import jkrcyl
         >>> b, = jkrcyl.equilibria.two_patch(0.5, 1.0, n=20, gb=1 / 2.8)
-        >>> bool((b.with_units(1000.0, 1e-6).P == 1000.0 * b.P_star).all())
+        >>> bool((b.with_units(jkrcyl.Units(Delta=1e-6, load_scale=1000.0)).P == 1000.0 * b.P_star).all())
         True
         """
-        return _with_units(self, load_scale, Delta)
+        return _with_units(self, units)
 
     def table(self, raw: bool = False) -> Dict[str, np.ndarray]:
         """Columns of :attr:`COLUMNS` (plus P [N/m], delta, delta_work [m] when dimensional) as a dict of arrays.

@@ -9,12 +9,7 @@ from typing import Optional
 import numpy as np
 from numpy.typing import ArrayLike
 
-#: The controls: what is held fixed -> (normalised field, its slope along a Curve, the stability field, the
-#: physical field).  'grip' holds the paper's approach delta (5.8) (the rims' approach, section 8); 'grip-work'
-#: the work-conjugate delta_work = delta + P/(8 pi G_I) (derive/green.py), what a testing machine holds.
-CONTROLS = {"load": ("P_star", "dP_star_da", "stable_load", "P"),
-            "grip": ("delta_over_Delta", "ddelta_da", "stable_grip", "delta"),
-            "grip-work": ("delta_work_over_Delta", "ddelta_work_da", "stable_grip_work", "delta_work")}
+from ..units import CONTROLS
 
 
 @dataclass(frozen=True, repr=False)
@@ -28,7 +23,7 @@ class Equilibrium:
         at the top of the hole), 'two-patch', 'full-contact', 'separated'; the cohesive law: 'sub-critical' (a
         contact with its zone), 'contactless' (the zone alone), with '-top'.
     control : str
-        'load', 'grip' or 'grip-work' (:data:`CONTROLS`), under which :attr:`stable` is judged.
+        'load', 'grip' or 'grip-work' (:data:`jkrcyl.units.CONTROLS`), under which :attr:`stable` is judged.
     a, a_top : float
         tan(eps/2), tan(eps_top/2) (0 for one patch; a = inf in full contact, 0 when separated; the branch
         parameter for the cohesive law: jkrcyl.model.cohesive).
@@ -89,7 +84,7 @@ class Equilibrium:
     @property
     def stable(self) -> bool:
         """Stable under :attr:`control`."""
-        return getattr(self, CONTROLS[self.control][2])
+        return getattr(self, CONTROLS[self.control].stable)
 
     @property
     def size(self) -> float:
@@ -115,7 +110,7 @@ class Equilibrium:
         >>> s.held("grip") == s.delta, s.held("grip-work") == s.delta_work
         (True, True)
         """
-        return getattr(self, CONTROLS[control or self.control][3])
+        return getattr(self, CONTROLS[control or self.control].physical)
 
     def with_control(self, control: str) -> "Equilibrium":
         """This state judged under another control (:attr:`stable` follows it).

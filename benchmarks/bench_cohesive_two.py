@@ -1,0 +1,59 @@
+"""Benchmark (not a test): the cohesive law's two-patch states (jkrcyl.numerics.cohesive_two) and their stability
+(jkrcyl.numerics.cohesive_two_stability).
+
+Run: python benchmarks/bench_cohesive_two.py [--runs 3]
+
+Prints, in one run (identical bodies, nu = 0.3: vartheta = 1, gb = 1/2.8, M = 0.2; the top arc 0.3633 of JKR's
+two-patch branch, tests/test_cohesive_two_patch.py): one state (Newton from JKR's state) at lambda = 10, 20, 50
+with its node count per arc, the distance to JKR's bottom arc and P*, and the stability flags of one state under
+load and grip (held states).  Goal (issue 26): two_patch under the law <= 5 s -- a whole branch; here one state
+is measured (the branch is not traced through the law interface yet).  Wall clock and CPU time; the machine is
+shared (the load average is printed).
+"""
+import argparse
+import os
+import statistics
+import time
+
+import jkrcyl
+from jkrcyl.model import two_patch as tp
+from jkrcyl.numerics import arcs
+from jkrcyl.numerics import cohesive_two as ct
+from jkrcyl.numerics import cohesive_two_stability as cs
+from jkrcyl.numerics.cohesive_scales import zone_strength
+
+THETA, GB, M, EPS_TOP, GUESS = 1.0, 1 / 2.8, 0.2, 0.36330064433257114, 2.6123
+
+
+def timed(f, runs):
+    wall, cpu, out = [], [], None
+    for _ in range(runs):
+        w, c = time.perf_counter(), time.process_time()
+        out = f()
+        wall.append(time.perf_counter() - w)
+        cpu.append(time.process_time() - c)
+    return statistics.median(wall), statistics.median(cpu), out
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--runs", type=int, default=3)
+    args = ap.parse_args(argv)
+    print(f"load average {os.getloadavg()[0]:.2f}")
+    ref = tp.solve(jkrcyl.equilibria.problem(M, THETA, GB), eps_top=EPS_TOP, guess=GUESS)
+    for lam in (10.0, 20.0, 50.0):
+        s0 = zone_strength(lam, M * THETA)
+        wall, cpu, st = timed(lambda: ct.solve(EPS_TOP, M * THETA, s0, THETA, GB, 0.0, guess=ref.eps), args.runs)
+        print(f"lambda {lam:5g}: one state {wall:6.2f} s wall, {cpu:6.2f} s CPU, {st.n} nodes per arc; "
+              f"eps - eps_JKR {st.eps - ref.eps:+.2e}, P* - P*_JKR {st.p / THETA - ref.P_star:+.2e}")
+    s0 = zone_strength(20.0, M * THETA)
+    st = ct.solve(EPS_TOP, M * THETA, s0, THETA, GB, 0.0, guess=ref.eps)
+    law = ct._Law(M * THETA, s0, arcs.Kernel(THETA, GB))
+    for control in ("load", "grip"):
+        wall, cpu, flag = timed(lambda: cs.stable(law, st, control), 1)
+        print(f"lambda 20: stable under {control}: {flag} ({wall:.2f} s wall, {cpu:.2f} s CPU; goal: none)")
+    print("goal: two_patch under the law <= 5 s for a branch -- not met: one state takes the time above")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,83 @@
+"""Stability of the Maugis-Dugdale two-patch states (jkrcyl.numerics.cohesive_two, notation there): the energy of
+states whose zone ends are held.
+
+As for one patch (jkrcyl.numerics.cohesive_branch), the reduced energy E(c, c_top) -- the total potential of the
+state with the zones |phi| < c and |phi - pi| < c_top, both contact edges at k = 0 and the control's quantity held
+(less p delta/Delta under load) -- has the gradient dE/dc_i = 2 s0 (h(c_i) - h0) at each zone end (Dugdale's
+J-integral, both ends of a zone); an equilibrium is its stationary point and is stable where E is a minimum: the
+matrix G_ij = d(h(c_i) - h0)/dc_j at the held quantity (2 s0 G is the Hessian, symmetric: Maxwell) positive
+definite.  :func:`held_state` gives the zone-end-held states, :func:`zone_matrix` G by central differences,
+:func:`stable` the flag; tests/test_cohesive_two_patch.py checks dE/dc by differences of the held states' energy,
+G's symmetry, and the flags against JKR's (jkrcyl.model.two_patch.stability) in the limit.
+"""
+import math
+
+import numpy as np
+
+from . import cohesive as _co
+from . import cohesive_two as _two
+
+HOLD_STEP = 1e-4          # central differences of the zone ends, relative to the zone length
+
+
+def _held_pieces(fa, zones, s0, control, value):
+    """(delta/Delta, u, k) at fixed arcs and zones with delta/Delta (grip) or p (load) held at value."""
+    uz = fa.zone_unit(zones)
+    if control == "grip":
+        dn = value
+    else:
+        load, _ = _co.zone_load(zones)
+        m0, m1, mz = (fa.sys.moments(v, np.cos) for v in (fa.u0, fa.u1, uz))
+        dn = (value + s0 * load - m0 - s0 * mz) / m1
+    u = fa.u0 + dn * fa.u1 + s0 * uz
+    return dn, u, fa.sys.edge(u)
+
+
+def held_state(law, c, c_top, control, value, arcs, n, tol=1e-11):
+    """The state with the zone ends c, c_top held, k = 0 at both contact edges and the control's quantity at value
+    (control 'load': p; 'grip': delta/Delta), by Newton in (eps, eps_top) from arcs = (eps, eps_top): a
+    TwoPatchCohesive (k_bot, k_top ~ 0) and g = (h(c) - h0, h(pi - c_top) - h0).  ValueError if it does not
+    converge."""
+    if control not in ("load", "grip"):
+        raise ValueError(f"control must be 'load' or 'grip', got {control!r}")
+    zones = _co.zones_of(c, c_top)
+
+    def residual(x):
+        if not (0 < x[0] < c and 0 < x[1] < c_top):
+            return None
+        return _held_pieces(law.arcs(x[0], x[1], n), zones, law.s0, control, value)[2]
+
+    x = _two.newton(residual, np.array(arcs, dtype=float), (1e-7 * arcs[0], 1e-7 * arcs[1]),
+                    np.full(2, max(1.0, law.m)), tol, np.array([0.1 * (c - arcs[0]), 0.1 * (c_top - arcs[1])]))
+    if x is None:
+        raise ValueError(f"arcs: no zone-end-held two-patch state near {tuple(arcs)!r}")
+    fa = law.arcs(x[0], x[1], n)
+    dn, u, k = _held_pieces(fa, zones, law.s0, control, value)
+    load, width = _co.zone_load(zones)
+    st = _two.TwoPatchCohesive(x[0], x[1], c, c_top, "both", fa.sys.moments(u, np.cos) - law.s0 * load, dn,
+                               fa.sys.moments(u, np.ones_like) - law.s0 * width, k[0], k[1], law.m, law.s0,
+                               law.h0, n, _two._Fields(fa, dn, u, zones, law.s0))
+    return st, st.fields.gap(np.array([c, math.pi - c_top])) - law.h0
+
+
+def zone_matrix(law, st, control):
+    """G_ij = d(h(c_i) - h0)/dc_j at the held quantity of control (central differences of held states, steps
+    HOLD_STEP times each zone length), unsymmetrised."""
+    value = st.p if control == "load" else st.delta_over_Delta
+    steps = HOLD_STEP * np.array([st.c - st.eps, st.c_top - st.eps_top])
+    G = np.empty((2, 2))
+    for j in range(2):
+        g = []
+        for sgn in (1, -1):
+            dc = sgn * steps[j] * np.eye(2)[j]
+            g.append(held_state(law, st.c + dc[0], st.c_top + dc[1], control, value, (st.eps, st.eps_top),
+                                st.n)[1])
+        G[:, j] = (g[0] - g[1]) / (2 * steps[j])
+    return G
+
+
+def stable(law, st, control, G=None):
+    """Whether the two-patch state st is stable under control ('load' or 'grip'): G's symmetric part positive
+    definite (module docstring); G: :func:`zone_matrix` when already computed."""
+    G = zone_matrix(law, st, control) if G is None else G
+    return bool(np.all(np.linalg.eigvalsh(0.5 * (G + G.T)) > 0))
