@@ -1,8 +1,10 @@
 """The load-control pull-off of the Maugis-Dugdale pin over (lambda, M): where it vanishes.
 
 Every point is independent: the stand-alone pull-off by continuation of jkrcyl.numerics.cohesive_pull_off (the
-second route to Contact.pull_off('load'), tested equal to the walker's to 1e-8; no branch table per point; with
-longer continuation steps, MAP_STEPS), so
+second route to Contact.pull_off('load'), tested equal to the walker's to 1e-8, and over random pairs near the
+range reaching round incl. S-shaped branches to 1e-6: tests/test_cohesive_map_property.py; no branch table per
+point -- the walker's cold pull-off traces and tabulates the whole branch, ~20 times the cost,
+benchmarks/bench_cohesive_round.py; with longer continuation steps, MAP_STEPS), so
 the map is computed by Dask (optional dependency: ``pip install jkrcyl[map]``), one task per lambda row, on a
 local process pool of ``workers`` (a distributed scheduler takes the same graph off one machine).
 

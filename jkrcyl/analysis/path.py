@@ -157,9 +157,8 @@ def _other(side):
 
 def continuation(pb: Problem, un: Units, s, control: str):
     """The state where the branch of s continues past its end (the cohesive contact branch's touch end and the
-    zone-only branch, jkrcyl.model.patch.SinglePatch.continues; the round-zone tail and the bonded pin at its bond
-    limit, into each other; a touch end onto which a floating pin went on: that pin, at the top of its range,
-    mirrored for the top side), or None."""
+    zone-only branch, SinglePatch.continues; the round-zone tail and the bonded pin at its bond limit, into each
+    other; a floats_onto touch end: the free pin at its range's end), or None."""
     if s.branch == "full-contact":            # the bond breaks: at the top pushing (P > 0), at the bottom pulling
         sv = solver(pb)
         end = float(np.asarray(_br.table(pb, "super-critical").a)[-1]) if sv.has("super-critical") else None
@@ -168,8 +167,8 @@ def continuation(pb: Problem, un: Units, s, control: str):
                                        "bottom" if s.P_star > 0 else "top")[0] if ok else None
     regime = s.branch.replace("-top", "")
     if regime == "sub-critical" and s.a == solver(pb).floats_onto():     # back to the touch: the pin floats
-        return _fw.separated_state(pb, un, solver(pb).free_range()[1] * (-1 if s.side == "top" else 1)
-                                   - (2 if s.side == "top" else 0), control)
+        hi = solver(pb).free_range()[1]
+        return _fw.separated_state(pb, un, -2 - hi if s.side == "top" else hi, control)
     nxt = solver(pb).continues(regime, s.a) if solver(pb).has(regime) else None
     if nxt is None:
         return None
@@ -188,6 +187,9 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
         if nxt is not None:
             if nxt.stable and nxt.feasible:
                 return nxt, "continue"
+            across = _floats_onto(pb, un, control, _other(s.side)) if nxt.branch == "separated" else None
+            if across is not None:   # a floating pin under load (P = 0 only) floats across onto the other side's
+                return across, "continue"      # touch end: no jump, the contact vanishes and forms continuously
             event = "fold"           # its continuation is unstable: the path jumps from the branch's end
     # two-patch states are traced by continuation: only where the contact grows or the top closes
     quick = event == "touch" or (event == "fold" and s.branch.startswith("sub-critical"))
@@ -220,8 +222,7 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
             return (min(into, key=lambda x: x.size), "snap-in") if into else (None, "snap-in")
         off = [x for x in cands if x.branch == "separated" or x.side == _other(s.side)]
         return (min(off, key=lambda x: x.size), "pull-off") if off else (None, "pull-off")
-    # a fold of a cohesive S-shaped branch (its round zone and its zone-end families): met pushing, or where the
-    # pull-off rule finds nothing, the path jumps to the state on its side nearest in size
+    # a cohesive S-shaped branch's fold met pushing, or one the pull-off rule has no state for: the nearest in size
     nearest = lambda xs: min(xs, key=lambda x: abs(x.size - s.size)) if xs else None
     if event == "fold" and s.branch.startswith("sub-critical") and up:
         got = nearest([x for x in cands if x.side == s.side])
@@ -303,16 +304,15 @@ def first_contact(pb: Problem, un: Units, control: str):
 
 
 def _floats_onto(pb: Problem, un: Units, control: str, side: str):
-    """The state a pin floating in a cohesive range that reaches round goes on onto where it touches the side,
-    no jump (jkrcyl.model.patch.SinglePatch.floats_onto: the touch end of a branch whose zone is round there),
-    where it is stable and feasible and, under load, does not pull (|P| grows from 0 into the side there: else
-    the pin is drawn in); else None."""
+    """The touch end (SinglePatch.floats_onto) a pin floating in a cohesive range goes on onto at the side, no
+    jump, if stable, feasible and, under load, pushing (else the pin is drawn in); else None."""
     a = solver(pb).floats_onto()
     if a is None:
         return None
-    s = _fw.single_patch_states(pb, un, "sub-critical", [a], control, side)[0]
-    pushes = s.P >= 0 if side == "bottom" else s.P <= 0
-    return s if s.stable and s.feasible and (control != "load" or pushes) else None
+    s, hi = _fw.single_patch_states(pb, un, "sub-critical", [a], control, side)[0], solver(pb).free_range()[1]
+    at = (s.P >= 0) == (side == "bottom") if control == "load" else \
+        abs(s.delta / un.Delta - (hi if side == "bottom" else -2 - hi)) < 1e-4       # grip: at the free range's end
+    return s if s.stable and s.feasible and at else None
 
 
 def pull_path(pb: Problem, un: Units, control: str):
@@ -321,8 +321,8 @@ def pull_path(pb: Problem, un: Units, control: str):
     not a bottom single patch), else the walk's event down the start's branch to -inf (fold, gap, end) and the
     state where it ends; 'let-go' where a branch ends on an unstable continuation under a pull (the cohesive
     contact at its touch end: the pin lets go there).  pull_off, confined_events and the confined figure all read
-    this one path.  'float': the pin floating in a cohesive range that reaches round went on onto the contact
-    branch at first touch and the walk brought it back to that touch (no pull: it floats again)."""
+    this one path.  'float': a floating pin (cohesive range reaching round) went on onto the contact branch at
+    first touch and the walk brought it back to that touch."""
     _, start, _ = first_contact(pb, un, control)
     if start is None:
         return None, "none", None

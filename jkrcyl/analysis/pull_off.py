@@ -8,7 +8,9 @@ quantity (P, delta or delta_work) through stable, feasible states to
   edge coefficient is negative: G > w, the contact shrinks away): detachment, with its P, width and approach;
 * a fold where a further pull closes the edge (G < w): the contact grows round into full contact;
 * h(pi) = 0: the gap at the top closes first (confined; Contact.confined_events says what follows);
-* full contact at first touch (no zero-load contact): the pin is bonded all round and does not detach.
+* full contact at first touch (no zero-load contact): the pin is bonded all round and does not detach;
+* a pin floating in a cohesive range that reaches round goes on onto contacts that push and, pulled, back to the
+  touch: no adherence force from first contact (jkrcyl.analysis.path.pull_path's 'float').
 """
 from __future__ import annotations
 
@@ -30,8 +32,11 @@ def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
     """Detachment along the quasi-static path (module docstring) under ``control``."""
     if pb.M == 0:
         return PullOff(control, None, None, None, None, "no adhesion (w = 0): the contact vanishes at P = 0")
-    if solver(pb).unmodelled:
-        return PullOff(control, None, None, None, None, solver(pb).unmodelled)
+    # a branch not followed whole (a cohesive top bridge) still answers where the pin floats onto it at first
+    # touch: the path back from there does not reach the part not followed
+    unmodelled = solver(pb).unmodelled
+    if unmodelled and solver(pb).floats_onto() is None:
+        return PullOff(control, None, None, None, None, unmodelled)
     if not solver(pb).adheres:
         return PullOff(control, None, None, None, None, solver(pb).no_adherence_reason)
     start, event, s = _path.pull_path(pb, un, control)
@@ -46,10 +51,12 @@ def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
     if event == "float":
         held = {"load": "load", "grip": "approach", "grip-work": "work-conjugate approach"}[control]
         return PullOff(control, None, None, None, start,
-                       "no adherence force from first contact: the pin floats in the cohesive range, which reaches "
-                       "round the hole (P = 0), and touches the bottom onto contacts with a round zone, which push "
-                       f"(P >= 0); lowering the {held} the contact shrinks back to the touch and the pin floats "
-                       "again (a contact that pulls is reached by pushing further: Contact.cycle)")
+                       "no adherence force from first contact: the pin touches the bottom onto contacts whose "
+                       "cohesive zone reaches round the hole, which push (P >= 0); lowering the "
+                       f"{held} the contact shrinks back to the touch and the pin leaves it (a contact that pulls "
+                       "is reached by pushing further: Contact.cycle)")
+    if unmodelled:
+        return PullOff(control, None, None, None, None, unmodelled)
     if event == "let-go":
         return _detached(control, s)
     if event == "gap":

@@ -292,13 +292,10 @@ class Cohesive(SinglePatch):
         return fl if fl is not None and fl[1] > -h0 and self._contactless is None else (-2.0 + h0, -h0)
 
     def floats_onto(self):
-        """The pin floating in a range that reaches round (:meth:`free_range`) touches the bottom at the top of
-        that range where the sub-critical branch starts with its zone round (zones 'all' at its touch end, the
-        approach there that top to 1e-4): it goes on onto a = 2 without a jump.  None otherwise."""
-        fl = self.floating()
-        if fl is None or self.free_range() != fl or self._sub.kind == "zone" and self._sub.n_round == 0:
-            return None
-        return 2.0 if abs(self.value("dn", 2.0) - fl[1]) < 1e-4 else None
+        """Where the sub-critical branch starts with its zone round (zones 'all' at its touch end), the pin reaches
+        the bottom onto its touch end a = 2 without a jump (from the floating range's top, :meth:`free_range`, or
+        drawn down from the free one); None otherwise."""
+        return None if self._sub.kind == "zone" and self._sub.n_round == 0 else 2.0
 
     def _super_pulls(self):
         """Branch parameters of the super-critical table's states that pull (p < 0, without their feasibility)."""

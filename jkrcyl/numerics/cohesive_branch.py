@@ -137,10 +137,7 @@ def trace(law):
     if start.zones == "all":
         opens = opens_of(law)
         if opens is not None and opens[2] == "S-shaped branch":
-            got = _round.trace(law, opens[0], lambda x: _inside(law, x),
-                               lambda e: state_values(law, e, math.pi)[2])
-            if got is not None:
-                return got
+            return _round.trace(law, opens[0], lambda x: _inside(law, x), lambda e: state_values(law, e, math.pi)[2])
         eps = np.geomspace(law.eps_lo, law.eps_hi, ALL_POINTS)
         return np.column_stack([np.log(eps), np.zeros(eps.size)]), "all", ""
     x0 = np.array([math.log(law.eps_lo), math.log(start.c - law.eps_lo)])

@@ -45,10 +45,15 @@ def opening(law, eps_jump, top_gap):
 def trace(law, eps_jump, inside, top_gap):
     """The S-shaped branch as (x (n, 2), 'zone', reason, n_round) (module docstring); inside(x): the domain of the
     zone part (cohesive_branch.trace's); top_gap: :func:`opening`'s.  reason '' when the trace ends where the
-    branch leaves its domain; None when the round zone never opens below eps_hi."""
+    branch leaves its domain.  Where the round zone never opens below eps_hi the branch is the round zone alone
+    (the two zone-end families born at the fold eps_jump join it only past the receding limit: not on this
+    branch's table)."""
     eps_open = opening(law, eps_jump, top_gap)
-    if eps_open is None:
-        return None
+    if eps_open is None:                 # the round zone stays within the range up to eps_hi: the branch is round
+        eps_open = law.eps_hi            # all along (the zone-end pair born at the fold joins it past a_crit)
+        x1 = math.log(math.pi - eps_open)
+        eps = np.geomspace(law.eps_lo, eps_open, max(8, int(ROUND_POINTS * math.log(eps_open / law.eps_lo)) + 1))
+        return np.column_stack([np.log(eps), np.full(eps.size, x1)]), "zone", "", eps.size
     x1 = math.log(math.pi - eps_open)
     n = max(8, int(ROUND_POINTS * math.log(eps_open / law.eps_lo)) + 1)
     eps = np.geomspace(law.eps_lo, eps_open, n)
