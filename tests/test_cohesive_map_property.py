@@ -33,6 +33,10 @@ poisson = st.one_of(st.just(0.0), st.floats(0.01, 0.49))
 @example(E=math.inf, nu=0.0, E_I=math.inf, nu_I=0.0, h0=1.0, lam=1.0)
 # found by hypothesis: the walker's path closes the top first (h(pi) < 0, confined), the map gives the touch's load
 @example(E=math.inf, nu=0.0, E_I=math.inf, nu_I=0.4375, h0=1.5, lam=2.0)
+# found by hypothesis: the gap closes beside the contact with h(pi) = 2.7 Delta (an elastic pin, nu_I 0.45, in a
+# rigid hole); the walker said 'the gap at phi = pi closes first' until jkrcyl.analysis.reasons.gap_stop
+@example(E=math.inf, nu=0.45028557727142104, E_I=math.inf, nu_I=0.45028557727142104, h0=1.4690327046627536,
+         lam=2.4731555735280266)
 def test_map_point_is_the_walkers_pull_off(E, nu, E_I, nu_I, h0, lam):
     if math.isinf(E) and math.isinf(E_I):
         E_I = 1e9                                    # two rigid bodies: no elasticity at all
@@ -47,8 +51,10 @@ def test_map_point_is_the_walkers_pull_off(E, nu, E_I, nu_I, h0, lam):
     P, kind = cohesive_map._point(lam_map, pb.M, pb.theta, pb.gb, pb.alpha_ratio)
     got = c.pull_off("load")
     # the map's route does not check the path's feasibility back from the zero-load contact: where the walker
-    # finds the top closing first (confined) the map still gives the fold's or the touch's load
-    assert (got.P is None) == math.isnan(P) or got.reason.startswith("confined"), (got, cohesive_map.OUTCOMES[kind])
+    # finds the top closing first (confined) or the gap closing beside the contact (a second contact forming in
+    # the zone), the map still gives the fold's or the touch's load
+    stopped = got.reason.startswith(("confined", "no detachment on one patch"))
+    assert (got.P is None) == math.isnan(P) or stopped, (got, cohesive_map.OUTCOMES[kind])
     if got.P is not None:
         assert got.P < 0 and abs(got.P / c.load_scale / P - 1) < 1e-6, (got.P / c.load_scale, P)
     if kind == 4:

@@ -60,9 +60,7 @@ def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
     if event == "let-go":
         return _detached(control, s)
     if event == "gap":
-        return PullOff(control, None, None, None, s,
-                       f"confined: the gap at phi = pi closes first (P = {s.P:.6g} N/m, delta = {s.delta:.4g} m); "
-                       "the top contact forms before detachment (see Contact.confined_events)")
+        return PullOff(control, None, None, None, s, _reasons.gap_stop(pb, s))
     if event == "end":
         what = "load" if control == "load" else "approach"
         return PullOff(control, None, None, None, s,

@@ -1,0 +1,47 @@
+"""Why a pull stops at an infeasible state (jkrcyl.analysis.reasons.gap_stop): JKR's pin stops where the top
+closes (h(pi) = 0, its only gap condition); the cohesive pin can stop where the gap closes beside the contact with
+the top wide open -- the message must say which (it once said 'the gap at phi = pi closes first' for both)."""
+import math
+
+import numpy as np
+
+import jkrcyl
+from jkrcyl.model.single_patch import solver
+from jkrcyl.numerics import cohesive as co
+
+
+def elastic_pin_in_rigid_hole():
+    """An elastic pin (nu_I 0.45) in a rigid hole, range h0 = 1.47 Delta, lambda 2.47 (found by hypothesis,
+    tests/test_cohesive_map_property.py)."""
+    nu = 0.45028557727142104
+    mat = jkrcyl.Materials.from_young(E=math.inf, nu=nu, E_I=1e9, nu_I=nu)
+    probe = jkrcyl.Contact(1e-2, 1e-5, 1.0, mat)
+    m = (1.4690327046627536 * 2.4731555735280266 / 4) ** 0.75
+    return jkrcyl.Contact.with_lambda(1e-2, 1e-5, (m / probe.M) ** 2, mat, 2.4731555735280266)
+
+
+def test_cohesive_pull_stops_beside_the_contact():
+    c = elastic_pin_in_rigid_hole()
+    po = c.pull_off("load")
+    assert po.P is None and po.reason.startswith("no detachment on one patch"), po.reason
+    assert po.state.h_pi > 0.5 * c.Delta                              # the top is open where it stops
+    # independent evidence: a slightly smaller contact of the law, solved alone, overlaps beside its edge
+    law = solver(c.problem).law
+    eps = 0.8 * po.state.eps
+    chk = co.gap_check(law.state(eps), 400)
+    grid = np.linspace(eps * 1.001, math.pi, 2000)
+    h = law.state(eps).fields.gap(grid)
+    assert not chk.feasible and h.min() < 0 and h[-1] > 1.0            # h < 0 beside the contact, h(pi) > Delta
+
+
+def test_jkr_gap_stop_names_the_top():
+    """JKR's only gap condition is h(pi) >= 0: next to the first infeasible point of a branch's table (h(pi) < 0
+    there, a larger contact of identical bodies at M 0.5) the stop is 'confined' (the top closes)."""
+    from jkrcyl.analysis import branches, forward, reasons
+    from jkrcyl.units import Units
+    pb = jkrcyl.equilibria.problem(0.5, 1.0, 1 / 2.8)
+    t = branches.table(pb, "sub-critical")
+    k = int(np.argmax(~np.asarray(t.feasible)))                        # the first infeasible table point
+    assert k > 0 and t.h_pi_over_Delta[k] < 0 <= t.h_pi_over_Delta[k - 1]
+    s, = forward.single_patch_states(pb, Units.normalised(pb), "sub-critical", [t.a[k - 1]], "load")
+    assert reasons.gap_stop(pb, s).startswith("confined: the gap at phi = pi closes first")
