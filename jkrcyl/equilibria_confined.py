@@ -27,7 +27,8 @@ def two_patch(M: float, theta: float, n: Optional[int] = None, *, gb: float,
     Returns
     -------
     tuple of jkrcyl.results.TwoPatchCurve
-        Every branch, each ordered along the curve with how its ends finish; () where no single patch closes the gap at the top.
+        Every branch, each ordered along the curve with how its ends finish; () where no single patch closes the
+        gap at the top.
 
     Raises
     ------

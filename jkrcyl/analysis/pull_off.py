@@ -41,7 +41,8 @@ def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
         return PullOff(control, None, None, None, None, solver(pb).no_adherence_reason)
     start, event, s = _path.pull_path(pb, un, control)
     if event == "none":
-        return PullOff(control, None, None, None, None, _reasons.no_first_contact_reason(pb, control) + ": no path to follow")
+        why = _reasons.no_first_contact_reason(pb, control)
+        return PullOff(control, None, None, None, None, why + ": no path to follow")
     if event == "bonded":
         return PullOff(control, None, None, None, start,
                        "no stable zero-load contact (M above the largest M with one): at first touch the contact "

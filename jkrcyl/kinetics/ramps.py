@@ -119,7 +119,8 @@ def cycle(contact, control, hi, lo, rate, n=2000, route="table", rtol=None) -> R
         raise ValueError(f"rate: {why or 'no adhesion (w = 0)'}: no cycle to drive")
     x0 = start.held(control)
     if not lo < x0 < hi:
-        raise ValueError(f"{CONTROLS[control].physical}: the cycle must contain the start at rest, {lo!r} < {x0!r} < {hi!r}")
+        raise ValueError(f"{CONTROLS[control].physical}: the cycle must contain the start at rest, "
+                         f"{lo!r} < {x0!r} < {hi!r}")
     run = Run(contact, control, start, _largest_contact(contact, control, start, hi), route, rtol)
     legs, tops, loops, end, repeated = [0], [], [], "", False
     t, x = 0.0, x0

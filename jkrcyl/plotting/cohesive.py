@@ -83,7 +83,8 @@ def map_figure(pm: _map.PullOffMap):
     ax.set_ylabel("$M$" if not math.isinf(pm.theta) else "$M_R^*$")
     ax.plot([], [], "s", color="0.75", label="no adherence force (range reaches round)")
     ax.plot([], [], "s", color="#bcd4ea", label="no zero-load contact on the sub-critical branch")
-    ax.plot([], [], "s", color="#e8d8a8", label="no adherence force from first contact (a round zone that jumps when pushed)")
+    ax.plot([], [], "s", color="#e8d8a8",
+            label="no adherence force from first contact (a round zone that jumps when pushed)")
     ax.plot([], [], "s", color="#f4a6a6", label="detaches; JKR does not (its fold is confined)")
     ax.plot([], [], "k-", lw=1.2, label="where the pull-off vanishes")
     ax.legend(fontsize=8, loc="lower right")

@@ -3,7 +3,8 @@
 delta_over_Delta, delta_work_over_Delta, h_pi_over_Delta, feasible, stable_load, stable_grip, stable_grip_work --
 and the dimensional ones -- P [N/m], delta, delta_work, contact_width, h_pi [m] -- wherever a Contact made the
 result (None otherwise), through one :class:`jkrcyl.units.Units` (``Contact.units``; ``with_units`` on a normalised
-result).  The names a control's held quantity goes by in each scale are :data:`jkrcyl.units.CONTROLS`.  P_star and M are P_R* and M_R* of (7.6) for vartheta = inf.
+result).  The names a control's held quantity goes by in each scale are :data:`jkrcyl.units.CONTROLS`.  P_star
+and M are P_R* and M_R* of (7.6) for vartheta = inf.
 
 Every result type, by kind of answer (what returns it):
 
