@@ -34,7 +34,9 @@ poisson = st.one_of(st.just(0.0), st.floats(0.01, 0.49))
 # found by hypothesis: the walker's path closes the top first (h(pi) < 0, confined), the map gives the touch's load
 @example(E=math.inf, nu=0.0, E_I=math.inf, nu_I=0.4375, h0=1.5, lam=2.0)
 # found by hypothesis: the gap closes beside the contact with h(pi) = 2.7 Delta (an elastic pin, nu_I 0.45, in a
-# rigid hole); the walker said 'the gap at phi = pi closes first' until jkrcyl.analysis.reasons.gap_stop
+# rigid hole) at the table point past the fold; the walker stops there, the map finds the (feasible) fold -- a
+# known seam of the walker (it checks the next point's feasibility before a fold inside the cell); the walker
+# said 'the gap at phi = pi closes first' here until jkrcyl.analysis.reasons.gap_stop
 @example(E=math.inf, nu=0.45028557727142104, E_I=math.inf, nu_I=0.45028557727142104, h0=1.4690327046627536,
          lam=2.4731555735280266)
 def test_map_point_is_the_walkers_pull_off(E, nu, E_I, nu_I, h0, lam):

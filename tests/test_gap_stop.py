@@ -20,18 +20,24 @@ def elastic_pin_in_rigid_hole():
     return jkrcyl.Contact.with_lambda(1e-2, 1e-5, (m / probe.M) ** 2, mat, 2.4731555735280266)
 
 
-def test_cohesive_pull_stops_beside_the_contact():
+def test_cohesive_gap_stop_names_the_side():
+    """Next to a table point where the cohesive pin's gap closes beside the contact (h(pi) > 2 Delta there), the
+    stop says so -- not 'the gap at phi = pi closes first'."""
+    from jkrcyl.analysis import branches, forward, reasons
     c = elastic_pin_in_rigid_hole()
-    po = c.pull_off("load")
-    assert po.P is None and po.reason.startswith("no detachment on one patch"), po.reason
-    assert po.state.h_pi > 0.5 * c.Delta                              # the top is open where it stops
-    # independent evidence: a slightly smaller contact of the law, solved alone, overlaps beside its edge
-    law = solver(c.problem).law
-    eps = 0.8 * po.state.eps
-    chk = co.gap_check(law.state(eps), 400)
-    grid = np.linspace(eps * 1.001, math.pi, 2000)
-    h = law.state(eps).fields.gap(grid)
-    assert not chk.feasible and h.min() < 0 and h[-1] > 1.0            # h < 0 beside the contact, h(pi) > Delta
+    pb = c.problem
+    t = branches.table(pb, "sub-critical")
+    feasible, h = np.asarray(t.feasible), np.asarray(t.h_pi_over_Delta)
+    k = next(k for k in range(1, feasible.size) if feasible[k] and not feasible[k - 1])    # the band's edge
+    assert h[k - 1] > 2.0
+    s, = forward.single_patch_states(pb, c.units, "sub-critical", [t.a[k]], "load")
+    assert reasons.gap_stop(pb, s).startswith("no detachment on one patch")
+    # independent evidence: the infeasible neighbour, solved alone at its contact, overlaps beside its edge
+    law = solver(pb).law
+    st = law.state(float(t.eps[k - 1]))
+    grid = np.linspace(st.eps * 1.001, math.pi, 2000)
+    gap = st.fields.gap(grid)
+    assert not co.gap_check(st, 400).feasible and gap.min() < 0 and gap[-1] > 2.0
 
 
 def test_jkr_gap_stop_names_the_top():
