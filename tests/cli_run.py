@@ -59,3 +59,20 @@ def run(*args, cwd=ROOT):
     code = 0 if code is None else code
     assert isinstance(code, int), f"exit status {code!r}"
     return subprocess.CompletedProcess(["jkrcyl", *args], code, out.getvalue(), err.getvalue())
+
+
+def run_script(path, *args):
+    """``python path *args`` in this process, from the repository root: the script runs as __main__ (runpy, argv
+    patched); returns its stdout, and fails the test on a nonzero exit or an exception."""
+    import runpy
+    import sys
+    out, argv = io.StringIO(), sys.argv
+    sys.argv = [str(path), *map(str, args)]
+    try:
+        with _chdir(ROOT), contextlib.redirect_stdout(out):
+            runpy.run_path(str(path), run_name="__main__")
+    except SystemExit as exc:
+        assert exc.code in (None, 0), exc.code
+    finally:
+        sys.argv = argv
+    return out.getvalue()

@@ -13,7 +13,7 @@ import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
-import jkrcyl
+from cases import cohesive_contact
 from jkrcyl.analysis import cohesive_map
 from jkrcyl.numerics import cohesive_scales as scales
 
@@ -40,13 +40,7 @@ poisson = st.one_of(st.just(0.0), st.floats(0.01, 0.49))
 @example(E=math.inf, nu=0.45028557727142104, E_I=math.inf, nu_I=0.45028557727142104, h0=1.4690327046627536,
          lam=2.4731555735280266)
 def test_map_point_is_the_walkers_pull_off(E, nu, E_I, nu_I, h0, lam):
-    if math.isinf(E) and math.isinf(E_I):
-        E_I = 1e9                                    # two rigid bodies: no elasticity at all
-    mat = jkrcyl.Materials.from_young(E=E, nu=nu, E_I=E_I, nu_I=nu_I)
-    probe = jkrcyl.Contact(1e-2, 1e-5, 1.0, mat)
-    m = (h0 * lam / 4) ** 0.75                       # h0/Delta = m^2/s0 with s0 = lambda m^(2/3)/4
-    M = m if math.isinf(probe.problem.theta) else m / probe.problem.theta
-    c = jkrcyl.Contact.with_lambda(1e-2, 1e-5, (M / probe.M) ** 2, mat, lam)
+    c = cohesive_contact(E, nu, E_I, nu_I, h0, lam)
     pb = c.problem
     # the map's lambda is the half-plane one (Delta/R -> 0): the one giving this contact's s0
     lam_map = lam * pb.edge.s0 / scales.zone_strength(lam, pb.m)

@@ -19,6 +19,7 @@ from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 
 import jkrcyl
+from cases import cohesive_contact
 from jkrcyl.analysis import cohesive_map
 from jkrcyl.model.problem import Problem
 from jkrcyl.model.single_patch import solver
@@ -148,7 +149,6 @@ def test_stability_flags_against_the_energy_of_zone_end_held_states():
     c = s_shaped()
     law = law_of(c)
     sv, a, s = _table(c)
-    held = {"load": ("p", "load"), "grip": ("delta", "grip"), "grip-work": (None, "grip-work")}
     from jkrcyl.model.stability import single_patch_flags
     seen = set()
     for eps, cz in ((0.4, 2.99), (0.6, 3.10), (0.3, 2.68), (0.6, 2.47), (1.2, 2.0)):
@@ -273,13 +273,7 @@ def test_s_branches_over_material_pairs(E, nu, E_I, nu_I, h0, lam):
     contact (:func:`_zone_end_alone`: the zone-end root nearest each traced one) are the traced ones to 1e-8; no
     pull from first contact.  Where the round zone stays within the range up to the receding limit the branch is
     that round zone alone (the zone-end pair joins it past a_crit)."""
-    if math.isinf(E) and math.isinf(E_I):
-        E_I = 1e9                                    # two rigid bodies: no elasticity at all
-    mat = jkrcyl.Materials.from_young(E=E, nu=nu, E_I=E_I, nu_I=nu_I)
-    probe = jkrcyl.Contact(1e-2, 1e-5, 1.0, mat)
-    m = (h0 * lam / 4) ** 0.75                       # h0/Delta = m^2/s0 with s0 = lambda m^(2/3)/4
-    M = m if math.isinf(probe.problem.theta) else m / probe.problem.theta
-    c = jkrcyl.Contact.with_lambda(1e-2, 1e-5, (M / probe.M) ** 2, mat, lam)
+    c = cohesive_contact(E, nu, E_I, nu_I, h0, lam)
     law = law_of(c)
     opens = cb.opens_of(cb.Law(*law))
     assume(opens is not None and opens[2] == "S-shaped branch")

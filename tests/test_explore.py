@@ -313,17 +313,10 @@ def test_browser_prints_the_rate_pull_off_of_the_kinetic_law(served):
 
 
 # --- the benchmark ----------------------------------------------------------------------------------------------
-def test_bench_explore_smoke(monkeypatch, capsys):
+def test_bench_explore_smoke():
     """benchmarks/bench_explore.py in smoke mode (one change, the README pin only, no browser) so that it cannot rot;
-    times are not checked.  The script runs as __main__ in this process (runpy: what `python script.py` runs)."""
-    import runpy
-    script = ROOT / "benchmarks" / "bench_explore.py"
-    monkeypatch.setattr(sys, "argv", [str(script), "--repeats", "1", "--no-browser", "--quick"])
-    monkeypatch.chdir(ROOT)
-    try:
-        runpy.run_path(str(script), run_name="__main__")
-    except SystemExit as exc:
-        assert exc.code in (None, 0), exc.code
-    out = capsys.readouterr().out
+    times are not checked.  The script runs as __main__ in this process (tests/cli_run.run_script)."""
+    from cli_run import run_script
+    out = run_script(ROOT / "benchmarks" / "bench_explore.py", "--repeats", "1", "--no-browser", "--quick")
     for row in ("alpha* = 0 (README pin)", "compute", "document", "goals:"):
         assert row in out, f"missing {row!r} in\n{out}"

@@ -6,6 +6,7 @@ import math
 import numpy as np
 
 import jkrcyl
+from cases import cohesive_contact
 from jkrcyl.model.single_patch import solver
 from jkrcyl.numerics import cohesive as co
 
@@ -14,10 +15,7 @@ def elastic_pin_in_rigid_hole():
     """An elastic pin (nu_I 0.45) in a rigid hole, range h0 = 1.47 Delta, lambda 2.47 (found by hypothesis,
     tests/test_cohesive_map_property.py)."""
     nu = 0.45028557727142104
-    mat = jkrcyl.Materials.from_young(E=math.inf, nu=nu, E_I=1e9, nu_I=nu)
-    probe = jkrcyl.Contact(1e-2, 1e-5, 1.0, mat)
-    m = (1.4690327046627536 * 2.4731555735280266 / 4) ** 0.75
-    return jkrcyl.Contact.with_lambda(1e-2, 1e-5, (m / probe.M) ** 2, mat, 2.4731555735280266)
+    return cohesive_contact(math.inf, nu, math.inf, nu, 1.4690327046627536, 2.4731555735280266)
 
 
 def test_cohesive_gap_stop_names_the_side():
