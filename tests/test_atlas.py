@@ -156,11 +156,11 @@ def _load_path_class(M, th):
     """Reference class from the library's one load-path walker (jkrcyl.analysis.path: first contact, then the
     walk down the dense closed-form table, 4000 points per branch) and, at the fold, the sign of the fixed-arc
     dp/dk (jkrcyl.analysis.pull_off.grows_under_pull; not the branch rule the atlas uses)."""
-    from jkrcyl.analysis import path, pull_off
+    from jkrcyl.analysis import landing, path, pull_off
     from jkrcyl.units import Units
     pb = eq.problem(M, th, eq.incompressible_gb(th))
     un = Units.normalised(pb, K_edge=1.0)
-    _, start, _ = path.first_contact(pb, un, "load")
+    _, start, _ = landing.first_contact(pb, un, "load")
     if start is None:
         return A.CONF_NONE, None
     if start.branch == "full-contact":

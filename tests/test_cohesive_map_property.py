@@ -31,12 +31,15 @@ poisson = st.one_of(st.just(0.0), st.floats(0.01, 0.49))
 @example(E=math.inf, nu=0.01, E_I=math.inf, nu_I=0.0, h0=1.0, lam=1.822483711054704)
 @example(E=math.inf, nu=0.0, E_I=1e6, nu_I=0.0, h0=1.0, lam=1.5)
 @example(E=math.inf, nu=0.0, E_I=math.inf, nu_I=0.0, h0=1.0, lam=1.0)
-# found by hypothesis: the walker's path closes the top first (h(pi) < 0, confined), the map gives the touch's load
+# found by hypothesis: a shallow fold (P* -0.628642, a dip of 1e-4 below the branch beside it) lies in the cell
+# before the first infeasible table point: the walker stopped at 'gap' there and the map's long steps jumped over
+# it to the touch (-0.628751); both find it now (jkrcyl.analysis.path._fold_in_cell; the map confirms a touch
+# with the default steps); the stand-alone route at default steps gives -0.6286423691237
 @example(E=math.inf, nu=0.0, E_I=math.inf, nu_I=0.4375, h0=1.5, lam=2.0)
 # found by hypothesis: the gap closes beside the contact with h(pi) = 2.7 Delta (an elastic pin, nu_I 0.45, in a
-# rigid hole) at the table point past the fold; the walker stops there, the map finds the (feasible) fold -- a
-# known seam of the walker (it checks the next point's feasibility before a fold inside the cell); the walker
-# said 'the gap at phi = pi closes first' here until jkrcyl.analysis.reasons.gap_stop
+# rigid hole) at the table point past the fold; the walker stopped there ('gap') where the map finds the feasible
+# fold, until the walker looked for a fold inside the cell first (jkrcyl.analysis.path._fold_in_cell): both now
+# detach at P* -0.913959 (tests/test_gap_stop.py)
 @example(E=math.inf, nu=0.45028557727142104, E_I=math.inf, nu_I=0.45028557727142104, h0=1.4690327046627536,
          lam=2.4731555735280266)
 def test_map_point_is_the_walkers_pull_off(E, nu, E_I, nu_I, h0, lam):

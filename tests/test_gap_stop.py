@@ -49,3 +49,18 @@ def test_jkr_gap_stop_names_the_top():
     assert k > 0 and t.h_pi_over_Delta[k] < 0 <= t.h_pi_over_Delta[k - 1]
     s, = forward.single_patch_states(pb, Units.normalised(pb), "sub-critical", [t.a[k - 1]], "load")
     assert reasons.gap_stop(pb, s).startswith("confined: the gap at phi = pi closes first")
+
+
+def test_walker_finds_the_fold_before_the_gap():
+    """The same pin: the table's first infeasible point lies past the pull-off fold, which is feasible; the walk
+    must find that fold inside the cell (it stopped at 'gap' one cell early before) and detach there.  Reference:
+    the stand-alone continuation of jkrcyl.numerics.cohesive_pull_off (no table, no walker), its state's
+    feasibility checked on 4000 angles of its own gap."""
+    from jkrcyl.numerics import cohesive_pull_off as cpo
+    c = elastic_pin_in_rigid_hole()
+    pb = c.problem
+    ref = cpo.pull_off_load(pb.m, pb.edge.s0, pb.theta, pb.gb, pb.alpha_ratio)
+    assert ref.kind == "fold" and co.gap_check(ref.state, 4000).feasible
+    got = c.pull_off("load")
+    assert got.reason.startswith("detachment"), got.reason
+    assert abs(c.units.normalise("load", got.P) * pb.scale / ref.p - 1) < 1e-8

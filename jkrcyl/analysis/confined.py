@@ -54,14 +54,14 @@ def confined_events(pb: Problem) -> ConfinedEvents:
                   two_patch_stable_grip=any(b.stable_grip.any() for b in bs),
                   full_contact=any("full" in b.ends for b in bs), branches=bs, gb=pb.gb, alpha_ratio=pb.alpha_ratio)
     nan = math.nan
-    start, event, s = _path.pull_path(pb, un, "load")
+    start, event, s, towards = _path.pull_path(pb, un, "load")
     if event in ("none", "elsewhere"):
         return ConfinedEvents(pb.M, pb.theta, "no-path", (nan, nan), nan, nan, **common)
     if event == "bonded":
         return ConfinedEvents(pb.M, pb.theta, "bonded", (math.inf, nan), nan, nan, **common)
     begin = (float(start.a), float(start.P_star))
     if event in ("fold", "end"):
-        zip_full = _po.grows_under_pull(pb, s.a, "load")
+        zip_full = _po.grows_under_pull(pb, s.a, "load", towards)
         tension = _full.state(pb, P_star=s.P_star).tension_everywhere if zip_full else None
         return ConfinedEvents(pb.M, pb.theta, "zip-full" if zip_full else "detachment", begin, s.P_star, nan,
                               fold_in_tension=tension, **common)

@@ -1,7 +1,7 @@
 """Quasi-static load cycles: the path an experiment follows, its jumps and the energy it dissipates.
 
 The cycle starts at first contact -- the free pin touching the bottom of the hole (P = 0, delta = 0) snaps in
-(jkrcyl.analysis.path.first_contact) -- drives the held quantity up to the maximum, down to the minimum and up
+(jkrcyl.analysis.landing.first_contact) -- drives the held quantity up to the maximum, down to the minimum and up
 again, following stable, feasible branches (jkrcyl.analysis.path.walk), and jumps where a branch ends:
 
 * ``pull-off``: a sub-critical fold: the contact shrinks away; under load the pin lands on the top of the hole
@@ -23,6 +23,7 @@ from ..model.problem import Problem
 from ..results import Cycle, Jump
 from ..units import CONTROLS, Units
 from . import forward as _fw
+from . import landing as _land
 from . import path as _path
 from . import reasons as _reasons
 
@@ -65,7 +66,7 @@ class _Run:
                 value = (hi if up else lo) * self.un.Delta
                 s = _fw.separated_state(self.pb, self.un, value / self.un.Delta, self.control)
                 self.add(s, leg)
-            to, kind = _path.land(self.pb, self.un, s, event, self.control, value, up)
+            to, kind = _land.land(self.pb, self.un, s, event, self.control, value, up)
             if to is None:
                 why = self.pb.not_modelled("full-contact", "the contact growing round after a zip (two patches, "
                                            "full contact) is") if kind == "zip" else ""
@@ -123,7 +124,7 @@ def cycle(pb: Problem, un: Units, control: str, hi: float, lo: float, n: int, de
     """The cycle between the held limits lo < hi (P [N/m] or an approach [m]); delta_work_of(P, delta) the
     work-conjugate approach [m] of the Contact (for the returned path)."""
     run = _Run(pb, un, control)
-    sep, to, kind = _path.first_contact(pb, un, control)
+    sep, to, kind = _land.first_contact(pb, un, control)
     run.add(sep, 0)
     if to is None or _reasons.unmodelled(pb):
         why = _reasons.unmodelled(pb) or _reasons.no_first_contact_reason(pb, control)

@@ -1,6 +1,6 @@
 """Pull-off: the path from first contact down to where the contact lets go, or why it does not.
 
-The free pin touches the bottom of the hole and snaps in (jkrcyl.analysis.path.first_contact: the zero-load
+The free pin touches the bottom of the hole and snaps in (jkrcyl.analysis.landing.first_contact: the zero-load
 contact (8.1) under load control, the contact at zero approach under grip); the walk then lowers the held
 quantity (P, delta or delta_work) through stable, feasible states to
 
@@ -22,10 +22,10 @@ from . import path as _path
 from . import reasons as _reasons
 
 
-def grows_under_pull(pb: Problem, a: float, control: str) -> bool:
+def grows_under_pull(pb: Problem, a: float, control: str, towards: int = 0) -> bool:
     """At the single patch a: does lowering the held quantity at fixed arc lower the edge coefficient (G < w),
     so that the contact grows?  (dX/dk)|_a > 0 (jkrcyl.model.stability; the solver's rule for other edge laws)."""
-    return solver(pb).grows_under_pull(a, control)
+    return solver(pb).grows_under_pull(a, control, towards)
 
 
 def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
@@ -39,7 +39,7 @@ def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
         return PullOff(control, None, None, None, None, unmodelled)
     if not solver(pb).adheres:
         return PullOff(control, None, None, None, None, solver(pb).no_adherence_reason)
-    start, event, s = _path.pull_path(pb, un, control)
+    start, event, s, towards = _path.pull_path(pb, un, control)
     if event == "none":
         why = _reasons.no_first_contact_reason(pb, control)
         return PullOff(control, None, None, None, None, why + ": no path to follow")
@@ -69,7 +69,7 @@ def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
                        f"towards a_crit or the full circle), so the pin does not detach; last state a = {s.a:.6g}")
     if s.branch == "contactless":
         return _detached(control, s)
-    if grows_under_pull(pb, s.a, control):
+    if grows_under_pull(pb, s.a, control, towards):
         why = pb.not_modelled("full-contact", "the contact growing round (two patches, full contact) is")
         return PullOff(control, None, None, None, s,
                        f"fold at P = {s.P:.6g} N/m on the {s.branch} branch: a further pull lowers G, the contact "

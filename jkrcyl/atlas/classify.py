@@ -131,7 +131,7 @@ def _stable(a, sub, args):
 
 @njit(cache=True)
 def _start(args, n0, a0s, a0l, ac):
-    """Start of the load path at first contact (jkrcyl.analysis.path.first_contact): (a, sub?) of the smallest
+    """Start of the load path at first contact (jkrcyl.analysis.landing.first_contact): (a, sub?) of the smallest
     stable, feasible zero-load contact; a = 0 when there is none (the pin zips into full contact: bonded)."""
     for k in range(n0):
         a0 = a0s if k == 0 else a0l

@@ -6,7 +6,7 @@ loses digits further down); per contact they superpose into the library's Slices
 jkrcyl.model.stability's (the chain rule of section 8.3, the one rule of the library) and feasibility the gap
 inequality h(pi) >= 0.  The path is jkrcyl.analysis.path.walk (the library's load-path walker) on that track,
 from first contact (the smallest stable, feasible state where the held quantity is 0, as
-jkrcyl.analysis.path.first_contact lands) down to the pull-off and up to the end of the segment.  Folds are refined
+jkrcyl.analysis.landing.first_contact lands) down to the pull-off and up to the end of the segment.  Folds are refined
 on cubic splines of the unit parts in log a (through the exact values at the nodes; for the segment of
 approach data) or on exact states (:func:`pull_off`, the force the fit refuses rows with and reports).  Where
 first contact lands elsewhere than on this branch the fit asks Contact.pull_off itself.

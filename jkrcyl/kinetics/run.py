@@ -11,6 +11,7 @@ import math
 
 import numpy as np
 
+from ..analysis import landing as _land
 from ..analysis import path as _path
 from ..analysis import reasons as _reasons
 from ..laws.kinetic import kinetics_of
@@ -34,7 +35,7 @@ def rest_start(contact, control: str, held=None):
     path, jkrcyl.analysis.path) or, with ``held`` (the held quantity, SI), the state that path reaches at it.
     Returns (state, '') or (None, why not); cached per contact."""
     pb, un = contact.problem, contact.units
-    _, to, _ = _path.first_contact(pb, un, "load")
+    _, to, _ = _land.first_contact(pb, un, "load")
     if to is None:
         return None, _reasons.no_first_contact_reason(pb)
     if to.branch != "sub-critical" or to.side != "bottom":

@@ -274,14 +274,20 @@ class Cohesive(SinglePatch):
             return "sub-critical", 2.0
         return None
 
-    def grows_under_pull(self, a, control):
-        """At a fold, the state leaves along the branch's tangent in the direction a further pull drives it:
-        under load the approach falls, under grip the load rises towards 0; the contact grows if eps rises
-        that way.  The tangent at the point (d eps, and the per-point slopes of p and delta along it), not a
-        difference across points; the zone-only pin (a <= 1) has no contact to grow."""
+    def grows_under_pull(self, a, control, towards=0):
+        """At a fold, whether a further pull makes the contact grow.  Reached by a walk along stable states
+        (towards = the sign of a's change along it): the state goes on past the fold the way the walk went (the
+        stable side is behind it), so the contact grows where eps rises that way.  Otherwise the branch's tangent
+        in the direction a further pull drives it: under load the approach falls, under grip the load rises
+        towards 0.  The two agree at an ordinary fold; where the approach turns with the load (every slope along
+        the branch vanishing together: an elastic pin nu_I 0.45 in a rigid hole, h0 1.47 Delta, lambda 2.47,
+        tests/test_gap_stop.py) the tangent's sign is noise and only the walk's direction says.  The zone-only
+        pin (a <= 1) has no contact to grow."""
         if a <= 1:
             return False
         (deps, _), pt = self._where(a)[2], self.point(a)
+        if towards:
+            return bool(deps * towards > 0)
         return bool(deps * pt.ddn_dt < 0) if control == "load" else bool(deps * pt.dp_dt > 0)
 
     def free_range(self):

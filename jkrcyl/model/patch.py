@@ -90,9 +90,10 @@ class SinglePatch:
         """{control: (1/w) dG/da at fixed X} (section 8.3; jkrcyl.model.stability)."""
         return _stab.release_rates(s, self.problem.m, self.problem.work_shift)
 
-    def grows_under_pull(self, a: float, control: str) -> bool:
+    def grows_under_pull(self, a: float, control: str, towards: int = 0) -> bool:
         """At a fold at a: does a further pull (the held quantity lowered) make the contact grow (G < w, the
-        fixed-arc derivative (dX/dk)|_a > 0, jkrcyl.model.stability) rather than shrink away?"""
+        fixed-arc derivative (dX/dk)|_a > 0, jkrcyl.model.stability) rather than shrink away?  (towards, the
+        direction of the walk that reached it, is read by laws whose slopes can all vanish at a fold.)"""
         return bool(_stab.fixed_arc_derivatives(self.states([a]), self.problem.work_shift)[control][0] > 0)
 
     def free_range(self):

@@ -15,10 +15,10 @@ import math
 from dataclasses import InitVar, dataclass
 
 from .._validate import finite_scalar, theta as _check_theta
-from ..laws.griffith import GRIFFITH_EDGE
 from ..materials import snap_alpha
 from ..numerics import kernels as _k
 from .edge import Edge
+from .griffith import GRIFFITH_EDGE
 
 
 @dataclass(frozen=True)
@@ -37,7 +37,7 @@ class Problem:
         alpha*/beta* in (-1, 1) (0: the paper's closed forms); every material pair has it below 1/(2 vartheta)
         (:meth:`require_material_pair`, which full contact and two patches need).
     edge : jkrcyl.model.edge.Edge
-        The normalised edge law: JKR's Griffith condition (default, jkrcyl.laws.griffith.GRIFFITH_EDGE), or any
+        The normalised edge law: JKR's Griffith condition (default, jkrcyl.model.griffith.GRIFFITH_EDGE), or any
         other law's (e.g. the Maugis-Dugdale ``jkrcyl.laws.DugdaleEdge(s0)``).
     """
 

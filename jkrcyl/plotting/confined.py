@@ -18,6 +18,7 @@ import numpy as np
 
 from .. import equilibria as eq
 from .._validate import finite_scalar, theta as _check_theta
+from ..analysis import landing as _land
 from ..analysis import path as _path
 from ..units import Units
 from . import style as st
@@ -52,12 +53,12 @@ def _load_path(pb):
     """(start, event, end, landing) of slow pulling under load, normalised (P = P*, delta = delta/Delta): the
     walk of jkrcyl.analysis.path from first contact (as confined_events), the jump's landing state or None."""
     un = Units.normalised(pb, K_edge=1.0)
-    start, event, end = _path.pull_path(pb, un, "load")
+    start, event, end, _ = _path.pull_path(pb, un, "load")
     if event in ("none", "bonded", "elsewhere"):
         return start, None, None, None
     to = None
     if event in ("fold", "end"):
-        to, _ = _path.land(pb, un, end, "fold", "load", end.P, False)
+        to, _ = _land.land(pb, un, end, "fold", "load", end.P, False)
     return start, event, end, to
 
 

@@ -1,0 +1,181 @@
+"""Where a jump lands, how a branch continues past its end, and first contact: the landing half of the load-path
+walker (jkrcyl.analysis.path walks the tracks; pull-off, the confined analysis, cycles and the kinetics read
+both).  A jump keeps the held value: :func:`land` picks the stable, feasible state it lands on among the
+solutions of every branch at that value (jkrcyl.analysis.forward.solve_normalised).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..model import two_patch as _two
+from ..model.problem import Problem
+from ..model.single_patch import solver
+from ..units import CONTROLS, Units
+from . import branches as _br
+from . import forward as _fw
+
+
+def _other(side):
+    return {"bottom": "top", "top": "bottom"}.get(side, side)
+
+
+def continuation(pb: Problem, un: Units, s, control: str):
+    """The state where the branch of s continues past its end (the cohesive contact branch's touch end and the
+    zone-only branch, SinglePatch.continues; the round-zone tail and the bonded pin at its bond limit, into each
+    other; a floats_onto touch end: the free pin at its range's end), or None."""
+    if s.branch == "full-contact":            # the bond breaks: at the top pushing (P > 0), at the bottom pulling
+        sv = solver(pb)
+        end = float(np.asarray(_br.table(pb, "super-critical").a)[-1]) if sv.has("super-critical") else None
+        ok = end is not None and sv.continues("super-critical", end) == ("full-contact", math.inf)
+        return _fw.single_patch_states(pb, un, "super-critical", [end], control,
+                                       "bottom" if s.P_star > 0 else "top")[0] if ok else None
+    regime = s.branch.replace("-top", "")
+    if regime == "sub-critical" and s.a == solver(pb).floats_onto():     # back to the touch: the pin floats
+        hi = solver(pb).free_range()[1]
+        return _fw.separated_state(pb, un, -2 - hi if s.side == "top" else hi, control)
+    nxt = solver(pb).continues(regime, s.a) if solver(pb).has(regime) else None
+    if nxt is None:
+        return None
+    if nxt[0] == "full-contact":              # the round-zone tail closing into the bonded pin, at the held value
+        key = CONTROLS[control].normalised
+        return _fw.full_contact_state(pb, un, key, getattr(s, key), control)     # either side: the same pin
+    return _fw.single_patch_states(pb, un, nxt[0], [nxt[1]], control, s.side)[0]
+
+
+def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: bool):
+    """The state a jump from s lands on, at the same held value, and the jump's kind ('snap-in', 'pull-off',
+    'zip', 'top-contact'; 'continue' where a branch goes on as another, without a jump); (None, kind) when no
+    stable, feasible state is there."""
+    if event == "end":
+        nxt = continuation(pb, un, s, control)
+        if nxt is not None:
+            if nxt.stable and nxt.feasible:
+                return nxt, "continue"
+            across = _floats_onto(pb, un, control, _other(s.side)) if nxt.branch == "separated" else None
+            if across is not None:   # a floating pin under load (P = 0 only) floats across onto the other side's
+                return across, "continue"      # touch end: no jump, the contact vanishes and forms continuously
+            event = "fold"           # its continuation is unstable: the path jumps from the branch's end
+    # two-patch states are traced by continuation: only where the contact grows or the top closes
+    quick = event == "touch" or (event == "fold" and s.branch.startswith("sub-critical"))
+    names = [b for b in _fw.BRANCH_SOLVERS if not (quick and b == "two-patch")]
+    target = un.normalise(control, value)
+
+    def candidates(branches):
+        return [x for x in _fw.solve_normalised(pb, un, control, target, branches) if x.stable and x.feasible
+                and not (x.branch == s.branch and abs(x.a - s.a) <= 1e-6 * max(s.a, 1e-300))]
+    # a snap-in takes the smallest state on its side, a sub-critical pull-off a smaller one or the smallest on the
+    # other side: a super-critical state (eps > eps_crit) is larger than any sub-critical one, so those branches
+    # (for a traced law, a trace of their own) are searched only where the others leave no candidate
+    small = s.branch == "separated" or (event == "fold" and s.branch.startswith("sub-critical"))
+    first = [b for b in names if not b.startswith("super-critical")] if small else names
+    cands = candidates(first)
+    if s.branch == "separated":                          # free pin touching a side: snap-in there
+        side = ("bottom" if up else "top") if control == "load" else \
+            ("bottom" if value >= -un.Delta else "top")
+        floated = _floats_onto(pb, un, control, side)     # or a floating pin going on onto its contact
+        if floated is not None:
+            return floated, "continue"
+        if first != names and not any(x.side == side for x in cands):
+            cands = candidates(names)
+        on = [x for x in cands if x.side == side] or [x for x in cands if x.side == "both" and
+                                                      _zips_round(pb, un, control, target, side)]
+        return (min(on, key=lambda x: x.size), "snap-in") if on else (None, "snap-in")
+    if event in ("fold", "end") and s.branch.startswith("contactless"):    # the zone-only pin (cohesive)
+        if up:
+            into = [x for x in cands if x.side == s.side and x.size > 0]
+            return (min(into, key=lambda x: x.size), "snap-in") if into else (None, "snap-in")
+        off = [x for x in cands if x.branch == "separated" or x.side == _other(s.side)]
+        return (min(off, key=lambda x: x.size), "pull-off") if off else (None, "pull-off")
+    # a cohesive S-shaped branch's fold met pushing, or one the pull-off rule has no state for: the nearest in size
+    nearest = lambda xs: min(xs, key=lambda x: abs(x.size - s.size)) if xs else None
+    if event == "fold" and s.branch.startswith("sub-critical") and up:
+        got = nearest([x for x in cands if x.side == s.side])
+        if got is not None:
+            return got, "snap-in"
+    if event == "fold" and s.branch.startswith("sub-critical"):
+        got = _pull_off_landing(s, cands, control)
+        if got is None and first != names:
+            got = _pull_off_landing(s, candidates(names), control)
+        if got is None:
+            got = nearest([x for x in candidates(names) if x.side == s.side])
+        return got, "pull-off"
+    if event == "fold":
+        grow = [x for x in cands if x.size > s.size and x.side in (s.side, "both")]
+        return (min(grow, key=lambda x: x.size), "zip") if grow else (None, "zip")
+    if not pb.models("two-patch"):       # the top closes: the nascent top contact needs two patches
+        return None, "top-contact"
+    return _land_on_top_contact(pb, s, cands, control, target), "top-contact"
+
+
+def _zips_round(pb, un, control, target, side):
+    """Whether a pin with no stable, feasible state on its side at first touch zips round (lands on both): with
+    two patches modelled always, else where it has no single-patch state there at all (one overlapping the top
+    would form a second patch)."""
+    if pb.models("two-patch"):
+        return True
+    names = [b for b in _fw.BRANCH_SOLVERS if b not in ("separated", "full-contact", "two-patch")]
+    return not any(x.side == side for x in _fw.solve_normalised(pb, un, control, target, names))
+
+
+def _pull_off_landing(s, cands, control):
+    """Where a sub-critical fold's pull-off lands among cands: the largest smaller state on its side, else (grip)
+    the free pin, else the smallest state on the other side; None."""
+    same = [x for x in cands if x.side == s.side and x.size < s.size]
+    if same:
+        return max(same, key=lambda x: x.size)
+    if control != "load":
+        sep = [x for x in cands if x.branch == "separated"]
+        if sep:
+            return sep[0]
+    other = [x for x in cands if x.side == _other(s.side)]
+    return min(other, key=lambda x: x.size) if other else None
+
+
+def _land_on_top_contact(pb, s, cands, control, target):
+    """The gap at phi = pi closes (h(pi) = 0, the walk's 'gap'): a nascent top contact appears and the edges relax
+    at the held value (jkrcyl.model.two_patch.descend); the landing is the candidate where that relaxation ends
+    -- full contact, the patch on the other side (the bottom arc vanished), or the two-patch state nearest to
+    the end point."""
+    if s.side == "top":            # the mirror (P* -> -P*, approach -> -2 - approach): solve it at the bottom
+        mirrored = -target if control == "load" else -2.0 - target
+        outcome, end = _two.descend(pb, mirrored, s.eps, control=control)
+        end = end[::-1]
+        outcome = {"transfer": "single", "single": "transfer"}.get(outcome, outcome)
+    else:
+        outcome, end = _two.descend(pb, target, s.eps, control=control)
+    pools = {"full": [x for x in cands if x.branch == "full-contact"],
+             "transfer": [x for x in cands if x.side == _other(s.side)],
+             "single": [x for x in cands if x.side == s.side and x.size < s.size],
+             "two-patch": [x for x in cands if x.branch == "two-patch"]}
+    pool = pools[outcome] or [x for x in cands if x.side in ("both", _other(s.side))]
+    if not pool:
+        return None
+    return min(pool, key=lambda x: math.hypot(x.eps - end[0], x.eps_top - end[1]))
+
+
+def first_contact(pb: Problem, un: Units, control: str):
+    """(free pin touching the bottom, the state it snaps into, kind): at P = 0 under load control (the zero-load
+    contact (8.1); full contact when there is none, M > M_max), at the held approach 0 under grip.
+
+    A cohesive law attracts the pin before it touches: the free pin reaches the range of the bottom at
+    delta = -h0 (the top of the solver's free range); under grip that is where it snaps in (the zone-only
+    states there are unstable under grip for a thin zone) onto the stable state at that approach, under load
+    it is drawn in at P = 0 onto the zero-load contact (the zone-only pin is a saddle under load)."""
+    hi = solver(pb).free_range()[1]
+    sep = _fw.separated_state(pb, un, hi, control)
+    to, kind = land(pb, un, sep, "touch", control, 0.0 if control == "load" else hi * un.Delta, True)
+    return sep, to, kind
+
+
+def _floats_onto(pb: Problem, un: Units, control: str, side: str):
+    """The touch end (SinglePatch.floats_onto) a pin floating in a cohesive range goes on onto at the side, no
+    jump, if stable, feasible and, under load, pushing (else the pin is drawn in); else None."""
+    a = solver(pb).floats_onto()
+    if a is None:
+        return None
+    s, hi = _fw.single_patch_states(pb, un, "sub-critical", [a], control, side)[0], solver(pb).free_range()[1]
+    at = (s.P >= 0) == (side == "bottom") if control == "load" else \
+        abs(s.delta / un.Delta - (hi if side == "bottom" else -2 - hi)) < 1e-4       # grip: at the free range's end
+    return s if s.stable and s.feasible and at else None
