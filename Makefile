@@ -63,6 +63,7 @@ $(DOCS_STAMP): $(STAMP)
 ## make docs: the Sphinx site (guide, gallery executed, theory, API reference) into docs/_build/html; -W: a warning fails
 docs: $(DOCS_STAMP)
 	MPLBACKEND=Agg $(VPY) -m sphinx -W --keep-going -q -b html docs docs/_build/html
+	@! grep -rl --include=*.html "cdn.jsdelivr.net" docs/_build/html || (echo "docs: a page loads MathJax from a CDN" && false)
 	@echo "docs: open docs/_build/html/index.html"
 
 ## make explore: the interactive explorer on an open port of 127.0.0.1 (prints the URL; Ctrl-C stops it)

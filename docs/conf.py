@@ -19,6 +19,7 @@ extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
     "sphinx.ext.mathjax",
+    "sphinx-mathjax-offline",      # MathJax 3 copied into the site (mathjax_path): the docs render offline
     "sphinx.ext.viewcode",
     "numpydoc",
     "myst_parser",
