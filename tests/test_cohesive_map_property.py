@@ -2,7 +2,7 @@
 jkrcyl.numerics.cohesive_pull_off with the map's longer steps, MAP_STEPS) against the model core's walker
 (Contact.pull_off('load') on the traced table) over random material pairs, rigid bodies included, in the strip
 where the range nearly reaches round (h0 between 0.9 and 2.1 Delta): round zones at first touch, S-shaped
-branches and top bridges.  Both give none or the same P* (1e-6) -- except where the walker finds the top closing
+branches, narrow or not.  Both give none or the same P* (1e-6) -- except where the walker finds the top closing
 first (confined), which the map's route does not check -- and the map's 'from first contact' outcome is a
 walker's none.  The map keeps its own route because the walker's pull-off costs 0.2-0.7 s a point cold (the
 branch table is traced whole), ~40 times the map's budget of 60 s for 100 x 100 points on 2 cores

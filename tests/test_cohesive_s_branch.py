@@ -9,8 +9,8 @@ roots coexist at one contact (the first, tending to JKR, and one ending near the
 The branch is traced whole (jkrcyl.numerics.cohesive_round: round zone -> the root near the top, back in eps ->
 the first root, forward) and checked here against states solved alone (a zone-end root at a fixed contact, no
 trace), the energy identity dE = p d(delta), the energy of zone-end-held states (reference/cohesive_energy.py)
-and the direct minimum of the load over the first root's states.  A second kind of jump, a top bridge, is told
-apart (still refused)."""
+and the direct minimum of the load over the first root's states.  A narrow S (the round zone ending within 1e-2
+of h0 at the jump, the turn in eps ~3e-4 wide) is told apart (still refused)."""
 import math
 
 import numpy as np
@@ -59,17 +59,58 @@ def test_the_jump_is_between_two_families():
     assert top is not None and top.c > first.c + 0.05                        # two zone ends at one contact
 
 
-def test_a_top_bridge_is_told_apart():
-    """lambda = 0.05, M = 0.093 (gb = 1/2.8): the round zone's gap reaches h0 (h(pi) within 1e-4 of it) and the
-    zone end jumps to pi - 0.021, staying there as the opening is bracketed closer (not a square root): the gap
-    exceeds h0 beside the top first."""
-    pb = Problem(0.09306048591020996, 1.0, 1 / 2.8)
-    law = (pb.m, scales.zone_strength(0.05, pb.m), 1.0, 1 / 2.8, 0.0)
+def _zone_end_residual(law, eps, c):
+    """h(c) - h0 of the state at the fixed contact eps with the zone |phi| < c, the approach from k = 0 (the
+    fixed contact's affine rows, no trace)."""
+    aff = cb.affine(cb.Law(*law), eps, c)
+    d = -aff[0][0] / aff[0][1]
+    return aff[3][0] + d * aff[3][1]
+
+
+def _turns(law, eps, x_max=0.06):
+    """pi - c of the zone-end roots within x_max of the top at the fixed contact eps (a sign scan of h(c) - h0)."""
+    x = np.geomspace(1e-6, x_max, 80)
+    g = np.array([_zone_end_residual(law, eps, math.pi - v) for v in x])
+    return x[:-1][np.sign(g[:-1]) != np.sign(g[1:])]
+
+
+def _law(M, lam):
+    pb = Problem(M, 1.0, 1 / 2.8)
+    return (pb.m, scales.zone_strength(lam, pb.m), 1.0, 1 / 2.8, 0.0)
+
+
+def test_a_narrow_s_is_told_apart():
+    """M 0.70, lambda 1.47 (gb = 1/2.8), once called a top bridge: the round zone's gap is largest at the top (no
+    zone parts beside it) and has reached h0 at the jump the scan sees; 1e-4 below the opening in eps two
+    zone-end roots lie near the top (a sign scan of h(c) - h0 at that fixed contact: one within 5e-3 of pi, the
+    first root beyond): the zone end comes in from pi and turns back within ~3e-4 in eps -- a narrow S, refused
+    with that name (the continuation's steps would cut across it)."""
+    law = _law(0.70, 1.47)
+    h0 = cb.Law(*law).h0
     eps, c, kind = cb.top_opens(cb.Law(*law))
-    assert kind == "top bridge" and 0.01 < math.pi - c < 0.05
-    assert abs(co.cohesive_state(eps * (1 - 1e-9), *law).h_pi_over_Delta / cb.Law(*law).h0 - 1) < 1e-4
-    for d in (1e-6, 1e-9):
-        assert math.pi - co.cohesive_state(eps * (1 + d), *law).c > 0.01
+    assert kind == "narrow S-shaped branch" and 0.01 < math.pi - c < 0.05
+    below = co.cohesive_state(eps * (1 - 1e-9), *law)
+    gap = below.fields.gap(math.pi - np.array([0.0, 1e-3, 1e-2, 0.1]))
+    assert below.zones == "all" and np.all(np.diff(gap) < 0) and abs(gap[0] / h0 - 1) < 1e-6
+    turns = _turns(law, eps * (1 - 1e-4))
+    assert len(turns) == 2 and turns[0] < 5e-3 < turns[1], turns
+    pin = solver(jkrcyl.equilibria.problem(0.70, 1.0, 1 / 2.8, s0=law[1]))
+    assert "narrow S-shaped branch" in pin.unmodelled
+
+
+def test_a_late_opening_is_an_s_not_a_bridge():
+    """M 0.093, lambda 0.05 (once called a top bridge): the round zone's gap is largest at the top and still below
+    h0 at the jump (by 2e-4 Delta); 1e-5 below the jump two zone-end roots lie near the top, neither at pi: the
+    first root's family turns back there, the round zone goes on -- the S of the M 0.45 case, narrower."""
+    law = _law(0.09306048591020996, 0.05)
+    h0 = cb.Law(*law).h0
+    eps, c, kind = cb.top_opens(cb.Law(*law))
+    assert kind == "S-shaped branch"
+    below = co.cohesive_state(eps * (1 - 1e-9), *law)
+    gap = below.fields.gap(math.pi - np.array([0.0, 1e-3, 1e-2, 0.1]))
+    assert below.zones == "all" and np.all(np.diff(gap) < 0) and h0 - 1e-3 < gap[0] < h0 - 1e-4
+    turns = _turns(law, eps * (1 - 1e-5), 0.1)
+    assert len(turns) == 2 and 1e-3 < turns[0] < turns[1] < 0.05, turns
 
 
 # --- the traced S-shaped branch -------------------------------------------------------------------------------

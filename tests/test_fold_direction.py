@@ -21,7 +21,8 @@ poisson = st.one_of(st.just(0.0), st.floats(0.01, 0.49))
 
 
 @settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(M=st.floats(0.05, 3.0), theta=st.one_of(st.just(math.inf), st.floats(0.6, 20.0)), gb=st.one_of(st.just(0.0), st.floats(1e-6, 1.0)))
+@given(M=st.floats(0.05, 3.0), theta=st.one_of(st.just(math.inf), st.floats(0.6, 20.0)),
+       gb=st.one_of(st.just(0.0), st.floats(1e-6, 1.0)))
 def test_jkr_fold_is_left_the_way_the_walk_went(M, theta, gb):
     """JKR (alpha* = 0, closed forms): where the pull from first contact ends at a fold, the fixed-arc rule says
     the contact grows exactly where the walk was making it grow (towards > 0: the super-critical zip)."""

@@ -13,7 +13,7 @@ contact vanishes: small lambda), none because the range reaches round (h0 > 2 De
 adherence force), none because the branch has no zero-load contact (the zone's pull exceeds the clearance's
 push at every contact size: the pin is drawn into contact on its own), none from first contact because the pin
 floats in a range reaching round and touches onto round-zone contacts that push, whose zone jumps only when pushed
-further (an S-shaped branch or a top bridge: Contact.pull_off says the same).
+further (an S-shaped branch, narrow or not: Contact.pull_off says the same).
 """
 from __future__ import annotations
 

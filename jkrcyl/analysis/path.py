@@ -1,6 +1,6 @@
 """The one load-path walker: tracks (branches as polylines in the held quantity), the walk along a track and the
-path of slow pulling (where a jump lands and first contact: jkrcyl.analysis.landing).  Used by pull-off, the confined analysis and cycles (the atlas has a numba twin,
-tested equal to it).
+path of slow pulling (where a jump lands and first contact: jkrcyl.analysis.landing).  Used by pull-off, the
+confined analysis and cycles (the atlas has a numba twin, tested equal to it).
 
 A walk follows a track from a state towards a target value of the held quantity (P under load control, delta or
 delta_work under grip) through stable, feasible states, and ends at an event:

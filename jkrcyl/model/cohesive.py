@@ -29,7 +29,7 @@ zone end grows with the zone).  The total potential (elastic + Dugdale interface
 dE = p d(delta/Delta) along the branches.  A zone reaching round at the touch end that stops reaching round by
 a jump of its first zone-end root (jkrcyl.numerics.cohesive_branch.top_opens) is an S-shaped branch -- the round
 zone, then the root near the top back in eps to a fold, then the first root -- traced whole
-(jkrcyl.numerics.cohesive_round), or a top bridge.  Full contact is the bonded pin of jkrcyl.model.full_contact
+(jkrcyl.numerics.cohesive_round), a narrow S or a top bridge.  Full contact is the bonded pin of jkrcyl.model.full_contact
 (where the tension stays below s0).  Not modelled: two patches (jkrcyl.laws.dugdale: the law's families),
 top-zone bridges (jkrcyl.numerics.cohesive_zones finds them; :attr:`unmodelled` says so).
 """

@@ -42,6 +42,8 @@ GAP_POINTS = 96         # Gauss-Legendre points of int h over the zone (the inte
 ALL_POINTS = 160        # eps samples of a branch whose zone reaches round at the touch end
 ROUND_SCAN = 10         # contacts scanned for a zone that stops reaching round (top_opens)
 ROUND_JUMP = 1e-2       # a zone end this far below pi just past the opening is a jump (a continuous one -> pi)
+TOP_PROBE = 1e-2        # top_opens: the gap this fraction of the exterior below pi against h(pi) (a bridge: larger)
+NARROW = 1e-6           # top_opens: a round zone within this of h0 at the jump has ended there (a narrow S)
 _XG, _WG = np.polynomial.legendre.leggauss(GAP_POINTS)
 
 Point = namedtuple("Point", "eps c delta p B dp_dt ddn_dt D_p D_dn h_pi potential feasible zones fields")
@@ -98,11 +100,16 @@ def top_opens(law, points=ROUND_SCAN):
     """For a branch whose zone reaches round at its touch end (zones 'all' at eps_lo): (eps, c, kind) where the
     first zone-end root of jkrcyl.numerics.cohesive.cohesive_state stops short of the top with a jump to c
     (pi - c > ROUND_JUMP just past eps, and as large with the opening bracketed 1e4 times closer), or None when
-    the zone stays round or opens continuously (c -> pi, as a square root).  Two kinds of jump:
-    'top bridge' -- the round zone's gap reaches h0 beside the top first (h(pi) ~ h0 just before), the states
-    beyond keep a zone at the top apart from the bottom one; 'S-shaped branch' -- h(pi) is still well below h0,
-    the round-zone states go on and the first root belongs to a family met at a fold in eps (traced whole:
-    jkrcyl.numerics.cohesive_round; a top bridge is not traced).  A scan of
+    the zone stays round or opens continuously (c -> pi, as a square root).  Two kinds of jump, told apart by
+    where the round zone's gap is largest: 'S-shaped branch' -- at the top (h(pi) is the largest gap), so the
+    round-zone states go on until h(pi) = h0, where a zone end comes in from pi and runs back in eps to a fold
+    onto the first root (traced whole: jkrcyl.numerics.cohesive_round, where the round zone ends past the jump);
+    'narrow S-shaped branch' where the round zone has reached the range already at the jump the scan sees (h(pi)
+    >= (1 - NARROW) h0 there: at M 0.70, lambda 1.47 (gb 1/2.8) the two zone-end roots near the top, pi - c =
+    1e-3 and 2e-2 at 1e-4 below the opening, meet ~3e-4 below it in eps: the continuation's steps cut across
+    that S, not traced); 'top bridge' -- beside the top (h has a local minimum at pi), so the zone would part
+    beside the top and keep a zone at the top apart from the bottom one (not traced; none found yet: the two
+    cases once called so, M 0.70 at lambda 1.47 and M 0.093 at lambda 0.05, are S-shaped).  A scan of
     ``points`` contacts (geometric in eps up to eps_hi: the top gap grows with the contact), the first short one
     bisected to 1e-10 in log eps."""
     c_at = lambda e: law.state(e).c
@@ -123,7 +130,9 @@ def top_opens(law, points=ROUND_SCAN):
     if opening[1] <= max(ROUND_JUMP, 0.5 * opening[0]):
         return None
     below = law.state(math.exp(lo))
-    kind = "top bridge" if below.h_pi_over_Delta > (1 - 1e-2) * law.h0 else "S-shaped branch"
+    beside = below.fields.gap(math.pi - TOP_PROBE * (math.pi - below.eps))[0]
+    ended = state_values(law, math.exp(hi), math.pi)[2] >= (1 - NARROW) * law.h0    # the round zone, at the jump
+    kind = "top bridge" if beside > below.h_pi_over_Delta else "narrow S-shaped branch" if ended else "S-shaped branch"
     return math.exp(hi), math.pi - opening[1], kind
 
 

@@ -11,7 +11,7 @@ JKR and Baney-Hui asymptotes, and the map of the pull-off over (lambda, M) showi
   round: h0 > 2 Delta less the uniform pull); light blue where the sub-critical contact branch has no zero-load
   contact (no detachment path from P = 0 on it; JKR's is super-critical there or missing, and the super-critical
   side is not modelled for the law); sand where the pin floats at first touch on a round zone that jumps when
-  pushed (an S-shaped branch or a top bridge: jkrcyl.numerics.cohesive_branch.top_opens; no adherence force from
+  pushed (an S-shaped branch, narrow or not: jkrcyl.numerics.cohesive_branch.top_opens; no adherence force from
   first contact); the black line: where the pull-off vanishes.
 """
 from __future__ import annotations
