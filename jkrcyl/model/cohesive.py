@@ -185,12 +185,18 @@ class Cohesive(SinglePatch):
         dp, ddn = col("dp_dt") * c_scale, col("ddn_dt") * c_scale
         return Slice(a=a, p=p, dp_da=dp, dn=dn, ddn_da=ddn, dw=dn + cw * p, ddw_da=ddn + cw * dp, h=col("h_pi"),
                      p_k=col("D_p"), dn_k=col("D_dn"), B=col("B"), eps=col("eps"), c=col("c"),
-                     c_top=np.zeros(a.size), total=col("potential"), feasible=col("feasible").astype(bool))
+                     c_top=np.zeros(a.size), feasible=col("feasible").astype(bool))
+
+    def potential(self, s):
+        """The total potential of the states s (each point's, a quadrature over the zones: computed only when an
+        energy is asked for, not for a branch table)."""
+        return np.array([self.point(x).potential for x in np.atleast_1d(s.a).tolist()], dtype=float)
 
     def table_values(self, regime, field):
-        """(a, values) of p, dn, dw or h on a contact branch's table grid without slopes, flags and energy (the
-        trace's cached fixed contacts: a search for a held value needs no more); None otherwise."""
-        if regime == "contactless" or field not in ("p", "dn", "dw", "h"):
+        """(a, values) of p, dn, dw or h on a branch's table grid without slopes, flags and energy (the trace's
+        cached fixed contacts, the zone-only pin's closed form: a search for a held value needs no more); None
+        otherwise."""
+        if field not in ("p", "dn", "dw", "h") or (regime == "contactless" and self._contactless is None):
             return None
         a = self.grid(regime, self.dense_points)
         return a, np.array([self.value(field, x) for x in a.tolist()])
