@@ -23,6 +23,7 @@ from ..model.problem import Problem
 from ..results import Cycle, Jump
 from ..units import CONTROLS, Units
 from . import forward as _fw
+from . import lazy_track as _lazy
 from . import path as _path
 from . import reasons as _reasons
 
@@ -40,8 +41,8 @@ class _Run:
     def track(self, s):
         if s.branch not in self.tracks:
             side = "top" if s.branch.endswith("-top") else "bottom"
-            self.tracks[s.branch] = _path.SingleTrack(self.pb, self.un, s.branch.replace("-top", ""), side,
-                                                      self.control)
+            self.tracks[s.branch] = _lazy.track(self.pb, self.un, s.branch.replace("-top", ""), side,
+                                                self.control)
         return self.tracks[s.branch]
 
     def add(self, s, leg):

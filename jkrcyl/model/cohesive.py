@@ -314,16 +314,16 @@ class Cohesive(SinglePatch):
     def adheres(self):
         """Whether some feasible contact state pulls (p < 0) on either side of a_crit; not when the range reaches
         round (h0 > 2 Delta)."""
-        s = self.states(self.grid("sub-critical", self.dense_points))
-        return bool(np.any((s.p < 0) & s.feasible)) or any(self.point(x).feasible for x in self._super_pulls())
+        a, p = self.table_values("sub-critical", "p")      # feasibility (a gap check) only where p < 0, first found
+        return any(self.point(x).feasible for x in a[p < 0].tolist()) or \
+            any(self.point(x).feasible for x in self._super_pulls())
 
     @property
     def no_adherence_reason(self):
         if self.law.h0 >= 2.0:
             return (f"no adherence force: every state of the cohesive law pushes (P >= 0) -- its range h0 = "
                     f"{self.law.h0:.6g} Delta reaches round the hole (a uniform traction has no resultant)")
-        s = self.states(self.grid("sub-critical", self.dense_points))
-        pulls = bool(np.any(s.p < 0)) or self._super_pulls().size > 0
+        pulls = bool(np.any(self.table_values("sub-critical", "p")[1] < 0)) or self._super_pulls().size > 0
         return ("no adherence force on one patch: every feasible single-patch state pushes (P >= 0)" +
                 ("; those that pull overlap the top of the hole (h(pi) < 0), where two patches or full contact take "
                  "over -- " + self.problem.not_modelled("two-patch", "a contact at the bottom and the top (two "
