@@ -81,7 +81,8 @@ class Cohesive(SinglePatch):
         got = _csu.trace(self.law)
         if got is None or len(got[0]) < 2:
             return None
-        return _ct.Traced(self.law, got[:3], _ct.SUPER_OFFSET, tail=got[3] if len(got) > 3 else ())   # [3]: its tail
+        tail, n_join = (got[3], got[4]) if len(got) > 3 else ((), 0)         # the round-zone tail and the join
+        return _ct.Traced(self.law, got[:3], _ct.SUPER_OFFSET, tail=tail, n_join=n_join)
 
     def _branch(self, regime):
         if regime == "super-critical":
