@@ -67,3 +67,30 @@ def test_a_pull_off_walk_computes_few_flags():
     _, event_eager, end_eager = _path.walk(eager, eager.index(start.a), -math.inf)
     assert (event, end.a, end.P) == (event_eager, end_eager.a, end_eager.P) and event == "fold"
     assert max(tr.stable.computed, tr.feasible.computed) < tr.a.size / 2, (tr.stable.computed, tr.a.size)
+
+
+# (lambda, h0/Delta) over the map's range and the ranges that nearly reach round; the pairs: identical bodies, a
+# rubber pin in a rigid cradle, two rigid bodies (the pin then elastic, E_I 1 GPa: tests/cases.py)
+GRID = [(lam, h0) for lam in (0.3, 3.0, 30.0) for h0 in (0.1, 1.0, 1.6)]
+PAIRS = [(2.6e9, 0.3, 2.6e9, 0.3), (math.inf, 0.0, 2e6, 0.49), (math.inf, 0.0, math.inf, 0.3)]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("pair", PAIRS)
+def test_pull_off_on_lazy_tracks_is_the_tables(pair, monkeypatch):
+    """Contact.pull_off (load and grip) with the walker's tracks built lazily (what path.pull_path gives once it
+    builds them through lazy_track.track) against the eager tables': the same P, width and approach (1e-12
+    relative: the held values come from the trace's contacts, to rounding) and the same reason, over GRID."""
+    for lam, h0 in GRID:
+        got = {}
+        for lazy in (False, True):
+            c = cohesive_contact(*pair, h0, lam)          # a fresh problem: the solver's caches start empty
+            with monkeypatch.context() as mp:
+                if lazy:
+                    mp.setattr(_path, "SingleTrack", lt.track)
+                got[lazy] = [c.pull_off(ctl) for ctl in ("load", "grip")]
+        for eager, lazy in zip(got[False], got[True]):
+            assert eager.reason == lazy.reason, (pair, lam, h0, eager.reason, lazy.reason)
+            for name in ("P", "contact_width", "delta"):
+                x, y = getattr(eager, name), getattr(lazy, name)
+                assert (x is None) == (y is None) and (x is None or abs(x - y) <= 1e-12 * abs(x)), (name, x, y)
