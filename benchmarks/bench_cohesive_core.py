@@ -38,7 +38,8 @@ from jkrcyl.numerics import cohesive_pull_off as cpo
 
 PAIR = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
 # cold pull-off CPU [ms] (median of 5 fresh contacts) at 20bffe5, before the table's potential and feasibility were
-# computed when read and the walk's flags per point (same machine, load average ~2)
+# computed when read and the walk's flags per point (same machine, load average ~2; interleaved with this branch at
+# load 5.5: 20bffe5 100/92/200/172, this branch 83/78/168/156, on lazy tracks 69/54/105/94 ms)
 BEFORE_CPU_MS = {1.0: 92.0, 3.0: 87.0, 10.0: 183.0, 1000.0: 166.0}
 
 
