@@ -215,18 +215,20 @@ class Cohesive(SinglePatch):
         if a in self._cache:
             pt = self._cache[a]
             p, dn, h = pt.p, pt.delta, pt.h_pi
-        elif a <= 1:
-            lo, hi = self._contactless
-            st = _cz.contactless_state(lo + a * (hi - lo), self.law.m, self.law.s0, self.law.theta, self.law.gb,
-                                       self.law.ar)
-            p, dn, h = st.p, st.delta_over_Delta, st.h_pi_over_Delta
         elif a in self._values:
             p, dn, h = self._values[a]
         else:
-            eps, c, _ = self._where(a)
             if len(self._values) > 20000:
                 self._values.clear()
-            p, dn, h = self._values.setdefault(a, _cb.state_values(self.law, eps, c))
+            if a <= 1:
+                lo, hi = self._contactless
+                st = _cz.contactless_state(lo + a * (hi - lo), self.law.m, self.law.s0, self.law.theta, self.law.gb,
+                                           self.law.ar)
+                got = st.p, st.delta_over_Delta, st.h_pi_over_Delta
+            else:
+                eps, c, _ = self._where(a)
+                got = _cb.state_values(self.law, eps, c)
+            p, dn, h = self._values.setdefault(a, got)
         return {"p": p, "dn": dn, "dw": dn + self.problem.work_shift * p, "h": h}[field]
 
     def root(self, field, lo, hi, flo, fhi, target=0.0):
