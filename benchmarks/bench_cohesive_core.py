@@ -7,10 +7,13 @@ Prints, in one run (the README pin's pair, R = 10 mm, Delta = 1 um, w = 0.05 J/m
   * one state: the phase-1 solver (jkrcyl.numerics.cohesive.cohesive_state) and one point of the branch table
     (state + tangent slopes + stability derivatives + feasibility + energy, jkrcyl.model.cohesive);
   * the branch: trace and table of a fresh contact (cold: what the first call on a contact costs);
-  * a pull-off through the public API, cold (trace, table, walk: the median of 3 fresh contacts after numba's
+  * a pull-off through the public API, cold (trace, held values, walk on lazy tracks -- jkrcyl.analysis.tracks:
+    stability and feasibility computed for the points a walk reads; the median of 3 fresh contacts after numba's
     cached code is loaded, with the LUs it built) at lambda = 1, 3, 10, 50 and the thin zones 143 (the issue-26
     roller's lambda), 300, 1000 (the Dugdale end layer subtracted, jkrcyl.numerics.cohesive_layer), and warm;
-    the stand-alone continuation;
+    the same with the walker on the eager tables (every table point's flags); the CPU time against
+    BEFORE_CPU_MS (20bffe5: every table point's slopes, feasibility and energy computed); the stand-alone
+    continuation;
   * a load cycle (P = +-2000 N/m), warm;
   * the (lambda, M) pull-off map (n x n, lambda in [0.01, 10], M in [0.01, 1], Dask on 2 processes).
 Goals (issue 19): one state <= 1 ms, a pull-off <= 100 ms, the 100 x 100 map <= 60 s on 2 cores; issue 26: a cold
@@ -26,12 +29,28 @@ import time
 import numpy as np
 
 import jkrcyl
+from jkrcyl.analysis import tracks
 from jkrcyl.analysis.cohesive_map import pull_off_map
 from jkrcyl.model.single_patch import solver
 from jkrcyl.numerics import cohesive as co
 from jkrcyl.numerics import cohesive_pull_off as cpo
 
 PAIR = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+# cold pull-off CPU [ms] (median of 5 fresh contacts) at 20bffe5, before the table's potential and feasibility were
+# computed when read and the walk's flags per point (same machine, load average ~2; interleaved with this branch at
+# load 5.5: 20bffe5 100/92/200/172, this branch 83/78/168/156, on lazy tracks 69/54/105/94 ms)
+BEFORE_CPU_MS = {1.0: 92.0, 3.0: 87.0, 10.0: 183.0, 1000.0: 166.0}
+
+
+class EagerTables:
+    """Within: the pull-off walker builds its tracks on the branch's whole table (jkrcyl.analysis.tracks.SingleTrack:
+    every point's flags), as path.pull_path did before its tracks were lazy."""
+
+    def __enter__(self):
+        self.lazy, tracks.track = tracks.track, tracks.SingleTrack
+
+    def __exit__(self, *exc):
+        tracks.track = self.lazy
 
 
 def best(f, repeats):
@@ -72,7 +91,7 @@ def main():
     args = ap.parse_args()
     print(f"# {platform.processor() or platform.machine()}, python {platform.python_version()}")
     k = [1]
-    for lam in (2.0, 20.0, 500.0):            # numba's cached code loaded (both LU paths, the layer): not a contact's cost
+    for lam in (2.0, 20.0, 500.0):     # numba's cached code loaded (both LU paths, the layer): not a contact's cost
         k[0] += 1
         fresh(lam, k[0]).pull_off("load")
     c = fresh(3.0, 0)
@@ -82,14 +101,18 @@ def main():
     print(f"one state (phase-1 solver, eps = 0.8): {t_state * 1e3:.3f} ms")
     a = sv.grid("sub-critical", sv.dense_points)
     mid = float(a[len(a) // 2])
-    t_point = best(lambda: (sv._cache.clear(), sv.point(mid)), args.repeats)
+    t_point = best(lambda: (sv._cache.clear(), sv.point(mid).feasible, sv.point(mid).potential), args.repeats)
     print(f"one table point (state, slopes, stability derivatives, feasibility, energy): {t_point * 1e3:.3f} ms")
-    cold = {}
+    cold, lazy = {}, {}
     for lam in (1.0, 3.0, 10.0, 1000.0) if args.quick else (1.0, 3.0, 10.0, 50.0, 143.0, 300.0, 1000.0):
         cold[lam] = cold_pull_off(lam, k, 3)
-        print(f"pull-off (load), public API, cold (trace + table + walk), lambda = {lam:4g}: "
+        print(f"pull-off (load), public API, cold (trace + held values + lazy walk), lambda = {lam:4g}: "
               f"{cold[lam][0] * 1e3:7.1f} ms, CPU {cold[lam][2] * 1e3:6.1f} ms ({cold[lam][1]} LUs; median of 3 "
               "fresh contacts)")
+        with EagerTables():
+            lazy[lam] = cold_pull_off(lam, k, 3)
+        print(f"  the same on the eager tables (every point's flags): {lazy[lam][0] * 1e3:7.1f} ms, CPU "
+              f"{lazy[lam][2] * 1e3:6.1f} ms ({lazy[lam][1]} LUs)")
     t_warm = best(lambda: c.pull_off("load"), args.repeats)
     print(f"pull-off (load), public API, warm: {t_warm * 1e3:.1f} ms")
     t_two = best(lambda: cpo.pull_off_load(pb.m, pb.edge.s0, pb.theta, pb.gb), max(2, args.repeats // 4))
@@ -107,8 +130,12 @@ def main():
     print(f"  one state <= 1 ms: {t_state * 1e3:.2f} ms ({ok(t_state, 1e-3)}; a table point {t_point * 1e3:.2f} ms)")
     for lam, (t, _, t_cpu) in cold.items():
         goal = 0.1 if lam <= 10 else 0.5
+        t_lazy, cpu_lazy = lazy[lam][0], lazy[lam][2]
+        was = f"; CPU at 20bffe5 {BEFORE_CPU_MS[lam]:.0f} ms: x{t_cpu * 1e3 / BEFORE_CPU_MS[lam]:.2f}, eager tables " \
+              f"x{cpu_lazy * 1e3 / BEFORE_CPU_MS[lam]:.2f}" if lam in BEFORE_CPU_MS else ""
         print(f"  a pull-off <= {goal * 1e3:.0f} ms, lambda = {lam:g}: cold {t * 1e3:.0f} ms ({ok(t, goal)}; CPU "
-              f"{t_cpu * 1e3:.0f} ms)")
+              f"{t_cpu * 1e3:.0f} ms); on the eager tables {t_lazy * 1e3:.0f} ms ({ok(t_lazy, goal)}; CPU "
+              f"{cpu_lazy * 1e3:.0f} ms){was}")
     print(f"  a pull-off <= 100 ms, warm {t_warm * 1e3:.1f} ms ({ok(t_warm, 0.1)}), stand-alone {t_two * 1e3:.0f} ms "
           f"({ok(t_two, 0.1)})")
     if args.map:

@@ -156,7 +156,7 @@ def _load_path_class(M, th):
     """Reference class from the library's one load-path walker (jkrcyl.analysis.path: first contact, then the
     walk down the dense closed-form table, 4000 points per branch) and, at the fold, the sign of the fixed-arc
     dp/dk (jkrcyl.analysis.pull_off.grows_under_pull; not the branch rule the atlas uses)."""
-    from jkrcyl.analysis import landing, path, pull_off
+    from jkrcyl.analysis import landing, path, pull_off, tracks
     from jkrcyl.units import Units
     pb = eq.problem(M, th, eq.incompressible_gb(th))
     un = Units.normalised(pb, K_edge=1.0)
@@ -165,7 +165,7 @@ def _load_path_class(M, th):
         return A.CONF_NONE, None
     if start.branch == "full-contact":
         return A.CONF_BONDED, None
-    track = path.SingleTrack(pb, un, start.branch, "bottom", "load")
+    track = tracks.SingleTrack(pb, un, start.branch, "bottom", "load")
     _, event, s = path.walk(track, track.index(start.a), -math.inf)
     if event == "gap":
         return A.CONF_TOP, s

@@ -26,6 +26,7 @@ from . import forward as _fw
 from . import landing as _land
 from . import path as _path
 from . import reasons as _reasons
+from . import tracks as _tracks
 
 MAX_REPEATS = 3          # cycles driven until the loop closes (the state at the top of the cycle repeats)
 MAX_JUMPS = 20           # jumps per leg at most
@@ -41,8 +42,8 @@ class _Run:
     def track(self, s):
         if s.branch not in self.tracks:
             side = "top" if s.branch.endswith("-top") else "bottom"
-            self.tracks[s.branch] = _path.SingleTrack(self.pb, self.un, s.branch.replace("-top", ""), side,
-                                                      self.control)
+            self.tracks[s.branch] = _tracks.track(self.pb, self.un, s.branch.replace("-top", ""), side,
+                                                self.control)
         return self.tracks[s.branch]
 
     def add(self, s, leg):

@@ -1,5 +1,6 @@
-"""The one load-path walker: tracks (branches as polylines in the held quantity), the walk along a track and the
-path of slow pulling (where a jump lands and first contact: jkrcyl.analysis.landing).  Used by pull-off, the
+"""The one load-path walker: the walk along a track (a branch as a polyline in the held quantity:
+jkrcyl.analysis.tracks) and the path of slow pulling (where a jump lands and first contact:
+jkrcyl.analysis.landing).  Used by pull-off, the
 confined analysis and cycles (the atlas has a numba twin, tested equal to it).
 
 A walk follows a track from a state towards a target value of the held quantity (P under load control, delta or
@@ -20,76 +21,14 @@ import numpy as np
 
 from ..model.problem import Problem
 from ..model.single_patch import solver
-from ..units import CONTROLS, CURVE_FIELD, Units
-from . import branches as _br
+from ..units import CONTROLS, Units
 from . import forward as _fw
 from . import landing as _land
 from . import tracing as _tr
+from . import tracks as _tracks
 
 
-class SingleTrack:
-    """A single-patch branch (bottom or top, the mirror) on its dense table, the held quantity physical."""
-
-    def __init__(self, pb: Problem, un: Units, regime: str, side: str, control: str):
-        c = _br.table(pb, regime)
-        self.pb, self.un, self.regime, self.side, self.control = pb, un, regime, side, control
-        self.name = regime + ("-top" if side == "top" else "")
-        self.a = np.asarray(c.a)
-        sgn = -1.0 if side == "top" else 1.0
-        self.P = un.physical("load", sgn * np.asarray(c.P_star))
-        d, dw = np.asarray(c.delta_over_Delta), np.asarray(c.delta_work_over_Delta)
-        self.delta = un.physical("grip", -2 - d if side == "top" else d)
-        self.delta_work = un.physical("grip-work", -2 - dw if side == "top" else dw)
-        self.stable = np.asarray(getattr(c, CONTROLS[control].stable))
-        self.feasible = np.asarray(c.feasible)
-
-    @property
-    def y(self):
-        return getattr(self, CONTROLS[self.control].physical)
-
-    def state_at(self, a):
-        return _fw.single_patch_states(self.pb, self.un, self.regime, a, self.control, self.side)[0]
-
-    def _field_target(self, value):
-        """The solver field of the held quantity and the bottom branch's target for a physical value."""
-        ctl = CONTROLS[self.control]
-        if ctl.is_load:                                     # mirror: P -> -P, either approach -> -2 Delta - itself
-            return ctl.field, self.un.to_kernel("load", -value if self.side == "top" else value)
-        t = self.un.to_kernel(self.control, value)
-        return ctl.field, (-2 - t if self.side == "top" else t)
-
-    def exact(self, j, k, target):
-        """The state between grid indices j, k where the held quantity equals target."""
-        field, t = self._field_target(target)
-        lo, hi = sorted((float(self.a[j]), float(self.a[k])))
-        sv = solver(self.pb)
-        flo, fhi = sv.value(field, lo) - t, sv.value(field, hi) - t
-        r = sv.root(field, lo, hi, flo, fhi, t) if flo * fhi < 0 else None
-        return self.state_at(float(self.a[k]) if r is None else r)
-
-    def fold_a(self, j):
-        """Contact parameter of the stationary point of the held quantity next to grid index j: the sign change
-        of its slope in the table cell on either side of j, refined exactly as branches.roots refines it (the
-        same bracket, so the same double as jkrcyl.analysis.branches.stationary_roots)."""
-        field = CONTROLS[self.control].field_slope
-        name, scaled = CURVE_FIELD[field]
-        v = np.asarray(getattr(_br.table(self.pb, self.regime), name)) * (self.pb.scale if scaled else 1.0)
-        sv = solver(self.pb)
-        for i in (j - 1, j):
-            if 0 <= i < v.size - 1 and np.sign(v[i]) * np.sign(v[i + 1]) < 0:
-                r = sv.root(field, float(self.a[i]), float(self.a[i + 1]), float(v[i]), float(v[i + 1]))
-                if r is not None:
-                    return r
-        return float(self.a[j])
-
-    def fold(self, j):
-        return self.state_at(self.fold_a(j))
-
-    def index(self, a):
-        return int(np.argmin(np.abs(np.log(self.a) - math.log(a))))
-
-
-def walk(track: SingleTrack, i: int, target: float):
+def walk(track: "_tracks.SingleTrack", i: int, target: float):
     """From grid index i towards target (the held quantity; -inf: down to the end): (indices passed, event,
     end state), events as in the module docstring."""
     y, stable, feas = track.y, track.stable, track.feasible
@@ -126,13 +65,11 @@ def _fold(track, j: int, sgn: int):
 def _fold_in_cell(track, j: int, k: int, sgn: int):
     """The fold of the held quantity between grid points j (feasible) and k (infeasible), if it is feasible and
     holds beyond y[j] in the walk's direction; else None (the gap closes first)."""
-    field = CONTROLS[track.control].field_slope
-    name, scaled = CURVE_FIELD[field]
-    v = np.asarray(getattr(_br.table(track.pb, track.regime), name)) * (track.pb.scale if scaled else 1.0)
-    if not np.sign(v[j]) * np.sign(v[k]) < 0:
+    vj, vk = track.slope(j), track.slope(k)
+    if not np.sign(vj) * np.sign(vk) < 0:
         return None
-    lo, hi = (j, k) if track.a[j] < track.a[k] else (k, j)
-    r = solver(track.pb).root(field, float(track.a[lo]), float(track.a[hi]), float(v[lo]), float(v[hi]))
+    (lo, flo), (hi, fhi) = sorted(((float(track.a[j]), vj), (float(track.a[k]), vk)))
+    r = solver(track.pb).root(CONTROLS[track.control].field_slope, lo, hi, flo, fhi)
     if r is None:
         return None
     f = track.state_at(r)
@@ -196,7 +133,7 @@ def pull_path(pb: Problem, un: Units, control: str) -> PullPath:
         return PullPath(start, "bonded", start)
     if start.side != "bottom":
         return PullPath(start, "elsewhere", start)
-    track = SingleTrack(pb, un, start.branch, "bottom", control)
+    track = _tracks.track(pb, un, start.branch, "bottom", control)
     began = start.a
     _, event, state = walk(track, track.index(start.a), -math.inf)
     if event in ("fold", "end") and state.a <= track.a[0] and solver(pb).floats_onto() == track.a[0]:
@@ -207,7 +144,7 @@ def pull_path(pb: Problem, un: Units, control: str) -> PullPath:
             break                          # the branch just ends (JKR: the contact grows towards a_crit)
         if not (nxt.stable and nxt.feasible):
             return PullPath(start, ("end" if state.P >= 0 else "let-go"), nxt)   # let-go: detaches at its end
-        track = SingleTrack(pb, un, nxt.branch, "bottom", control)
+        track = _tracks.track(pb, un, nxt.branch, "bottom", control)
         began = nxt.a
         _, event, state = walk(track, track.index(nxt.a), -math.inf)
     return PullPath(start, event, state, int(np.sign(state.a - began)))

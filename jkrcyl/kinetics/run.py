@@ -13,6 +13,7 @@ import numpy as np
 
 from ..analysis import landing as _land
 from ..analysis import path as _path
+from ..analysis import tracks as _tracks
 from ..analysis import reasons as _reasons
 from ..laws.kinetic import kinetics_of
 from . import integrate as _int
@@ -43,7 +44,7 @@ def rest_start(contact, control: str, held=None):
                       "super-critical contact: crack kinetics are modelled for the sub-critical bottom patch)")
     if held is None:
         return to, ""
-    track = _path.SingleTrack(pb, un, to.branch, "bottom", control)
+    track = _tracks.track(pb, un, to.branch, "bottom", control)
     _, event, s = _path.walk(track, track.index(to.a), held)
     if event != "target":
         return None, f"no stable contact at rest at the start of the history (the quasi-static path: {event})"

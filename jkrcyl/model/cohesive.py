@@ -81,7 +81,8 @@ class Cohesive(SinglePatch):
         got = _csu.trace(self.law)
         if got is None or len(got[0]) < 2:
             return None
-        return _ct.Traced(self.law, got[:3], _ct.SUPER_OFFSET, tail=got[3] if len(got) > 3 else ())   # [3]: its tail
+        tail, n_join = (got[3], got[4]) if len(got) > 3 else ((), 0)         # the round-zone tail and the join
+        return _ct.Traced(self.law, got[:3], _ct.SUPER_OFFSET, tail=tail, n_join=n_join)
 
     def _branch(self, regime):
         if regime == "super-critical":
@@ -185,12 +186,18 @@ class Cohesive(SinglePatch):
         dp, ddn = col("dp_dt") * c_scale, col("ddn_dt") * c_scale
         return Slice(a=a, p=p, dp_da=dp, dn=dn, ddn_da=ddn, dw=dn + cw * p, ddw_da=ddn + cw * dp, h=col("h_pi"),
                      p_k=col("D_p"), dn_k=col("D_dn"), B=col("B"), eps=col("eps"), c=col("c"),
-                     c_top=np.zeros(a.size), total=col("potential"), feasible=col("feasible").astype(bool))
+                     c_top=np.zeros(a.size), feasible=col("feasible").astype(bool))
+
+    def potential(self, s):
+        """The total potential of the states s (each point's, a quadrature over the zones: computed only when an
+        energy is asked for, not for a branch table)."""
+        return np.array([self.point(x).potential for x in np.atleast_1d(s.a).tolist()], dtype=float)
 
     def table_values(self, regime, field):
-        """(a, values) of p, dn, dw or h on a contact branch's table grid without slopes, flags and energy (the
-        trace's cached fixed contacts: a search for a held value needs no more); None otherwise."""
-        if regime == "contactless" or field not in ("p", "dn", "dw", "h"):
+        """(a, values) of p, dn, dw or h on a branch's table grid without slopes, flags and energy (the trace's
+        cached fixed contacts, the zone-only pin's closed form: a search for a held value needs no more); None
+        otherwise."""
+        if field not in ("p", "dn", "dw", "h") or (regime == "contactless" and self._contactless is None):
             return None
         a = self.grid(regime, self.dense_points)
         return a, np.array([self.value(field, x) for x in a.tolist()])
@@ -208,18 +215,20 @@ class Cohesive(SinglePatch):
         if a in self._cache:
             pt = self._cache[a]
             p, dn, h = pt.p, pt.delta, pt.h_pi
-        elif a <= 1:
-            lo, hi = self._contactless
-            st = _cz.contactless_state(lo + a * (hi - lo), self.law.m, self.law.s0, self.law.theta, self.law.gb,
-                                       self.law.ar)
-            p, dn, h = st.p, st.delta_over_Delta, st.h_pi_over_Delta
         elif a in self._values:
             p, dn, h = self._values[a]
         else:
-            eps, c, _ = self._where(a)
             if len(self._values) > 20000:
                 self._values.clear()
-            p, dn, h = self._values.setdefault(a, _cb.state_values(self.law, eps, c))
+            if a <= 1:
+                lo, hi = self._contactless
+                st = _cz.contactless_state(lo + a * (hi - lo), self.law.m, self.law.s0, self.law.theta, self.law.gb,
+                                           self.law.ar)
+                got = st.p, st.delta_over_Delta, st.h_pi_over_Delta
+            else:
+                eps, c, _ = self._where(a)
+                got = _cb.state_values(self.law, eps, c)
+            p, dn, h = self._values.setdefault(a, got)
         return {"p": p, "dn": dn, "dw": dn + self.problem.work_shift * p, "h": h}[field]
 
     def root(self, field, lo, hi, flo, fhi, target=0.0):
@@ -314,16 +323,16 @@ class Cohesive(SinglePatch):
     def adheres(self):
         """Whether some feasible contact state pulls (p < 0) on either side of a_crit; not when the range reaches
         round (h0 > 2 Delta)."""
-        s = self.states(self.grid("sub-critical", self.dense_points))
-        return bool(np.any((s.p < 0) & s.feasible)) or any(self.point(x).feasible for x in self._super_pulls())
+        a, p = self.table_values("sub-critical", "p")      # feasibility (a gap check) only where p < 0, first found
+        return any(self.point(x).feasible for x in a[p < 0].tolist()) or \
+            any(self.point(x).feasible for x in self._super_pulls())
 
     @property
     def no_adherence_reason(self):
         if self.law.h0 >= 2.0:
             return (f"no adherence force: every state of the cohesive law pushes (P >= 0) -- its range h0 = "
                     f"{self.law.h0:.6g} Delta reaches round the hole (a uniform traction has no resultant)")
-        s = self.states(self.grid("sub-critical", self.dense_points))
-        pulls = bool(np.any(s.p < 0)) or self._super_pulls().size > 0
+        pulls = bool(np.any(self.table_values("sub-critical", "p")[1] < 0)) or self._super_pulls().size > 0
         return ("no adherence force on one patch: every feasible single-patch state pushes (P >= 0)" +
                 ("; those that pull overlap the top of the hole (h(pi) < 0), where two patches or full contact take "
                  "over -- " + self.problem.not_modelled("two-patch", "a contact at the bottom and the top (two "

@@ -18,7 +18,7 @@ from ..numerics import cohesive_super as _csu
 
 SUB_OFFSET = 2.0
 JOIN = 1e-6              # the parameter step from a trace's last zone point to its round-zone tail (the zone
-                         # states between, c -> pi, are not traced: a state there is the tail's first)
+                         # states between, pi - c < cohesive_super.JOIN_S_MIN: a state there is the tail's first)
 SUPER_OFFSET = 1000.0     # above any sub-critical parameter: that trace's arclength is at most 1500 x 0.25 = 375
 
 
@@ -27,13 +27,16 @@ class Traced:
     where the branch leaves its domain) and ``offset`` (a = offset + t).  A sub-critical trace can start with a
     round prefix (``n_round`` points with the zone all round: the S-shaped branch, jkrcyl.numerics.cohesive_round).
     A super-critical 'zone' trace whose zone reached round can carry a tail (``tail``: the eps of its states with
-    the zone all round, beyond the last point, from its join): t goes on there as JOIN + log(eps/eps_join)."""
+    the zone all round, beyond the last point, from its join): t goes on there as JOIN + log(eps/eps_join); its
+    last ``n_join`` points run back in eps towards that join with c -> pi (jkrcyl.numerics.cohesive_super
+    .join_points), a state between them solved at its contact (cohesive_super.top_gap)."""
 
-    def __init__(self, law, traced, offset, n_round=0, tail=()):
+    def __init__(self, law, traced, offset, n_round=0, tail=(), n_join=0):
         x, kind, reason = traced
         keep = np.concatenate([[True], np.any(np.diff(x, axis=0) != 0, axis=1)])
         self.law, self.x, self.kind, self.reason, self.offset = law, x[keep], kind, reason, offset
         self.n_round = int(np.count_nonzero(keep[:n_round]))
+        self.n_join = int(np.count_nonzero(keep[len(keep) - n_join:])) if n_join else 0
         self.t = self.x[:, 0] - self.x[0, 0] if kind == "all" else _cb.arclength(self.x)
         self.tail = np.asarray(tail, dtype=float)
         self.t_round = float(self.t[-1])               # the last zone point; the tail starts JOIN past it
@@ -42,7 +45,7 @@ class Traced:
 
     def on_tail(self, a) -> bool:
         """Whether the parameter a lies on the round-zone tail (beyond the traced zone end)."""
-        return bool(self.tail.size) and a - self.offset > self.t_round
+        return bool(self.tail.size) and a - self.offset > self.t_round + 0.5 * JOIN
 
     @property
     def a_end(self) -> float:
@@ -60,7 +63,8 @@ class Traced:
     def where(self, t):
         """(eps, c, direction) of the branch at t (exact: projected onto the curve); direction = (d eps, d c) of
         increasing t."""
-        if self.tail.size and t > self.t_round:        # the round-zone tail: t = t_round + JOIN + log(eps/eps_join)
+        # the round-zone tail, t = t_round + JOIN + log(eps/eps_join) (half a JOIN: a - offset rounds t_round up)
+        if self.tail.size and t > self.t_round + 0.5 * JOIN:
             return self.tail[0] * math.exp(max(t - self.t_round - JOIN, 0.0)), math.pi, (1.0, 0.0)
         x, tt = self.x, self.t[:len(self.x)]
         j = int(np.clip(np.searchsorted(tt, t) - 1, 0, len(tt) - 2))
@@ -76,6 +80,12 @@ class Traced:
             return math.exp(x[0, 0] + min(t, tt[self.n_round - 1])), math.pi, (1.0, 0.0)
         if f <= 0 or f >= 1:
             xp = x[j] if f <= 0 else x[j + 1]
+        elif j >= len(x) - 1 - self.n_join:        # towards the join (c -> pi): the zone end at the contact
+            eps = math.exp(x[j, 0] + f * chord[0])
+            s = _csu.top_gap(self.law, eps)
+            if s is None:
+                raise ValueError(f"a: no cohesive state found at the branch parameter {self.offset + t!r}")
+            xp = np.array([math.log(eps), math.log(math.pi - s - eps)])
         else:
             normal = np.array([-chord[1], chord[0]]) / np.hypot(*chord)
             xp = _cb.project(self.law, x[j] + f * chord, normal, np.hypot(*chord))

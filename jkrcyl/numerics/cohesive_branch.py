@@ -46,9 +46,23 @@ TOP_PROBE = 1e-2        # top_opens: the gap this fraction of the exterior below
 NARROW = 1e-6           # top_opens: a round zone within this of h0 at the jump has ended there (a narrow S)
 _XG, _WG = np.polynomial.legendre.leggauss(GAP_POINTS)
 
-Point = namedtuple("Point", "eps c delta p B dp_dt ddn_dt D_p D_dn h_pi potential feasible zones fields")
-Point.__doc__ = """Per-point data (kernel scale): the state, its slopes along t, the derivatives D_X the stability
-rule reads, h(pi)/Delta, the total potential, feasibility (jkrcyl.numerics.cohesive.gap_check), zones, fields."""
+_PointData = namedtuple("_PointData", "eps c delta p B dp_dt ddn_dt D_p D_dn h_pi zones fields state")
+
+
+class Point(_PointData):
+    """Per-point data (kernel scale): the state, its slopes along t, the derivatives D_X the stability rule reads,
+    h(pi)/Delta, zones, fields and the state itself (jkrcyl.numerics.cohesive.CohesiveState).  The total
+    potential (:func:`potential`, a quadrature of the gap over the zones) and the feasibility
+    (jkrcyl.numerics.cohesive.gap_check, the gap on a grid of the exterior) are computed when first read and
+    kept: a branch table needs the feasibility only, a state's energy the potential."""
+
+    @functools.cached_property
+    def potential(self):
+        return potential(self.state)
+
+    @functools.cached_property
+    def feasible(self):
+        return _co.gap_check(self.state, 120).feasible
 
 
 class Law:
@@ -256,8 +270,8 @@ def point(law, eps, c, direction):
     zones = _co.zones_of(min(c, math.pi))
     u = fc.fx[3] + delta * fc.fx[4] + law.s0 * fc.zone_unit(zones)
     st = _co._state(eps, c, fc, delta, u, zones, law.m, law.s0, law.kernel, law.gb, fc.sys.n)
-    return Point(eps, st.c, delta, st.p, st.B, dp_dt, ddn_dt, D_p, D_dn, st.h_pi_over_Delta, potential(st),
-                 _co.gap_check(st, 120).feasible, st.zones, st.fields)
+    return Point(eps, st.c, delta, st.p, st.B, dp_dt, ddn_dt, D_p, D_dn, st.h_pi_over_Delta, st.zones, st.fields,
+                 st)
 
 
 def potential(st):
@@ -295,5 +309,5 @@ def contactless_point(law, c):
     plus, minus = (_cz.contactless_state(c + s * hc, law.m, law.s0, law.theta, law.gb, law.ar) for s in (1, -1))
     dp, ddn = (plus.p - minus.p) / (2 * hc), (plus.delta_over_Delta - minus.delta_over_Delta) / (2 * hc)
     sigma = -1.0 if math.cos(c) > 0 else 1.0
-    return Point(0.0, c, st.delta_over_Delta, st.p, st.B, dp, ddn, 0.0, sigma, st.h_pi_over_Delta, potential(st),
-                 _co.gap_check(st, 120).feasible, st.zones, st.fields)
+    return Point(0.0, c, st.delta_over_Delta, st.p, st.B, dp, ddn, 0.0, sigma, st.h_pi_over_Delta, st.zones,
+                 st.fields, st)

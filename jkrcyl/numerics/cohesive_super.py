@@ -9,9 +9,10 @@ the root that tends to JKR) on the other side of the pole: traced by the same co
 (jkrcyl.numerics.cohesive_follow) in x = (log eps, log(c - eps)) from just past the pole -- eps_crit (1 +
 EPS_MARGIN), or further where |p| exceeds the load cap P_CAP m^(4/3) there -- towards growing eps, up to
 eps = pi - 0.05 (the limit of the sub-critical trace too), the load cap, or the zone reaching round (h(pi) = h0:
-a top gap within the range; the trace stops ROUND_MARGIN below c = pi; beyond, the branch goes on with its zone
-all round -- :func:`round_tail`, sampled in eps towards full contact, where its load tends to the bond limit of
-jkrcyl.model.full_contact.holds).  Where the zone reaches round already at the start, the branch has zones
+a top gap within the range; the trace stops ROUND_MARGIN below c = pi, where the branch runs back in eps with its
+zone end closing on the top, solved at each contact down to pi - c = JOIN_S_MIN -- :func:`join_points` -- and
+goes on with its zone all round -- :func:`round_tail`, sampled in eps towards full contact, where its load tends
+to the bond limit of jkrcyl.model.full_contact.holds).  Where the zone reaches round already at the start, the branch has zones
 'all' (no zone end: k = 0 alone) and is sampled in eps.
 
 JKR limit (measured, identical bodies, M = 0.4 and 0.8): at a fixed contact 2.0 <= eps <= 2.7 the load differs
@@ -41,6 +42,8 @@ JOIN_SCAN, JOIN_STEP = 40, 5e-3     # the downward scan for the tail's join belo
 ROUND_MARGIN = 1e-3           # the zone end stops this far below pi [rad]: it reaches round as a square root
                               # (h(c) - h0 has a double root at c = pi, h being even about the top), where the
                               # trace would need steps ~ pi - c
+JOIN_POINTS = 24              # zone states from the trace's end to the join, geometric in eps - eps_join ...
+JOIN_S_MIN = 1e-7             # ... down to pi - c = JOIN_S_MIN [rad] (a state's slopes step 2e-4 (pi - c) in eps)
 
 
 def eps_range(law):
@@ -78,8 +81,9 @@ def trace(law):
     """The super-critical branch as (x points (n, 2), kind, reason) -- as jkrcyl.numerics.cohesive_branch.trace:
     kind 'zone' (x = (log eps, log(c - eps))) or 'all' (x = (log eps, 0)); reason '' when the trace ends where the
     branch leaves its domain (eps = pi - 0.05, the load cap, the zone reaching round), else why it stopped -- and,
-    where the zone reaches round, a fourth item: the eps of the round-zone tail (:func:`round_tail`); None
-    when the law has no super-critical branch (:func:`eps_range`) or no contact on it below the load cap."""
+    where the zone reaches round, a fourth item: the eps of the round-zone tail (:func:`round_tail`), and a fifth:
+    how many of the last points run on to the tail's join with c -> pi (:func:`join_points`); None when the law
+    has no super-critical branch (:func:`eps_range`) or no contact on it below the load cap."""
     span = eps_range(law)
     if span is None:
         return None
@@ -104,7 +108,43 @@ def trace(law):
     eps_end, c_end = math.exp(got.points[-1, 0]), math.exp(got.points[-1, 0]) + math.exp(got.points[-1, 1])
     if got.reason or c_end < math.pi - 2 * ROUND_MARGIN:
         return got.points, "zone", got.reason
-    return got.points, "zone", "", round_tail(law, eps_end)
+    tail = round_tail(law, eps_end)
+    join = join_points(law, got.points[-1], tail[0]) if tail.size else np.zeros((0, 2))
+    return np.vstack([got.points, join]), "zone", "", tail, len(join)
+
+
+def top_gap(law, eps, s_hi=4 * ROUND_MARGIN, s_lo=1e-15):
+    """pi - c of the zone state at the contact eps whose zone end c lies within s_hi of pi, or None: at a fixed
+    contact R(s) = h(pi - s) - h0 falls with s (the traction removed next to the top opens the gap there by ~
+    s log s) to the round zone's h(pi) - h0, negative past the join, so it changes sign once in (s_lo, s_hi):
+    Brent in log s (each evaluation on the contact's one LU, jkrcyl.numerics.cohesive_follow.residual)."""
+    le = math.log(eps)
+    r = lambda ls: _fo.residual(law, np.array([le, math.log(math.pi - math.exp(ls) - eps)]))
+    lo, hi = math.log(s_lo), math.log(s_hi)
+    r_lo, r_hi = r(lo), r(hi)
+    if not (r_lo < 0 < r_hi):
+        return None
+    return math.exp(_roots.root(r, lo, hi, xtol=1e-13))
+
+
+def join_points(law, x_end, eps_join):
+    """The zone states between the trace's last point x_end = (log eps, log(c - eps)) (c = pi - ROUND_MARGIN)
+    and the join eps_join of the round-zone tail (c -> pi): there the branch runs back in eps to eps_join while
+    its zone end closes on the top, pi - c ~ (eps - eps_join)/log -- a graph pi - c (:func:`top_gap`) over eps,
+    sampled at up to JOIN_POINTS contacts geometric in eps - eps_join (from x_end's, to 1e-6 of it) while
+    pi - c >= JOIN_S_MIN; the
+    points as x (n, 2), empty where x_end's contact lies below eps_join (no turn back: nothing to join)."""
+    eps_end = math.exp(x_end[0])
+    if not eps_end > eps_join:
+        return np.zeros((0, 2))
+    pts = []
+    for f in np.geomspace(1.0, 1e-6, JOIN_POINTS + 1)[1:]:
+        eps = eps_join + f * (eps_end - eps_join)
+        s = top_gap(law, eps)
+        if s is None or s < JOIN_S_MIN:
+            break
+        pts.append([math.log(eps), math.log(math.pi - s - eps)])
+    return np.array(pts).reshape(-1, 2)
 
 
 def round_state(law, eps):
@@ -124,7 +164,7 @@ def round_tail(law, eps_round):
     jkrcyl.numerics.cohesive.gap_check), up to pi - EPS_CLOSE (TAIL_POINTS, geometric in pi - eps), where the load
     tends to the bond limit (jkrcyl.model.full_contact.holds), or until the top touches (h(pi) < 0) or the gap
     leaves the range.  The eps of those states (increasing, the first eps_join; empty if the round zone at
-    eps_round leaves the range).  The zone states between eps_join and eps_round are not traced."""
+    eps_round leaves the range).  The zone states between eps_round and eps_join: :func:`join_points`."""
     top = lambda eps: round_state(law, eps).h_pi_over_Delta - law.h0
     if not _co.gap_check(round_state(law, eps_round), 120).feasible:
         return np.zeros(0)
