@@ -18,8 +18,8 @@
 
 With a cohesive (Maugis-Dugdale) edge law the single-patch branches (sub- and super-critical, contactless) are
 the solver's (jkrcyl.model.cohesive), full contact is JKR's bonded pin where the tension stays below sigma0, and
-two patches are not modelled: that branch returns no state in a search of every branch, and asking for it by
-name raises ValueError.
+the two-patch states are those of its traced branches (jkrcyl.analysis.cohesive_two_patch, alpha* = 0; a law
+without two-patch branches: no state in a search of every branch, a ValueError when asked for it by name).
 
 Stability is that of the control (jkrcyl.units.CONTROLS): fixed load for P, fixed paper's approach for
 delta ('grip'), fixed work-conjugate approach for delta_work ('grip-work').  Signs as in section 6: P and delta
@@ -35,7 +35,6 @@ import numpy as np
 
 from ..model import full_contact as _full
 from ..model import stability as _stab
-from ..model import two_patch as _two
 from ..model.problem import Problem
 from ..model.single_patch import solver
 from ..notices import BranchLimitWarning
@@ -43,6 +42,7 @@ from ..results import Equilibrium, Point
 from ..units import CONTROLS, Units
 from . import branches as _br
 from . import tracing as _tr
+from .two_patch_family import family as _family
 
 
 def _state(pb, un, branch, control, side, a, eps, P_star, dn, h, flags, U, a_top=0.0, eps_top=0.0, K=None,
@@ -135,17 +135,19 @@ def confined(pb: Problem) -> bool:
 
 
 def two_patch_state(pb: Problem, un: Units, s, control) -> Equilibrium:
-    """A jkrcyl.results.TwoPatchState as an Equilibrium (stability from the second variation)."""
-    stab = _two.stability(pb, s.eps, s.eps_top, s.delta_over_Delta, lin=s._lin)
+    """A jkrcyl.results.TwoPatchState as an Equilibrium (stability and total potential from the law's two-patch
+    family: JKR's second variation, the cohesive law's zone-end-held energy)."""
+    fam = _family(pb)
     return _state(pb, un, "two-patch", control, "both", s.a, s.eps, s.P_star, s.delta_over_Delta, 0.0,
-                  (s.feasible, *stab), pb.scale * s.energy, a_top=s.a_top, eps_top=s.eps_top,
-                  extra={"gap_min_over_Delta": s.gap_min, "G_bot": s.G_bot, "G_top": s.G_top})
+                  (s.feasible, *fam.flags(s)), pb.scale * s.energy, a_top=s.a_top, eps_top=s.eps_top,
+                  extra={"gap_min_over_Delta": s.gap_min, "G_bot": s.G_bot, "G_top": s.G_top},
+                  total=fam.potential(s))
 
 
 def _two_patch_solver(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
-    if not confined(pb):
+    if not pb.models("two-patch-branches") or pb.rigid_cradle or pb.M <= 0:
         return []
-    return [two_patch_state(pb, un, s, control) for s in _tr.states_at(pb, key, target)]
+    return [two_patch_state(pb, un, s, control) for s in _family(pb).states_at(key, target)]
 
 
 def full_contact_state(pb: Problem, un: Units, key: str, target: float, control: str):
@@ -211,9 +213,10 @@ def check_branches(branches, pb: Problem = None) -> list:
     for b in names:
         if not isinstance(b, str) or b not in BRANCH_SOLVERS:
             raise ValueError(f"branches: unknown branch {b!r} (choose from {', '.join(BRANCH_SOLVERS)})")
-    for family in ("two-patch", "full-contact", "super-critical"):
-        if pb is not None and any(b.startswith(family) for b in names):
-            pb.require(family, f"the {family} branch is")
+    for prefix, family in (("two-patch", "two-patch-branches"), ("full-contact", "full-contact"),
+                           ("super-critical", "super-critical")):
+        if pb is not None and any(b.startswith(prefix) for b in names):
+            pb.require(family, f"the {prefix} branch is")
     return names
 
 

@@ -10,8 +10,8 @@ step (profile, lambda = 50, M = 0.2: 7 LUs of 2 x 760 unknowns, 0.2 s each, are 
 
 The branch (:func:`trace`): JKR's (jkrcyl.analysis.tracing; the limit lambda -> inf, O(lambda^-2) away) is the
 scaffold.  At each scaffold point the half-angle that varies most along it is held at JKR's value and the other
-solved, starting from JKR's value plus the previous state's offset; the trace starts in the middle of the
-scaffold and walks to both ends, stopping where a state is not found (the zones meet near full contact at small
+solved, starting from JKR's value plus the previous state's offset; the trace starts where both arcs are largest
+(the zones thinnest relative to them) and walks to both ends, stopping where a state is not found (the zones meet near full contact at small
 lambda, or the top arc runs below what the collocation resolves).  One node count for the whole branch (states
 along it are one discretisation, so a state solved alone at the same count equals the traced one):
 ZONE_NODES sqrt(eps_max/d), d the Dugdale zone length m^2/(4 s0^2) -- measured at M = 0.2, lambda = 50 (bottom
@@ -38,7 +38,7 @@ ZONE_NODES = 8.0          # nodes per arc per sqrt(eps_max/d) (module docstring)
 ARC_STEP = 1e-6           # central differences of the half-angles in flags, relative
 ZONE_STEP = 1e-5          # ... of the zone ends and the approach, relative to the zone length
 SECANT_STEPS = 12        # Newton steps at most (a warm start takes 2-4)
-END_ARC = 1e-6            # a branch end at an axis: the smaller arc followed down to this [rad]
+END_ARC = 1e-5            # a branch end at an axis: the smaller arc followed down to this [rad]
 END_FACTOR = 0.1          # ... shrinking by this factor per state
 
 Traced = namedtuple("Traced", ["states", "jacobians", "ends"])
@@ -48,6 +48,13 @@ how each end finishes (JKR's label where reached, else 'unresolved')."""
 
 class NotFound(Exception):
     """No state at these arcs (the zones meet, or Newton/secant did not converge)."""
+
+
+def require_alpha_zero(ar):
+    """ValueError naming alpha_ratio unless alpha* = 0 (the two-arc cohesive collocation's kernel)."""
+    if ar != 0.0:
+        raise ValueError(f"alpha_ratio (the materials' alpha*/beta*) must be 0 for the Maugis-Dugdale two-patch "
+                         f"states (the two-arc cohesive solver), got {ar!r}")
 
 
 def branch_nodes(points, m, s0, ar=0.0):
@@ -167,9 +174,10 @@ def flags(J, work_shift):
 
 
 def _free_index(points, i):
-    """The half-angle that varies most along the scaffold at point i (it is solved, the other held)."""
+    """The half-angle that varies least along the scaffold at point i: it is solved, the other (the branch's
+    local parameter) held."""
     lo, hi = points[max(i - 1, 0)], points[min(i + 1, len(points) - 1)]
-    return int(np.argmax(np.abs(np.log(hi) - np.log(lo))))
+    return int(np.argmin(np.abs(np.log(hi) - np.log(lo))))
 
 
 def _step(law, target, prev, prev_at, free, n, slope, depth=2):
@@ -231,12 +239,15 @@ def trace(law, points, ends, n):
     and 'unresolved' elsewhere."""
     points = np.asarray(points, dtype=float)
     points = points[np.min(points, axis=1) > END_ARC]        # JKR's ends at an axis: reached by _to_axis
-    mid = len(points) // 2
     d0 = np.full(2, _co.dugdale_zone(law.m, law.s0))
-    try:
-        st, _ = solve_at(law, 1 - _free_index(points, mid), points[mid][1 - _free_index(points, mid)],
-                         points[mid][_free_index(points, mid)], d0, n)
-    except NotFound:
+    for mid in np.argsort(-np.min(points, axis=1))[:3]:      # the start: both arcs large (far from the zones)
+        free = _free_index(points, mid)
+        try:
+            st, _ = solve_at(law, 1 - free, points[mid][1 - free], points[mid][free], d0, n)
+            break
+        except NotFound:
+            continue
+    else:
         return Traced((), (), ("unresolved", "unresolved"))
     sides = []
     for order, end in ((range(mid + 1, len(points)), ends[1]), (range(mid - 1, -1, -1), ends[0])):
