@@ -18,8 +18,9 @@
 
 With a cohesive (Maugis-Dugdale) edge law the single-patch branches (sub- and super-critical, contactless) are
 the solver's (jkrcyl.model.cohesive), full contact is JKR's bonded pin where the tension stays below sigma0, and
-the two-patch states are those of its traced branches (jkrcyl.analysis.cohesive_two_patch, alpha* = 0; a law
-without two-patch branches: no state in a search of every branch, a ValueError when asked for it by name).
+the two-patch states are those of its traced branches (jkrcyl.analysis.cohesive_two_patch, alpha* = 0), found
+when the branch is asked for by name (branches=['two-patch']); a search of every branch leaves them out, as the
+walker does not land on them yet (a law without two-patch branches: a ValueError when asked by name).
 
 Stability is that of the control (jkrcyl.units.CONTROLS): fixed load for P, fixed paper's approach for
 delta ('grip'), fixed work-conjugate approach for delta_work ('grip-work').  Signs as in section 6: P and delta
@@ -147,7 +148,12 @@ def two_patch_state(pb: Problem, un: Units, s, control) -> Equilibrium:
 def _two_patch_solver(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
     if not pb.models("two-patch-branches") or pb.rigid_cradle or pb.M <= 0:
         return []
-    return [two_patch_state(pb, un, s, control) for s in _family(pb).states_at(key, target)]
+    try:
+        states = _family(pb).states_at(key, target)
+    except ValueError as why:          # the law's two-patch family refuses this problem (e.g. a small lambda)
+        warnings.warn(f"two-patch states not searched: {why}", BranchLimitWarning, stacklevel=4)
+        return []
+    return [two_patch_state(pb, un, s, control) for s in states]
 
 
 def full_contact_state(pb: Problem, un: Units, key: str, target: float, control: str):
@@ -225,7 +231,10 @@ def solve_normalised(pb: Problem, un: Units, control: str, target: float, branch
     delta_work/Delta), sorted by contact size then branch order."""
     key = CONTROLS[control].normalised
     out = []
-    for name in check_branches(branches):
+    names = check_branches(branches)
+    if branches is None:       # a search of every branch: two patches where the walker lands on them too (JKR)
+        names = [n for n in names if n != "two-patch" or pb.models("two-patch")]
+    for name in names:
         out += BRANCH_SOLVERS[name](pb, un, key, target, control)
     order = {n: i for i, n in enumerate(BRANCH_SOLVERS)}
     return sorted(out, key=lambda s: (s.size, order[s.branch]))

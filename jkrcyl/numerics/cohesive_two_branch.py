@@ -34,6 +34,7 @@ from . import cohesive as _co
 from . import cohesive_two as _two
 from . import two_arcs as _ta
 
+ZONE_MAX = 0.02           # the largest Dugdale zone estimate followed [rad] (lambda >~ 8 at M = 0.2)
 ZONE_NODES = 8.0          # nodes per arc per sqrt(eps_max/d) (module docstring)
 ARC_STEP = 1e-6           # central differences of the half-angles in flags, relative
 ZONE_STEP = 1e-5          # ... of the zone ends and the approach, relative to the zone length
@@ -59,8 +60,13 @@ def require_alpha_zero(ar):
 
 def branch_nodes(points, m, s0, ar=0.0):
     """Nodes per arc for the states near the scaffold points (k, 2) (module docstring); ValueError naming sigma0
-    beyond cohesive_two.NODES_MAX_TWO."""
+    beyond cohesive_two.NODES_MAX_TWO, or where the zones are not small (d > ZONE_MAX: low lambda, where JKR's
+    branch is no guide to the law's)."""
     d = _co.dugdale_zone(m, s0)
+    if d > ZONE_MAX:
+        raise ValueError(f"sigma0: the two-patch branches are followed from JKR's where the Dugdale zones are "
+                         f"small (~{d:.3g} rad > {ZONE_MAX} here: the transition parameter lambda = "
+                         f"{4 * s0 / m ** (2 / 3):.3g} is too small for it)")
     eps_max = float(np.max(points))
     n = max(max(_ta.nodes(e, et, _ta.N_NODES, ar) for e, et in points), int(ZONE_NODES * math.sqrt(eps_max / d)))
     if n > _two.NODES_MAX_TWO:
