@@ -31,7 +31,7 @@ from ..model.single_patch import solver
 from ..results import TwoPatchCurve, TwoPatchState
 from . import tracing as _tr
 
-DEFAULT_POINTS = 16       # scaffold points per branch (JKR's branch resampled): ~2 s at lambda = 50
+DEFAULT_POINTS = 12       # scaffold points per branch (JKR's branch resampled; benchmarks/bench_cohesive_two.py)
 GAP_SAMPLES = 256         # exterior angles of the gap check
 
 
@@ -44,7 +44,7 @@ class CohesiveTwoPatch:
         self.pb = pb
         self.jkr = Problem(pb.M, pb.theta, pb.gb, pb.alpha_ratio)
         m, s0, kernel = _co._law(pb.m, pb.edge.s0, pb.theta, pb.gb, 0.0)
-        self.law = _ct._Law(m, s0, kernel)
+        self.law = _cb.BranchLaw(m, s0, kernel)
 
     # --- states ---------------------------------------------------------------------------------------------
     def result(self, st) -> TwoPatchState:
@@ -67,14 +67,19 @@ class CohesiveTwoPatch:
         """The total potential in the kernel scale (units 4 pi Delta^2/beta*)."""
         return _ct.potential(s._lin)
 
-    def nodes(self, points) -> int:
-        return _cb.branch_nodes(np.atleast_2d(points), self.law.m, self.law.s0)
+    @functools.cached_property
+    def n(self) -> int:
+        """Nodes per arc of every state of the problem: from the largest arc of JKR's branches (one
+        discretisation: a state solved alone equals the traced one); ValueError naming sigma0 (too thin zones,
+        or too thick: cohesive_two_branch.branch_nodes)."""
+        points = [p for p, _ in _tr.traced(self.jkr)]
+        return _cb.branch_nodes(np.vstack(points) if points else np.full((1, 2), 0.1), self.law.m, self.law.s0)
 
     def state(self, eps=None, eps_top=None, guess=None) -> TwoPatchState:
         """The equilibrium with one half-angle given, the other from guess: Newton from JKR's state there (guess
-        for JKR's secant) -- cold, independent of any traced branch; the node count of a branch through it."""
+        for JKR's secant) -- cold, independent of any traced branch; the node count of the branches."""
         ref = _two.solve(self.jkr, eps_top=eps_top, eps=eps, guess=guess)
-        n = self.nodes([ref.eps, ref.eps_top])
+        n = self.n
         held, value = (1, ref.eps_top) if eps is None else (0, ref.eps)
         return self.at(held, value, (ref.eps, ref.eps_top)[1 - held], n)
 
@@ -120,9 +125,8 @@ class CohesiveTwoPatch:
         out = []
         for b in self.branches():
             v = np.asarray(getattr(b, key)) - target
-            n = self.nodes(np.column_stack([b.eps, b.eps_top]))
             for i in _roots.sign_changes(v):
-                s = self._refine(b, i, key, target, n)
+                s = self._refine(b, i, key, target, self.n)
                 if s is not None:
                     out.append(s)
         return out
@@ -169,7 +173,7 @@ def _branches(fam: CohesiveTwoPatch, n: int) -> tuple:
     out = []
     for b in _tr.branches(fam.jkr, n):
         points = np.column_stack([b.eps, b.eps_top])
-        t = _cb.trace(fam.law, points, b.ends, fam.nodes(points))
+        t = _cb.trace(fam.law, points, b.ends, fam.n)
         if t.states:
             out.append(fam.curve(t.states, t.jacobians, t.ends))
     return tuple(out)

@@ -21,7 +21,7 @@ Stability under each control from one Jacobian (:func:`flags`): the zone-end-hel
 jkrcyl.numerics.cohesive_two_stability has the Hessian 2 s0 G, G = dg/dc at k = 0 and the held quantity
 (g_i = h(c_i) - h0).  The implicit function theorem gives G = g_c - [g_e g_d] A^-1 [k_c; q_c], A = [[k_e, k_d],
 [q_e, q_d]], with q = a delta/Delta + b p the held quantity (load: (0, 1), grip: (1, 0), grip-work: (1, c_work)),
-e the half-angles, d = delta/Delta; the derivatives are central differences of fixed-arc states (four LUs;
+e the half-angles, d = delta/Delta; the derivatives are differences of fixed-arc states (two more systems;
 delta and the zone ends: back-substitutions).  Tests: the flags equal cohesive_two_stability.stable's (held
 states solved by Newton, an independent route).
 """
@@ -41,6 +41,68 @@ ZONE_STEP = 1e-5          # ... of the zone ends and the approach, relative to t
 SECANT_STEPS = 12        # Newton steps at most (a warm start takes 2-4)
 END_ARC = 1e-5            # a branch end at an axis: the smaller arc followed down to this [rad]
 END_FACTOR = 0.1          # ... shrinking by this factor per state
+
+REUSE_SPAN = 0.05         # arcs within this (in log half-angle) of a factorised pair reuse its LU
+REFINE_STEPS = 12         # iterative refinement steps before a fresh LU
+
+
+class Refined(_two.FixedArcs):
+    """Fixed arcs whose systems are solved by iterative refinement preconditioned with a nearby pair's LU (the
+    collocation matrix moves smoothly with the arcs): O(n^2) per solve instead of an O(n^3) LU; a fresh LU where
+    the refinement does not reach the LU's own residual (NotConverged) -- the answers are those of a direct solve
+    to rounding."""
+
+    def __init__(self, eps, eps_top, kernel, n, ref):
+        self.ref = ref
+        super().__init__(eps, eps_top, kernel, n)
+
+    def factor(self):
+        A = self.sys.A
+        self.norm = float(np.max(np.sum(np.abs(A), axis=1)))
+
+    def solve(self, rhs):
+        x = self.ref.solve(rhs)
+        for _ in range(REFINE_STEPS):
+            r = rhs - self.sys.A @ x
+            if np.max(np.abs(r)) <= 64 * np.finfo(float).eps * self.norm * np.max(np.abs(x)):
+                return x
+            x = x + self.ref.solve(r)
+        raise NotConverged
+
+
+class NotConverged(Exception):
+    """The refinement of :class:`Refined` did not converge (the reference pair too far)."""
+
+
+class BranchLaw(_two._Law):
+    """cohesive_two's law whose fixed arcs reuse the LU of a nearby factorised pair (:class:`Refined`): a
+    Newton step and the differences of :func:`jacobian` cost back-substitutions and products, not a new LU."""
+
+    def __init__(self, m, s0, kernel):
+        super().__init__(m, s0, kernel)
+        self.ref = None
+        self.factorisations = 0
+
+    def arcs(self, eps, eps_top, n):
+        key = (eps, eps_top, n)
+        if key in self._arcs:
+            return self._arcs[key]
+        if len(self._arcs) > 8:
+            self._arcs.clear()
+        ref = self.ref
+        fa = None
+        if ref is not None and ref.sys.n == n and max(abs(math.log(eps / ref.eps)),
+                                                      abs(math.log(eps_top / ref.eps_top))) < REUSE_SPAN:
+            try:
+                fa = Refined(eps, eps_top, self.kernel, n, ref)
+            except NotConverged:
+                fa = None
+        if fa is None:
+            fa = self.ref = _two.FixedArcs(eps, eps_top, self.kernel, n)
+            self.factorisations += 1
+        self._arcs[key] = fa
+        return fa
+
 
 Traced = namedtuple("Traced", ["states", "jacobians", "ends"])
 Traced.__doc__ = """A traced branch: TwoPatchCohesive states in order, their Jacobians (:func:`jacobian`) and
@@ -148,14 +210,18 @@ def pieces(law, x, n):
 
 
 def jacobian(law, st):
-    """d pieces/dx at the state st (5 x 5, central differences: module docstring)."""
+    """d pieces/dx at the state st (5 x 5): central differences in the zone ends and the approach (the same
+    arcs: back-substitutions), forward differences in the half-angles (two more fixed-arc systems; the flags
+    only need the signs of G's eigenvalues)."""
     x = np.array([st.eps, st.eps_top, st.c, st.c_top, st.delta_over_Delta])
     zone = min(st.c - st.eps, st.c_top - st.eps_top)
     steps = np.array([ARC_STEP * st.eps, ARC_STEP * st.eps_top, ZONE_STEP * zone, ZONE_STEP * zone, 1e-3])
     J = np.empty((5, 5))
+    at = pieces(law, x, st.n)
     for j in range(5):
         dx = steps[j] * np.eye(5)[j]
-        J[:, j] = (pieces(law, x + dx, st.n) - pieces(law, x - dx, st.n)) / (2 * steps[j])
+        back = at if j < 2 else pieces(law, x - dx, st.n)
+        J[:, j] = (pieces(law, x + dx, st.n) - back) / (steps[j] if j < 2 else 2 * steps[j])
     return J
 
 
@@ -230,11 +296,14 @@ def _to_axis(law, st, n):
         arcs = np.array([st.eps, st.eps_top])
         if arcs[small] <= END_ARC:
             return out, True
-        held = arcs[small] * END_FACTOR
-        try:
-            st, jx = solve_at(law, small, max(held, 0.99 * END_ARC), arcs[1 - small],
-                              np.array([st.c - st.eps, st.c_top - st.eps_top]), n, jx)
-        except NotFound:
+        held, d0 = max(arcs[small] * END_FACTOR, 0.99 * END_ARC), np.array([st.c - st.eps, st.c_top - st.eps_top])
+        for slope in ((jx, None) if jx is not None else (None,)):
+            try:
+                st, jx = solve_at(law, small, held, arcs[1 - small], d0, n, slope)
+                break
+            except NotFound:
+                continue
+        else:
             return out, False
         out.append(st)
 

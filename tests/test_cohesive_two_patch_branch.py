@@ -1,0 +1,181 @@
+"""The Maugis-Dugdale law's two-patch branches through the API (jkrcyl.analysis.cohesive_two_patch, traced by
+jkrcyl.numerics.cohesive_two_branch): equilibria.two_patch / two_patch_state with s0, Contact.two_patch and
+solve(branches=['two-patch']).
+
+Checked against what the trace does not use:
+
+* JKR's two-patch states (jkrcyl.model.two_patch: Griffith k = M/pi at both edges, no zone; the limit
+  lambda -> inf) at the same held half-angle: P* and delta/Delta within C/lambda^2, C measured at two lambdas;
+* the energy: along the branch the total potential (cohesive_two.potential: elastic + Dugdale interface energy by
+  quadrature of the opening) changes by p d(delta), Richardson on states solved alone at +-h, +-2h;
+* a traced state solved alone, cold from JKR's state (cohesive_two.solve's route: no neighbour, no reused LU);
+* the stability matrix G (the Hessian of the zone-end-held energy over 2 s0) against
+  jkrcyl.numerics.cohesive_two_stability's, made of held states solved by Newton (an independent route);
+* the law at every state: G/w = h(zone end)/h0 = 1 and the gap >= 0 outside the arcs.
+"""
+import math
+
+import numpy as np
+import pytest
+
+import jkrcyl
+from jkrcyl.analysis.two_patch_family import family
+from jkrcyl.model import two_patch as tp
+from jkrcyl.numerics import cohesive_two as ct
+from jkrcyl.numerics import cohesive_two_branch as cb
+from jkrcyl.numerics import cohesive_two_stability as cs
+
+EQ = jkrcyl.equilibria
+THETA, GB = 1.0, 1 / 2.8                      # identical bodies, nu = 0.3
+
+
+def s0_of(lam, M):
+    return EQ.zone_strength(lam, M, THETA)
+
+
+def problem(M, lam):
+    return EQ.problem(M, THETA, GB, s0=s0_of(lam, M))
+
+
+def jkr_at(M, e, et):
+    """JKR's two-patch state with the larger of (e, et) held (tests/ reference: model.two_patch's secant on F)."""
+    jkr = EQ.problem(M, THETA, GB)
+    return tp.solve(jkr, eps_top=et, guess=e) if et < e else tp.solve(jkr, eps=e, guess=et)
+
+
+@pytest.fixture(scope="module")
+def branch20():
+    """M = 0.2, lambda = 20: the family and its one branch (single -> mirror)."""
+    fam = family(problem(0.2, 20.0))
+    b, = fam.branches()
+    return fam, b
+
+
+# --- bad input: a ValueError naming the parameter ---------------------------------------------------------------
+@pytest.mark.parametrize("kw, name", [
+    (dict(alpha_ratio=0.1), "^alpha_ratio"), (dict(theta=math.inf), "^theta"), (dict(lam=3.0), "^sigma0"),
+    (dict(lam=300.0), "^sigma0"), (dict(n=2), "^n ")])
+def test_bad_input_names_the_parameter(kw, name):
+    lam = kw.pop("lam", 20.0)
+    args = dict(theta=THETA, n=None, alpha_ratio=0.0)
+    args.update(kw)
+    with pytest.raises(ValueError, match=name):
+        EQ.two_patch(0.2, args["theta"], args["n"], gb=GB, alpha_ratio=args["alpha_ratio"], s0=s0_of(lam, 0.2))
+
+
+def test_a_state_needs_exactly_one_half_angle():
+    with pytest.raises(ValueError, match="^eps_top"):
+        EQ.two_patch_state(0.2, THETA, gb=GB, eps=1.0, eps_top=0.3, s0=s0_of(20.0, 0.2))
+
+
+def test_the_confined_classification_and_a_search_of_every_branch_leave_two_patches_out():
+    """Not modelled yet for the law (the walker's landing): confined_events refuses naming sigma0; solve without
+    branches returns no two-patch state (as before), with branches=['two-patch'] it searches them."""
+    m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    c = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m, sigma0=1e6)
+    with pytest.raises(ValueError, match="^sigma0: confined_events"):
+        c.confined_events()
+    assert c.problem.models("two-patch-branches") and not c.problem.models("two-patch")
+
+
+# --- the traced branch ------------------------------------------------------------------------------------------
+@pytest.mark.slow
+def test_the_law_holds_along_the_branch(branch20):
+    """G/w = h(c)/h0 = 1 at both zone ends (the Newton tolerance), the gap >= 0, the ends JKR's (the top arc down
+    to 1e-5 rad at 'single', its mirror at 'mirror'), the mirror symmetry P* -> -P*, delta -> -2 - delta."""
+    fam, b = branch20
+    assert b.ends == ("single", "mirror") and len(b.eps) >= 12
+    assert np.max(np.abs(b.G_bot - 1)) < 1e-9 and np.max(np.abs(b.G_top - 1)) < 1e-9
+    assert b.feasible.all() and np.all(b.gap_min > 0)
+    assert min(b.eps_top[0], b.eps[-1]) <= cb.END_ARC
+    assert abs(b.P_star[0] + b.P_star[-1]) < 1e-7 and abs(b.delta_over_Delta[0] + b.delta_over_Delta[-1] + 2) < 1e-7
+
+
+@pytest.mark.slow
+def test_a_traced_state_solved_alone_is_the_traced_one(branch20):
+    """Three interior states: two_patch_state at the traced top arc, cold from JKR's state there (no neighbour,
+    no reused factorisation), equals the traced state to 1e-9."""
+    fam, b = branch20
+    for i in (3, len(b.eps) // 2, len(b.eps) - 4):
+        s = EQ.two_patch_state(0.2, THETA, gb=GB, eps_top=float(b.eps_top[i]), guess=float(b.eps[i]),
+                               s0=fam.pb.edge.s0)
+        assert abs(s.eps - b.eps[i]) < 1e-9 and abs(s.P_star - b.P_star[i]) < 1e-9
+        assert abs(s.delta_over_Delta - b.delta_over_Delta[i]) < 1e-9
+
+
+@pytest.mark.slow
+def test_energy_changes_by_p_d_delta_along_the_branch(branch20):
+    """At two traced states: dE/dx and p d(delta)/dx by central differences of states solved alone at x +- h,
+    x +- 2h (x the held half-angle), Richardson's extrapolation: equal to 1e-8 (relative to |p d(delta)/dx| + 1e-3);
+    the raw differences are not (the check can fail)."""
+    fam, b = branch20
+    for i in (4, len(b.eps) // 2 + 1):
+        x, guess = float(b.eps_top[i]), float(b.eps[i])
+        E, D = {}, {}
+        for k in (-2, -1, 1, 2):
+            s = fam.at(1, x + k * 2e-4, guess, fam.n)
+            E[k], D[k] = fam.potential(s), s.delta_over_Delta
+        p = b.P_star[i] * THETA
+        d1, d2 = (E[1] - E[-1]) / (D[1] - D[-1]), (E[2] - E[-2]) / (D[2] - D[-2])
+        extrapolated = (4 * d1 - d2) / 3
+        assert abs(extrapolated - p) < 1e-8 * (abs(p) + 1e-3)
+        assert abs(d2 - p) > abs(extrapolated - p)
+
+
+@pytest.mark.slow
+def test_stability_matrix_is_the_held_states_one(branch20):
+    """G = dg/dc at the held control (Schur complement of one Jacobian) against cohesive_two_stability.zone_matrix
+    (held states by Newton, central differences): 1e-4 relative under load and grip; the flags equal, and JKR's
+    (jkrcyl.model.two_patch.stability: no stable two-patch state at M = 0.2, vartheta = 1)."""
+    fam, b = branch20
+    assert not (b.stable_load.any() or b.stable_grip.any())
+    for i in (3, len(b.eps) // 2):
+        s = EQ.two_patch_state(0.2, THETA, gb=GB, eps_top=float(b.eps_top[i]), guess=float(b.eps[i]),
+                               s0=fam.pb.edge.s0)
+        st = s._lin
+        J = cb.jacobian(fam.law, st)
+        for control, (a, c) in (("load", (0.0, 1.0)), ("grip", (1.0, 0.0))):
+            mine = cb.zone_matrix(J, a, c)
+            held = cs.zone_matrix(ct._Law(st.m, st.s0, fam.law.kernel), st, control)
+            assert np.max(np.abs(mine - held)) < 1e-4 * np.max(np.abs(held))
+            assert cs.stable(fam.law, st, control, G=held) == cb.flags(J, fam.pb.work_shift)[("load", "grip").index(
+                control)]
+
+
+@pytest.mark.slow
+def test_solve_by_name_finds_the_branch_states(branch20):
+    """solve(P*, branches=['two-patch']) in the normalised API: each state at the asked P*, on the branch (its
+    delta between the bracketing traced states'), G = w at both edges."""
+    fam, b = branch20
+    from jkrcyl.analysis import forward
+    from jkrcyl.units import Units
+    target = 0.5 * (b.P_star[3] + b.P_star[4])
+    got = forward.solve_normalised(fam.pb, Units.normalised(fam.pb, K_edge=1.0), "load", target, ["two-patch"])
+    assert got and all(s.branch == "two-patch" for s in got)
+    for s in got:
+        assert abs(s.P_star - target) < 1e-10 and abs(s.extra["G_bot"] - 1) < 1e-9
+    lo, hi = sorted(b.delta_over_Delta[3:5])
+    assert any(lo <= s.delta_over_Delta <= hi for s in got)
+
+
+# --- the JKR limit ----------------------------------------------------------------------------------------------
+def _limit_errors(M, lam):
+    """max over the states with both arcs >= 0.1 of |P* - P*_JKR| and |delta - delta_JKR| at the same held
+    half-angle, times lambda^2."""
+    b, = family(problem(M, lam)).branches()
+    errs = []
+    for e, et, P, d in zip(b.eps, b.eps_top, b.P_star, b.delta_over_Delta):
+        if min(e, et) >= 0.1:
+            r = jkr_at(M, e, et)
+            errs.append((abs(P - r.P_star) * lam ** 2, abs(d - r.delta_over_Delta) * lam ** 2))
+    assert len(errs) >= 4
+    return np.max(errs, axis=0)
+
+
+@pytest.mark.slow
+def test_jkr_limit_at_lambda_50_and_100():
+    """M = 0.5 (its branch's largest arc 1.24 keeps lambda = 100 within the node budget): P* and delta/Delta of
+    the law's branch equal JKR's at the same held half-angle within C/lambda^2, C the same at lambda = 50 and 100
+    to 30 % (second order; measured C_P, C_delta in the report of issue 26's work: see the assertion's values)."""
+    c50, c100 = _limit_errors(0.5, 50.0), _limit_errors(0.5, 100.0)
+    assert np.all(c100 < 1.3 * c50) and np.all(c50 < 10.0)
