@@ -21,8 +21,8 @@ Stability under each control from one Jacobian (:func:`flags`): the zone-end-hel
 jkrcyl.numerics.cohesive_two_stability has the Hessian 2 s0 G, G = dg/dc at k = 0 and the held quantity
 (g_i = h(c_i) - h0).  The implicit function theorem gives G = g_c - [g_e g_d] A^-1 [k_c; q_c], A = [[k_e, k_d],
 [q_e, q_d]], with q = a delta/Delta + b p the held quantity (load: (0, 1), grip: (1, 0), grip-work: (1, c_work)),
-e the half-angles, d = delta/Delta; the derivatives are differences of fixed-arc states (two more systems;
-delta and the zone ends: back-substitutions).  Tests: the flags equal cohesive_two_stability.stable's (held
+e the half-angles, d = delta/Delta; the derivatives are central differences of fixed-arc states (four more
+systems, each refined from the state's LU; delta and the zone ends: back-substitutions).  Tests: the flags equal cohesive_two_stability.stable's (held
 states solved by Newton, an independent route).
 """
 import math
@@ -210,18 +210,16 @@ def pieces(law, x, n):
 
 
 def jacobian(law, st):
-    """d pieces/dx at the state st (5 x 5): central differences in the zone ends and the approach (the same
-    arcs: back-substitutions), forward differences in the half-angles (two more fixed-arc systems; the flags
-    only need the signs of G's eigenvalues)."""
+    """d pieces/dx at the state st (5 x 5, central differences: the half-angles' take two fixed-arc systems each;
+    forward differences would not do: G's first entry is a difference of larger terms, 0.6 % off at a step
+    1e-6 -- measured at M = 0.2, lambda = 20 against cohesive_two_stability's held states)."""
     x = np.array([st.eps, st.eps_top, st.c, st.c_top, st.delta_over_Delta])
     zone = min(st.c - st.eps, st.c_top - st.eps_top)
     steps = np.array([ARC_STEP * st.eps, ARC_STEP * st.eps_top, ZONE_STEP * zone, ZONE_STEP * zone, 1e-3])
     J = np.empty((5, 5))
-    at = pieces(law, x, st.n)
     for j in range(5):
         dx = steps[j] * np.eye(5)[j]
-        back = at if j < 2 else pieces(law, x - dx, st.n)
-        J[:, j] = (pieces(law, x + dx, st.n) - back) / (steps[j] if j < 2 else 2 * steps[j])
+        J[:, j] = (pieces(law, x + dx, st.n) - pieces(law, x - dx, st.n)) / (2 * steps[j])
     return J
 
 
