@@ -19,6 +19,7 @@ import numpy as np
 import pytest
 
 import jkrcyl
+from jkrcyl.analysis.cohesive_two_patch import land_two_patch
 from jkrcyl.analysis.two_patch_family import family
 from jkrcyl.model import two_patch as tp
 from jkrcyl.numerics import cohesive_two as ct
@@ -155,6 +156,10 @@ def test_solve_by_name_finds_the_branch_states(branch20):
         assert abs(s.P_star - target) < 1e-10 and abs(s.extra["G_bot"] - 1) < 1e-9
     lo, hi = sorted(b.eps_top[3:5])
     assert any(lo <= s.eps_top <= hi for s in got)
+    landed = land_two_patch(fam.pb, "load", target)                  # the walker's call: the same states
+    assert sorted(s.eps_top for s, _ in landed) == pytest.approx(sorted(s.eps_top for s in got), abs=1e-12)
+    assert all(f == (s.stable_load, s.stable_grip, s.stable_grip_work) for (_, f), s in
+               zip(sorted(landed, key=lambda sf: sf[0].eps_top), sorted(got, key=lambda s: s.eps_top)))
 
 
 # --- the JKR limit ----------------------------------------------------------------------------------------------
@@ -175,6 +180,6 @@ def _limit_errors(M, lam):
 def test_jkr_limit_at_lambda_50_and_100():
     """M = 0.5 (its branch's largest arc 1.24 keeps lambda = 100 within the node budget): P* and delta/Delta of
     the law's branch equal JKR's at the same held half-angle within C/lambda^2, C the same at lambda = 50 and 100
-    to 30 % (second order; measured C_P, C_delta in the report of issue 26's work: see the assertion's values)."""
+    to 30 % (second order; the constants measured are in the assertion)."""
     c50, c100 = _limit_errors(0.5, 50.0), _limit_errors(0.5, 100.0)
     assert np.all(c100 < 1.3 * c50) and np.all(c50 < 10.0)

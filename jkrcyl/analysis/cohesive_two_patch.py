@@ -163,6 +163,26 @@ class CohesiveTwoPatch:
         return sorted(got, key=lambda sf: (not sf[1][which], -(sf[0].eps + sf[0].eps_top)))
 
 
+@functools.lru_cache(maxsize=16)
+def of(pb: Problem) -> CohesiveTwoPatch:
+    """The two-patch family of a problem with the Maugis-Dugdale edge, cached per problem (its traced branches
+    with it)."""
+    return CohesiveTwoPatch(pb)
+
+
+def land_two_patch(pb: Problem, control: str, value: float) -> list:
+    """For the walker (jkrcyl.analysis.path) where a path under the law reaches the two-patch branch (the top
+    closes): the states of the traced branches with the held quantity of control ('load': P*, 'grip':
+    delta/Delta, 'grip-work': delta_work/Delta) at value, stable under the control first, then the larger
+    contact first -- a list of (TwoPatchState, (stable_load, stable_grip, stable_grip_work)); [] where the
+    branch does not reach the value (CohesiveTwoPatch.land).  ValueError naming sigma0 or alpha_ratio where the
+    law's branches are not followed (cohesive_two_branch.branch_nodes, require_alpha_zero).  E.g. at M = 0.2,
+    vartheta = 1, lambda = 20: ``land_two_patch(pb, "load", -0.5)`` gives one state at P* = -0.5, unstable under
+    every control (tests/test_cohesive_two_patch_branch.py).
+    """
+    return of(pb).land(control, value)
+
+
 def gap_min(st) -> float:
     """min h/Delta outside both arcs (Chebyshev points of the open gap, clustered at the arc ends)."""
     return float(np.min(st.fields.gap(_two.exterior_angles(st.eps, st.eps_top, GAP_SAMPLES))))

@@ -14,7 +14,7 @@ import functools
 from ..model import two_patch as _two
 from ..model.problem import Problem
 from . import tracing as _tr
-from .cohesive_two_patch import CohesiveTwoPatch
+from . import cohesive_two_patch as _cohesive
 
 
 class JKRTwoPatch:
@@ -40,8 +40,8 @@ class JKRTwoPatch:
         return self.pb.scale * s.energy - 2 * self.pb.m ** 2 * (s.eps + s.eps_top)
 
 
-#: the two-patch families by the name a law gives (Edge.two_patch_family)
-REGISTRY = {cls.__name__: cls for cls in (JKRTwoPatch, CohesiveTwoPatch)}
+#: the two-patch families by the name a law gives (Edge.two_patch_family): each a callable of the problem
+REGISTRY = {"JKRTwoPatch": JKRTwoPatch, "CohesiveTwoPatch": _cohesive.of}
 
 
 @functools.lru_cache(maxsize=32)
