@@ -26,7 +26,7 @@ def two_patch(M: float, theta: float, n: Optional[int] = None, *, gb: float, alp
         followed from JKR's by jkrcyl.analysis.cohesive_two_patch).
     n : int, optional
         Points per branch, evenly along it (default: the continuation steps of jkrcyl.analysis.tracing; with s0,
-        JKR's branch resampled to 12 points, the states down to an arc of 1e-5 rad added at an end on an axis).
+        JKR's branch resampled to 12 points, the states down to an arc of 1e-4 rad added at an end on an axis).
 
     Returns
     -------

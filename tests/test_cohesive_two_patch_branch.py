@@ -83,7 +83,7 @@ def test_the_confined_classification_and_a_search_of_every_branch_leave_two_patc
 @pytest.mark.slow
 def test_the_law_holds_along_the_branch(branch20):
     """G/w = h(c)/h0 = 1 at both zone ends (the Newton tolerance), the gap >= 0, the ends JKR's (the top arc down
-    to 1e-5 rad at 'single', its mirror at 'mirror'), the mirror symmetry P* -> -P*, delta -> -2 - delta."""
+    to 1e-4 rad at 'single', its mirror at 'mirror'), the mirror symmetry P* -> -P*, delta -> -2 - delta."""
     fam, b = branch20
     assert b.ends == ("single", "mirror") and len(b.eps) >= 12
     assert np.max(np.abs(b.G_bot - 1)) < 1e-9 and np.max(np.abs(b.G_top - 1)) < 1e-9
@@ -182,8 +182,10 @@ def _limit_errors(M, lam):
 @pytest.mark.slow
 def test_jkr_limit_at_lambda_50_and_100():
     """M = 0.3 (its branch's largest arc 2.4 keeps lambda = 100 within the node budget, 922 per arc): the law's
-    bottom arc, P* and delta/Delta at the same top arc equal JKR's within C/lambda^2 with the same C at lambda = 50
-    and 100 (second order), C measured: see the bounds."""
+    bottom arc, P* and delta/Delta at the same top arc equal JKR's within C/lambda^2, measured max over the three
+    arcs at lambda = 50, 100: C_eps = 2.396, 2.393 and C_delta = 0.0743, 0.0745 (second order: the same C),
+    C_P = 0.091, 0.060 (better than second order: the P* difference falls faster)."""
     c50, c100 = _limit_errors(0.3, 50.0), _limit_errors(0.3, 100.0)
-    assert np.all(c50 < [3.0, 0.2, 0.2]) and np.all(c100 < [3.0, 0.2, 0.2])
-    assert np.all(np.abs(c100 / c50 - 1) < 0.3)
+    assert np.all(c50 < [2.5, 0.1, 0.08]) and np.all(c100 < [2.5, 0.1, 0.08])
+    assert abs(c100[0] / c50[0] - 1) < 0.01 and abs(c100[2] / c50[2] - 1) < 0.01 and c100[1] < 0.8 * c50[1]
+    assert np.all(c50 > [2.0, 0.05, 0.05])               # a finite zone: not JKR's states themselves

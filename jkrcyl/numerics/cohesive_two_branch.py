@@ -39,7 +39,7 @@ ZONE_NODES = 8.0          # nodes per arc per sqrt(eps_max/d) (module docstring)
 ARC_STEP = 1e-6           # central differences of the half-angles in flags, relative
 ZONE_STEP = 1e-5          # ... of the zone ends and the approach, relative to the zone length
 SECANT_STEPS = 12        # Newton steps at most (a warm start takes 2-4)
-END_ARC = 1e-5            # a branch end at an axis: the smaller arc followed down to this [rad]
+END_ARC = 1e-4            # a branch end at an axis: the smaller arc followed down to this [rad]
 END_FACTOR = 0.1          # ... shrinking by this factor per state
 
 REUSE_SPAN = 0.05         # arcs within this (in log half-angle) of a factorised pair reuse its LU
