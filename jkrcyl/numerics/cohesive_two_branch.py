@@ -1,29 +1,32 @@
 """The Maugis-Dugdale two-patch branch traced (notation and the fixed-arc state: jkrcyl.numerics.cohesive_two),
 each state warm-started from its neighbour.
 
-At fixed arcs (eps, eps_top) a state costs one LU (cohesive_two.FixedArcs); its zone ends solve h(c) = h0 and
-h(pi - c_top) = h0 by Newton in (log d_bot, log d_top) with back-substitutions only (the zone right-hand side
-changes, the matrix does not): :func:`zone_ends`.  What is left is the scalar F = k_top of one half-angle (the
-other held), solved by the secant from the neighbour's offset and slope: a state costs the LUs of its secant
-steps (2-4), where the cold Newton of cohesive_two.solve factorises again for every difference and line-search
-step (profile, lambda = 50, M = 0.2: 7 LUs of 2 x 760 unknowns, 0.2 s each, are the whole cost).
+A state (:func:`solve_at`): one half-angle held, Newton in z = (the other, log d_bot, log d_top) on
+[k_top, h(c) - h0, h(pi - c_top) - h0] (k_bot = 0 fixes delta at given arcs and zones).  The zone columns of the
+Jacobian are differences at the same arcs (back-substitutions: only the zone right-hand side changes), the arc
+column a secant update along the iterates, started from the neighbour's: one new fixed-arc system per step.
+Profile of the cold cohesive_two.solve (lambda = 50, M = 0.2): 7 LUs of 2 x 760 unknowns, 0.2 s each, were the
+whole cost, and the assembly of a system costs about as much as its LU.  Here a new system near a factorised one
+(REUSE_SPAN) is solved by iterative refinement with that LU (:class:`BranchLaw`, :class:`Refined`: O(n^2), to the
+LU's own residual), so a state costs about one LU plus its assemblies.
 
 The branch (:func:`trace`): JKR's (jkrcyl.analysis.tracing; the limit lambda -> inf, O(lambda^-2) away) is the
 scaffold.  At each scaffold point the half-angle that varies most along it is held at JKR's value and the other
-solved, starting from JKR's value plus the previous state's offset; the trace starts where both arcs are largest
-(the zones thinnest relative to them) and walks to both ends, stopping where a state is not found (the zones meet near full contact at small
-lambda, or the top arc runs below what the collocation resolves).  One node count for the whole branch (states
-along it are one discretisation, so a state solved alone at the same count equals the traced one):
-ZONE_NODES sqrt(eps_max/d), d the Dugdale zone length m^2/(4 s0^2) -- measured at M = 0.2, lambda = 50 (bottom
-arc 2.61): P* moves by 8.7e-6, 1.4e-8, < 1e-11 from 300, 450, 760 nodes per arc to the next.
+solved, from JKR's value plus the previous state's offset (then the other way round, then through a midpoint);
+the trace starts where both arcs are largest (the zones thinnest relative to them) and walks to both ends,
+stopping where a state is not found (e.g. both arcs small against the zones), an end at an axis followed down to
+an arc END_ARC.  One node count for the whole problem (states are one discretisation, so a state solved alone at
+that count equals the traced one): ZONE_NODES sqrt(eps_max/d), d the Dugdale zone length m^2/(4 s0^2) --
+measured at M = 0.2, lambda = 50 (bottom arc 2.61): P* moves by 8.7e-6, 1.4e-8, < 1e-11 from 300, 450, 760 nodes
+per arc to the next.
 
 Stability under each control from one Jacobian (:func:`flags`): the zone-end-held energy of
 jkrcyl.numerics.cohesive_two_stability has the Hessian 2 s0 G, G = dg/dc at k = 0 and the held quantity
 (g_i = h(c_i) - h0).  The implicit function theorem gives G = g_c - [g_e g_d] A^-1 [k_c; q_c], A = [[k_e, k_d],
 [q_e, q_d]], with q = a delta/Delta + b p the held quantity (load: (0, 1), grip: (1, 0), grip-work: (1, c_work)),
 e the half-angles, d = delta/Delta; the derivatives are central differences of fixed-arc states (four more
-systems, each refined from the state's LU; delta and the zone ends: back-substitutions).  Tests: the flags equal cohesive_two_stability.stable's (held
-states solved by Newton, an independent route).
+systems, refined from the state's LU; delta and the zone ends: back-substitutions).  Tests: G equals
+cohesive_two_stability.zone_matrix's (held states solved by Newton, an independent route).
 """
 import math
 from collections import namedtuple
@@ -253,7 +256,8 @@ def _free_index(points, i):
 def _step(law, target, prev, prev_at, free, n, slope, depth=2):
     """The state near the scaffold point target, from the previous state prev (at the scaffold point prev_at):
     the free half-angle solved from target + prev's offset, the other held at target's (with the slope, then a
-    difference); then the other way round; then through the midpoint (depth levels at most).  Returns (state, slope, free); raises NotFound."""
+    difference); then the other way round; then through the midpoint (depth levels at most).  Returns (state,
+    slope, free); raises NotFound."""
     d0 = np.array([prev.c - prev.eps, prev.c_top - prev.eps_top])
     offset = np.array([prev.eps, prev.eps_top]) - prev_at
     for f, jx in ((free, slope), (free, None), (1 - free, None))[0 if slope is not None else 1:]:
