@@ -61,7 +61,8 @@ class CohesiveTwoPatch:
 
     def flags(self, s: TwoPatchState):
         """(stable_load, stable_grip, stable_grip_work) of a state (cohesive_two_branch.flags)."""
-        return _cb.flags(_cb.jacobian(self.law, s._lin), self.pb.work_shift)
+        with _cb.one_blas_thread():
+            return _cb.flags(_cb.jacobian(self.law, s._lin), self.pb.work_shift)
 
     def potential(self, s: TwoPatchState) -> float:
         """The total potential in the kernel scale (units 4 pi Delta^2/beta*)."""
@@ -88,7 +89,8 @@ class CohesiveTwoPatch:
         arc; ValueError naming guess where none is found."""
         d0 = np.full(2, _co.dugdale_zone(self.law.m, self.law.s0)) if d0 is None else d0
         try:
-            st, _ = _cb.solve_at(self.law, held, value, guess, d0, n)
+            with _cb.one_blas_thread():
+                st, _ = _cb.solve_at(self.law, held, value, guess, d0, n)
         except _cb.NotFound:
             raise ValueError(f"guess: no cohesive two-patch state near {guess!r} (the other half-angle at "
                              f"{value!r})") from None
@@ -193,7 +195,8 @@ def _branches(fam: CohesiveTwoPatch, n: int) -> tuple:
     out = []
     for b in _tr.branches(fam.jkr, n):
         points = np.column_stack([b.eps, b.eps_top])
-        t = _cb.trace(fam.law, points, b.ends, fam.n)
+        with _cb.one_blas_thread():
+            t = _cb.trace(fam.law, points, b.ends, fam.n)
         if t.states:
             out.append(fam.curve(t.states, t.jacobians, t.ends))
     return tuple(out)
