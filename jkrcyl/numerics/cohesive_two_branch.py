@@ -302,17 +302,19 @@ def _walk(law, points, order, n, start):
 
 def _to_axis(law, st, n):
     """From the last state st towards the axis its smaller arc runs to (scaffold end 'single' or 'mirror'): that
-    arc held and halved down to END_ARC, the other solved.  Returns (states, reached)."""
+    arc held and shrunk by END_FACTOR per state down to END_ARC (by its square root, twice, where a step fails;
+    with the slope of the last state, then a difference), the other solved.  Returns (states, reached)."""
     out, small = [], int(st.eps_top < st.eps)
     jx = None
     while True:
         arcs = np.array([st.eps, st.eps_top])
         if arcs[small] <= END_ARC:
             return out, True
-        held, d0 = max(arcs[small] * END_FACTOR, 0.99 * END_ARC), np.array([st.c - st.eps, st.c_top - st.eps_top])
-        for slope in ((jx, None) if jx is not None else (None,)):
+        d0 = np.array([st.c - st.eps, st.c_top - st.eps_top])
+        for factor, slope in [(END_FACTOR ** (0.5 ** k), s) for k in range(3) for s in (jx, None)]:
             try:
-                st, jx = solve_at(law, small, held, arcs[1 - small], d0, n, slope)
+                st, jx = solve_at(law, small, max(arcs[small] * factor, 0.99 * END_ARC), arcs[1 - small], d0, n,
+                                  slope)
                 break
             except NotFound:
                 continue
