@@ -183,7 +183,7 @@ class Analyses:
         control, units = control_of_physical(name).name, self.units
         names = _fw.check_branches(branches, self.problem)
         return _fw.solve_normalised(self.problem, units, control, units.normalise(control, finite_scalar(name, value)),
-                                    names)
+                                    names, by_name=branches is not None)
 
     def pull_off(self, control: str = "load", rate: Optional[float] = None) -> PullOff:
         """Detachment along the stable path from first contact, or why there is none.

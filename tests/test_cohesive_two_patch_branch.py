@@ -144,14 +144,18 @@ def test_stability_matrix_is_the_held_states_one(branch20):
 
 @pytest.mark.slow
 def test_solve_by_name_finds_the_branch_states(branch20):
-    """solve(P*, branches=['two-patch']) in the normalised API: each state at the asked P*, G = w at its edges, one
-    between the bracketing traced states (its top arc)."""
+    """solve(P*, branches=['two-patch']) named by the user (by_name): each state at the asked P*, G = w at its
+    edges, one between the bracketing traced states (its top arc); the walker's search (every branch listed, not
+    by name) finds no two-patch state under this law."""
     fam, b = branch20
     from jkrcyl.analysis import forward
     from jkrcyl.units import Units
     target = 0.5 * (b.P_star[3] + b.P_star[4])
-    got = forward.solve_normalised(fam.pb, Units.normalised(fam.pb, K_edge=1.0), "load", target, ["two-patch"])
+    un = Units.normalised(fam.pb, K_edge=1.0)
+    got = forward.solve_normalised(fam.pb, un, "load", target, ["two-patch"], by_name=True)
     assert got and all(s.branch == "two-patch" for s in got)
+    walker = forward.solve_normalised(fam.pb, un, "load", target, list(forward.BRANCH_SOLVERS))
+    assert all(s.branch != "two-patch" for s in walker)
     for s in got:
         assert abs(s.P_star - target) < 1e-10 and abs(s.extra["G_bot"] - 1) < 1e-9
     lo, hi = sorted(b.eps_top[3:5])

@@ -19,8 +19,9 @@
 With a cohesive (Maugis-Dugdale) edge law the single-patch branches (sub- and super-critical, contactless) are
 the solver's (jkrcyl.model.cohesive), full contact is JKR's bonded pin where the tension stays below sigma0, and
 the two-patch states are those of its traced branches (jkrcyl.analysis.cohesive_two_patch, alpha* = 0), found
-when the branch is asked for by name (branches=['two-patch']); a search of every branch leaves them out, as the
-walker does not land on them yet (a law without two-patch branches: a ValueError when asked by name).
+when the user names the branch (Contact.solve(..., branches=['two-patch'])); a search of every branch and the
+walker's leave them out, as the walker does not land on them yet (a law without two-patch branches: a ValueError
+when asked by name).
 
 Stability is that of the control (jkrcyl.units.CONTROLS): fixed load for P, fixed paper's approach for
 delta ('grip'), fixed work-conjugate approach for delta_work ('grip-work').  Signs as in section 6: P and delta
@@ -146,6 +147,13 @@ def two_patch_state(pb: Problem, un: Units, s, control) -> Equilibrium:
 
 
 def _two_patch_solver(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
+    """The registry's two-patch branch, searched by the walker too: a law whose two patches it lands on (JKR)."""
+    return two_patch_states(pb, un, key, target, control) if pb.models("two-patch") else []
+
+
+def two_patch_states(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
+    """The states of the law's traced two-patch branches (any law with 'two-patch-branches'): the two-patch branch
+    of a solve that names it (:func:`solve_normalised` with by_name)."""
     if not pb.models("two-patch-branches") or pb.rigid_cradle or pb.M <= 0:
         return []
     try:
@@ -226,15 +234,15 @@ def check_branches(branches, pb: Problem = None) -> list:
     return names
 
 
-def solve_normalised(pb: Problem, un: Units, control: str, target: float, branches=None) -> List[Equilibrium]:
+def solve_normalised(pb: Problem, un: Units, control: str, target: float, branches=None,
+                     by_name: bool = False) -> List[Equilibrium]:
     """Every equilibrium with the held quantity of ``control`` at the normalised target (P*, delta/Delta or
-    delta_work/Delta), sorted by contact size then branch order."""
+    delta_work/Delta), sorted by contact size then branch order.  by_name: the user named the branches (a law
+    whose two-patch branches are traced but not landed on, the cohesive one, answers 'two-patch' only then)."""
     key = CONTROLS[control].normalised
     out = []
-    names = check_branches(branches)
-    if branches is None:       # a search of every branch: two patches where the walker lands on them too (JKR)
-        names = [n for n in names if n != "two-patch" or pb.models("two-patch")]
-    for name in names:
-        out += BRANCH_SOLVERS[name](pb, un, key, target, control)
+    for name in check_branches(branches):
+        solver_of = two_patch_states if (by_name and name == "two-patch") else BRANCH_SOLVERS[name]
+        out += solver_of(pb, un, key, target, control)
     order = {n: i for i, n in enumerate(BRANCH_SOLVERS)}
     return sorted(out, key=lambda s: (s.size, order[s.branch]))

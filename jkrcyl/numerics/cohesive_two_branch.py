@@ -42,10 +42,11 @@ ZONE_MAX = 0.02           # the largest Dugdale zone estimate followed [rad] (la
 ZONE_NODES = 8.0          # nodes per arc per sqrt(eps_max/d) (module docstring)
 ARC_STEP = 1e-6           # central differences of the half-angles in flags, relative
 ZONE_STEP = 1e-5          # ... of the zone ends and the approach, relative to the zone length
-SECANT_STEPS = 12        # Newton steps at most (a warm start takes 2-4)
+SECANT_STEPS = 12         # Newton steps at most (a warm start takes 2-4)
 END_ARC = 1e-4            # a branch end at an axis: the smaller arc followed down to this [rad]
 END_FACTOR = 0.1          # ... shrinking by this factor per state
-
+REUSE_SPAN = 0.05         # arcs within this (in log half-angle) of a factorised pair reuse its LU
+REFINE_STEPS = 12         # iterative refinement steps before a fresh LU
 _BLAS = ThreadpoolController()
 
 
@@ -54,10 +55,6 @@ def one_blas_thread():
     with OpenBLAS's workers spinning between them on a shared 2-core machine (lambda = 10: 42 LUs of 224
     unknowns took 0.21 s each, 2678 solves 4 ms each; on one thread the whole trace is ~1 s)."""
     return _BLAS.limit(limits=1, user_api="blas")
-
-
-REUSE_SPAN = 0.05         # arcs within this (in log half-angle) of a factorised pair reuse its LU
-REFINE_STEPS = 12         # iterative refinement steps before a fresh LU
 
 
 class Refined(_two.FixedArcs):
@@ -119,12 +116,11 @@ class BranchLaw(_two._Law):
 
 
 Traced = namedtuple("Traced", ["states", "jacobians", "ends"])
-Traced.__doc__ = """A traced branch: TwoPatchCohesive states in order, their Jacobians (:func:`jacobian`) and
-how each end finishes (JKR's label where reached, else 'unresolved')."""
+Traced.__doc__ = """States in order, their Jacobians (:func:`jacobian`), the ends (JKR's label or 'unresolved')."""
 
 
 class NotFound(Exception):
-    """No state at these arcs (the zones meet, or Newton/secant did not converge)."""
+    """No state here (the zones meet, or Newton did not converge)."""
 
 
 def require_alpha_zero(ar):
