@@ -193,3 +193,22 @@ def test_jkr_limit_at_lambda_50_and_100():
     assert np.all(c50 < [2.5, 0.1, 0.08]) and np.all(c100 < [2.5, 0.1, 0.08])
     assert abs(c100[0] / c50[0] - 1) < 0.01 and abs(c100[2] / c50[2] - 1) < 0.01 and c100[1] < 0.8 * c50[1]
     assert np.all(c50 > [2.0, 0.05, 0.05])               # a finite zone: not JKR's states themselves
+
+
+# --- the physical API -------------------------------------------------------------------------------------------
+@pytest.mark.slow
+def test_contact_two_patch_and_solve_by_name():
+    """A Contact at M = 0.3, lambda = 20 (identical nu = 0.3 bodies): Contact.two_patch is the normalised branch
+    in N/m (P = P* times the load scale), and Contact.solve(P, branches=['two-patch']) finds states at that P
+    (P* of each equal to the asked one, G = w), and pull-off-style solves without branches find none (not
+    searched)."""
+    m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
+    probe = jkrcyl.Contact(1e-2, 1e-6, 1.0, m)
+    c = jkrcyl.Contact.with_lambda(1e-2, 1e-6, (0.3 / probe.M) ** 2, m, 20.0)
+    b, = c.two_patch()
+    ref, = EQ.two_patch(c.M, c.materials.theta, gb=c.problem.gb, s0=c.problem.edge.s0)
+    assert np.allclose(b.P, ref.P_star * c.load_scale, rtol=1e-12, atol=0)
+    P = float(0.5 * (b.P[4] + b.P[5]))
+    got = c.solve(P=P, branches=["two-patch"])
+    assert got and all(abs(s.P / P - 1) < 1e-9 and abs(s.extra["G_top"] - 1) < 1e-9 for s in got)
+    assert all(s.branch != "two-patch" for s in c.solve(P=P))
