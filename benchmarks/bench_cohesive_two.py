@@ -11,6 +11,13 @@ of one state under load and grip (held states); then the whole branch through th
 by iterative refinement, the flags from one Jacobian per state), its states and LU count, its time per state and
 the ratio of a traced state's cost to the cold single state's.  Goal (issue 26): two_patch under the law <= 5 s at
 lambda <= 50.  Wall clock and CPU time; the machine is shared (the load average is printed).
+
+Measured (2 shared cores, load ~1.6): the branch in 1.0 / 2.2 / 24.6 s at lambda = 10 / 20 / 50 (16-17 states
+with their flags; goal met at 10 and 20, not at 50).  Where the time goes at lambda = 50 (cProfile): the assembly
+of the two-arc collocation matrix (jkrcyl.numerics.arcs_kernels.assemble), ~0.09 s per system at 564 nodes per
+arc, 216 systems for 17 states (4 per state for the flags' Jacobian), 20 of the 28 s; the 43 LUs take 1.4 s
+(the others are iterative refinements with a neighbour's LU).  Next: fewer systems per state (a predictor along
+the branch, the flags' arc columns from the Newton's secant), or an assembly that updates with the arcs.
 """
 import argparse
 import os
