@@ -14,7 +14,7 @@ from .analysis import confined as _confined
 from .analysis import cycle as _cycle
 from .analysis import forward as _fw
 from .analysis import pull_off as _pull_off
-from .analysis import tracing as _tr
+from .analysis.two_patch_family import family as _family
 from .model import two_patch as _two
 from .results import ConfinedEvents, Curve, Cycle, Equilibrium, Point, PullOff, TwoPatchCurve
 from .units import control_of_physical
@@ -105,7 +105,7 @@ class Analyses:
         ------
         ValueError
             For a rigid cradle (vartheta = inf: no top contact), Delta = 0, a law without two patches (naming its
-            parameter), or n out of range.
+            parameter), materials with alpha* != 0 under the Maugis-Dugdale law, or n out of range.
 
         Examples
         --------
@@ -115,8 +115,7 @@ class Analyses:
         >>> len(branches), branches[0].ends                  # from the single patch to its mirror at the top
         (1, ('single', 'mirror'))
         """
-        pb = _two.require_finite_theta(self.problem.require("two-patch", "two_patch() is"))
-        return tuple(b.with_units(self.units) for b in _tr.branches(pb, n))
+        return tuple(b.with_units(self.units) for b in _family(self.problem, "two_patch() is").branches(n))
 
     def confined_events(self) -> ConfinedEvents:
         """What follows when the gap at phi = pi closes under slow pulling (jkrcyl.analysis.confined).
@@ -184,7 +183,7 @@ class Analyses:
         control, units = control_of_physical(name).name, self.units
         names = _fw.check_branches(branches, self.problem)
         return _fw.solve_normalised(self.problem, units, control, units.normalise(control, finite_scalar(name, value)),
-                                    names)
+                                    names, by_name=branches is not None)
 
     def pull_off(self, control: str = "load", rate: Optional[float] = None) -> PullOff:
         """Detachment along the stable path from first contact, or why there is none.

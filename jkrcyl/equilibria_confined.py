@@ -5,7 +5,9 @@ from __future__ import annotations
 
 from typing import Optional, Tuple
 
-from .analysis import confined as _confined, tracing as _tr
+from .analysis import confined as _confined
+from .analysis.two_patch_family import family as _family
+from .laws.dugdale import edge_of_strength
 from .model import full_contact as _full, two_patch as _two
 from .model.problem import Problem
 from .results import ConfinedEvents, FullContact, TwoPatchCurve, TwoPatchState
@@ -13,16 +15,18 @@ from .results import ConfinedEvents, FullContact, TwoPatchCurve, TwoPatchState
 __all__ = ["confined_events", "full_contact", "two_patch", "two_patch_state"]
 
 
-def two_patch(M: float, theta: float, n: Optional[int] = None, *, gb: float,
-              alpha_ratio: float = 0.0) -> Tuple[TwoPatchCurve, ...]:
+def two_patch(M: float, theta: float, n: Optional[int] = None, *, gb: float, alpha_ratio: float = 0.0,
+              s0: Optional[float] = None) -> Tuple[TwoPatchCurve, ...]:
     """Every two-patch branch (contact at the bottom and the top at once), traced; cached per problem.
 
     Parameters
     ----------
-    M, theta, gb, alpha_ratio
-        The problem (:func:`problem`; vartheta finite).
+    M, theta, gb, alpha_ratio, s0
+        The problem (:func:`problem`; vartheta finite; s0: the Maugis-Dugdale law, alpha_ratio = 0, its branches
+        followed from JKR's by jkrcyl.analysis.cohesive_two_patch).
     n : int, optional
-        Points per branch, evenly along it (default: the continuation steps of jkrcyl.analysis.tracing).
+        Points per branch, evenly along it (default: the continuation steps of jkrcyl.analysis.tracing; with s0,
+        JKR's branch resampled to 12 points, the states down to an arc of 1e-4 rad added at an end on an axis).
 
     Returns
     -------
@@ -33,24 +37,25 @@ def two_patch(M: float, theta: float, n: Optional[int] = None, *, gb: float,
     Raises
     ------
     ValueError
-        Naming theta (inf: no top to close), n or a problem parameter.
+        Naming theta (inf: no top to close), n, alpha_ratio (not 0 with s0) or a problem parameter.
 
     Examples
     --------
     >>> [b.ends for b in two_patch(0.5, 1.0, gb=1 / 2.8)]
     [('single', 'mirror')]
     """
-    return _tr.branches(_two.require_finite_theta(Problem(M, theta, gb, alpha_ratio)), n)
+    return _family(Problem(M, theta, gb, alpha_ratio, edge_of_strength(s0))).branches(n)
 
 
 def two_patch_state(M: float, theta: float, *, gb: float, eps: Optional[float] = None, eps_top: Optional[float] = None,
-                    guess: Optional[float] = None, alpha_ratio: float = 0.0) -> TwoPatchState:
+                    guess: Optional[float] = None, alpha_ratio: float = 0.0, s0: Optional[float] = None
+                    ) -> TwoPatchState:
     """The two-patch equilibrium (G = w at both edges) with one half-angle given, the other found from ``guess``.
 
     Parameters
     ----------
-    M, theta, gb, alpha_ratio
-        The problem (:func:`problem`; vartheta finite).
+    M, theta, gb, alpha_ratio, s0
+        The problem (:func:`problem`; vartheta finite; s0: the Maugis-Dugdale law, solved from JKR's state).
     eps, eps_top : float
         Exactly one: the half-angle of the bottom or the top contact [rad], in (0, pi).
     guess : float, optional
@@ -72,7 +77,7 @@ def two_patch_state(M: float, theta: float, *, gb: float, eps: Optional[float] =
     >>> round(float(s.eps_top), 5), round(s.P_star, 4), round(s.G_bot, 9), round(s.G_top, 9)
     (0.00268, -0.7062, 1.0, 1.0)
     """
-    return _two.solve(Problem(M, theta, gb, alpha_ratio), eps_top=eps_top, eps=eps, guess=guess)
+    return _family(Problem(M, theta, gb, alpha_ratio, edge_of_strength(s0))).state(eps, eps_top, guess)
 
 
 def confined_events(M: float, theta: float, *, gb: float, alpha_ratio: float = 0.0) -> ConfinedEvents:

@@ -165,8 +165,7 @@ def test_pull_off_two_routes(lam):
 # --- 6. what is not modelled, and bad input -------------------------------------------------------------------
 def test_confined_branches_say_not_modelled():
     c = pin(3.0)
-    for call in (lambda: c.two_patch(), lambda: c.confined_events(),
-                 lambda: c.solve(P=-100.0, branches=["two-patch"]), lambda: c.state(0.5)):
+    for call in (lambda: c.confined_events(), lambda: c.state(0.5)):
         with pytest.raises(ValueError, match="not modelled|JKR"):
             call()
     assert {s.branch for s in c.solve(P=-100.0)} <= {"sub-critical", "sub-critical-top", "contactless",

@@ -80,11 +80,10 @@ def test_the_bond_holds_below_the_strength_only(lam):
         assert jkr(c).solve(P=P, branches=["full-contact"])[0].feasible
 
 
-def test_two_patches_are_still_refused_by_name():
+def test_the_confined_classification_is_still_refused_by_name():
     c = contact(0.5, 50.0)
-    for call in (c.two_patch, c.confined_events, lambda: c.solve(P=0.0, branches=["two-patch"])):
-        with pytest.raises(ValueError, match="^sigma0: .*not modelled for the Maugis-Dugdale law"):
-            call()
+    with pytest.raises(ValueError, match="^sigma0: .*not modelled for the Maugis-Dugdale law"):
+        c.confined_events()
     with pytest.raises(ValueError, match="^P"):
         c.solve(P=math.nan, branches=["full-contact"])
 

@@ -18,8 +18,10 @@
 
 With a cohesive (Maugis-Dugdale) edge law the single-patch branches (sub- and super-critical, contactless) are
 the solver's (jkrcyl.model.cohesive), full contact is JKR's bonded pin where the tension stays below sigma0, and
-two patches are not modelled: that branch returns no state in a search of every branch, and asking for it by
-name raises ValueError.
+the two-patch states are those of its traced branches (jkrcyl.analysis.cohesive_two_patch, alpha* = 0), found
+when the user names the branch (Contact.solve(..., branches=['two-patch'])); a search of every branch and the
+walker's leave them out, as the walker does not land on them yet (a law without two-patch branches: a ValueError
+when asked by name).
 
 Stability is that of the control (jkrcyl.units.CONTROLS): fixed load for P, fixed paper's approach for
 delta ('grip'), fixed work-conjugate approach for delta_work ('grip-work').  Signs as in section 6: P and delta
@@ -35,7 +37,6 @@ import numpy as np
 
 from ..model import full_contact as _full
 from ..model import stability as _stab
-from ..model import two_patch as _two
 from ..model.problem import Problem
 from ..model.single_patch import solver
 from ..notices import BranchLimitWarning
@@ -43,6 +44,7 @@ from ..results import Equilibrium, Point
 from ..units import CONTROLS, Units
 from . import branches as _br
 from . import tracing as _tr
+from .two_patch_family import family as _family
 
 
 def _state(pb, un, branch, control, side, a, eps, P_star, dn, h, flags, U, a_top=0.0, eps_top=0.0, K=None,
@@ -135,17 +137,31 @@ def confined(pb: Problem) -> bool:
 
 
 def two_patch_state(pb: Problem, un: Units, s, control) -> Equilibrium:
-    """A jkrcyl.results.TwoPatchState as an Equilibrium (stability from the second variation)."""
-    stab = _two.stability(pb, s.eps, s.eps_top, s.delta_over_Delta, lin=s._lin)
+    """A jkrcyl.results.TwoPatchState as an Equilibrium (stability and total potential from the law's two-patch
+    family: JKR's second variation, the cohesive law's zone-end-held energy)."""
+    fam = _family(pb)
     return _state(pb, un, "two-patch", control, "both", s.a, s.eps, s.P_star, s.delta_over_Delta, 0.0,
-                  (s.feasible, *stab), pb.scale * s.energy, a_top=s.a_top, eps_top=s.eps_top,
-                  extra={"gap_min_over_Delta": s.gap_min, "G_bot": s.G_bot, "G_top": s.G_top})
+                  (s.feasible, *fam.flags(s)), pb.scale * s.energy, a_top=s.a_top, eps_top=s.eps_top,
+                  extra={"gap_min_over_Delta": s.gap_min, "G_bot": s.G_bot, "G_top": s.G_top},
+                  total=fam.potential(s))
 
 
 def _two_patch_solver(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
-    if not confined(pb):
+    """The registry's two-patch branch, searched by the walker too: a law whose two patches it lands on (JKR)."""
+    return two_patch_states(pb, un, key, target, control) if pb.models("two-patch") else []
+
+
+def two_patch_states(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
+    """The states of the law's traced two-patch branches (any law with 'two-patch-branches'): the two-patch branch
+    of a solve that names it (:func:`solve_normalised` with by_name)."""
+    if not pb.models("two-patch-branches") or pb.rigid_cradle or pb.M <= 0:
         return []
-    return [two_patch_state(pb, un, s, control) for s in _tr.states_at(pb, key, target)]
+    try:
+        states = _family(pb).states_at(key, target)
+    except ValueError as why:          # the law's two-patch family refuses this problem (e.g. a small lambda)
+        warnings.warn(f"two-patch states not searched: {why}", BranchLimitWarning, stacklevel=4)
+        return []
+    return [two_patch_state(pb, un, s, control) for s in states]
 
 
 def full_contact_state(pb: Problem, un: Units, key: str, target: float, control: str):
@@ -211,18 +227,22 @@ def check_branches(branches, pb: Problem = None) -> list:
     for b in names:
         if not isinstance(b, str) or b not in BRANCH_SOLVERS:
             raise ValueError(f"branches: unknown branch {b!r} (choose from {', '.join(BRANCH_SOLVERS)})")
-    for family in ("two-patch", "full-contact", "super-critical"):
-        if pb is not None and any(b.startswith(family) for b in names):
-            pb.require(family, f"the {family} branch is")
+    for prefix, family in (("two-patch", "two-patch-branches"), ("full-contact", "full-contact"),
+                           ("super-critical", "super-critical")):
+        if pb is not None and any(b.startswith(prefix) for b in names):
+            pb.require(family, f"the {prefix} branch is")
     return names
 
 
-def solve_normalised(pb: Problem, un: Units, control: str, target: float, branches=None) -> List[Equilibrium]:
+def solve_normalised(pb: Problem, un: Units, control: str, target: float, branches=None,
+                     by_name: bool = False) -> List[Equilibrium]:
     """Every equilibrium with the held quantity of ``control`` at the normalised target (P*, delta/Delta or
-    delta_work/Delta), sorted by contact size then branch order."""
+    delta_work/Delta), sorted by contact size then branch order.  by_name: the user named the branches (a law
+    whose two-patch branches are traced but not landed on, the cohesive one, answers 'two-patch' only then)."""
     key = CONTROLS[control].normalised
     out = []
     for name in check_branches(branches):
-        out += BRANCH_SOLVERS[name](pb, un, key, target, control)
+        solver_of = two_patch_states if (by_name and name == "two-patch") else BRANCH_SOLVERS[name]
+        out += solver_of(pb, un, key, target, control)
     order = {n: i for i, n in enumerate(BRANCH_SOLVERS)}
     return sorted(out, key=lambda s: (s.size, order[s.branch]))

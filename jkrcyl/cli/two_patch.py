@@ -37,12 +37,16 @@ def run(args):
         return _figure(args)
     pi = inputs.resolve(args)
     param = "lambda" if getattr(args, "lambda_", None) is not None else ""        # the name the user gave the law
-    eq.problem(pi.M, pi.theta, pi.gb, pi.alpha_ratio, s0=pi.s0).require("two-patch", "two-patch states are", param)
+    eq.problem(pi.M, pi.theta, pi.gb, pi.alpha_ratio, s0=pi.s0).require("two-patch-branches", "two-patch states are",
+                                                                         param)
     n = inputs.positive_count("n", args.n, 4)
-    if pi.contact is not None:               # physical columns P [N/m], delta, delta_work [m] too
-        bs = pi.contact.two_patch(n)
-    else:
-        bs = eq.two_patch(pi.M, pi.theta, n, gb=pi.gb, alpha_ratio=pi.alpha_ratio)
+    try:
+        if pi.contact is not None:               # physical columns P [N/m], delta, delta_work [m] too
+            bs = pi.contact.two_patch(n)
+        else:
+            bs = eq.two_patch(pi.M, pi.theta, n, gb=pi.gb, alpha_ratio=pi.alpha_ratio, s0=pi.s0)
+    except ValueError as why:                # the law's message names sigma0: say the name the user gave
+        raise ValueError(str(why).replace("sigma0:", f"{param}:", 1) if param else str(why)) from None
     if args.format == "json":
         clean = lambda v: [None if not math.isfinite(x) else x for x in v.tolist()]
         json.dump({**pi.meta(), "branches": [{"ends": list(b.ends), **{k: clean(v) for k, v in b.table().items()}}

@@ -6,7 +6,8 @@ Dimensional: :class:`Dugdale` (sigma0 [Pa]).  Normalised: :class:`DugdaleEdge`, 
 finite stress in equilibrium (edge coefficient 0, Maugis).  Its single-patch solver is jkrcyl.model.cohesive (the
 contact branches with their zone on either side of the receding limit, traced; the zone-only pin); full contact
 is JKR's bonded pin where the tension stays below s0 (:meth:`DugdaleEdge.bond_strength`,
-jkrcyl.model.full_contact.holds); two patches are not modelled for it.
+jkrcyl.model.full_contact.holds); its two-patch branches are traced (jkrcyl.analysis.cohesive_two_patch, alpha* = 0),
+the walker's landing on them and the confined classification are not modelled.
 """
 from __future__ import annotations
 
@@ -24,7 +25,8 @@ class DugdaleEdge(Edge):
     """The normalised Maugis-Dugdale law: the zone traction s0 = sigma0 R beta*/(4 pi Delta) > 0.
 
     Its branch families: the sub- and super-critical single patch with its zone, the zone alone
-    ('contactless') and the bonded pin ('full-contact', where the tension stays below s0).
+    ('contactless'), the bonded pin ('full-contact', where the tension stays below s0) and the two-patch branches
+    ('two-patch-branches'; not 'two-patch': the walker's landing and the confined classification).
 
     Examples
     --------
@@ -39,7 +41,8 @@ class DugdaleEdge(Edge):
     s0: float
     name = "Maugis-Dugdale"
     param = "sigma0"
-    families = frozenset({"contactless", "super-critical", "full-contact"})
+    families = frozenset({"contactless", "super-critical", "full-contact", "two-patch-branches"})
+    two_patch_family = "CohesiveTwoPatch"
 
     def __post_init__(self):
         object.__setattr__(self, "s0", finite_scalar("s0", self.s0, low=0.0, low_open=True))

@@ -21,8 +21,8 @@ from __future__ import annotations
 import math
 from typing import FrozenSet
 
-#: branch families beyond the sub-critical single patch (which every law has)
-FAMILIES = ("super-critical", "two-patch", "full-contact", "contactless")
+#: families beyond the sub-critical single patch; two-patch: also the walker's landing and the confined classes
+FAMILIES = ("super-critical", "two-patch", "two-patch-branches", "full-contact", "contactless")
 
 
 class Edge:
@@ -36,7 +36,7 @@ class Edge:
     --------
     >>> from jkrcyl.laws import GRIFFITH_EDGE, DugdaleEdge
     >>> GRIFFITH_EDGE.name, sorted(GRIFFITH_EDGE.families)
-    ('JKR', ['full-contact', 'super-critical', 'two-patch'])
+    ('JKR', ['full-contact', 'super-critical', 'two-patch', 'two-patch-branches'])
     >>> DugdaleEdge(s0=0.1).param
     'sigma0'
     """
@@ -44,6 +44,7 @@ class Edge:
     name: str = "edge law"
     param: str = "law"
     families: FrozenSet[str] = frozenset()
+    two_patch_family: str = ""          # its two-patch family's name (jkrcyl.analysis.two_patch_family.REGISTRY)
 
     def single_patch(self, problem: "jkrcyl.model.problem.Problem") -> "SinglePatch":  # pragma: no cover - interface
         """The single-patch solver of a problem with this edge (the model core's only way to the law's states).
@@ -133,8 +134,8 @@ class Edge:
         Examples
         --------
         >>> from jkrcyl.laws import GRIFFITH_EDGE, DugdaleEdge
-        >>> GRIFFITH_EDGE.models("two-patch"), DugdaleEdge(s0=0.1).models("two-patch")
-        (True, False)
+        >>> GRIFFITH_EDGE.models("two-patch"), DugdaleEdge(s0=0.1).models("two-patch-branches")
+        (True, True)
         """
         return family in self.families
 
@@ -162,10 +163,10 @@ class Edge:
         Examples
         --------
         >>> from jkrcyl.laws import DugdaleEdge
-        >>> DugdaleEdge(s0=0.1).require("two-patch", "two_patch() is")
+        >>> DugdaleEdge(s0=0.1).require("two-patch", "confined_events() is")
         Traceback (most recent call last):
         ...
-        ValueError: sigma0: two_patch() is not modelled for the Maugis-Dugdale law (its branch families: ...)
+        ValueError: sigma0: confined_events() is not modelled for the Maugis-Dugdale law (its branch families: ...)
         """
         why = self.not_modelled(family, what, param)
         if why:

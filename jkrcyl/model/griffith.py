@@ -52,7 +52,8 @@ class GriffithEdge(Edge):
 
     name = "JKR"
     param = "law"
-    families = frozenset({"super-critical", "two-patch", "full-contact"})
+    families = frozenset({"super-critical", "two-patch", "two-patch-branches", "full-contact"})
+    two_patch_family = "JKRTwoPatch"
 
     def single_patch(self, problem: "jkrcyl.model.problem.Problem") -> "ClosedForm | Collocation":
         """The single-patch solver: the closed forms where alpha* = 0, the collocation solver otherwise.

@@ -83,15 +83,23 @@ class FixedArcs:
         sy = self.sys = _arcs.Arcs([(0.0, self.eps), (math.pi, self.eps_top)], kernel, int(n))
         if sy.A.shape[0] != 2 * sy._xt.size or not np.all(np.isfinite(sy.A)):
             raise ValueError(f"eps = {eps!r}, eps_top = {eps_top!r}: the collocation system is not finite")
-        self.lu = lu_factor(sy.A, check_finite=False)
-        U = lu_solve(self.lu, sy._rhs)
+        self.factor()
+        U = self.solve(sy._rhs)
         self.u0, self.u1 = U[:, 0], U[:, 1]
         self.points = _wrap(np.concatenate([c + e * sy._xt for c, e in zip(sy._ac, sy._ae)]))
         self.k0, self.k1 = sy.edge(self.u0), sy.edge(self.u1)
 
+    def factor(self):
+        """LU of the collocation matrix (a subclass may precondition with a neighbour's instead)."""
+        self.lu = lu_factor(self.sys.A, check_finite=False)
+
+    def solve(self, rhs):
+        """A^-1 rhs."""
+        return lu_solve(self.lu, rhs)
+
     def zone_unit(self, zones):
         """The solution of a unit zone traction (s0 = 1) on the zone set: rhs -Z_C at the collocation points."""
-        return lu_solve(self.lu, -_co.zone_displacement(self.points, zones, self.kernel))
+        return self.solve(-_co.zone_displacement(self.points, zones, self.kernel))
 
     def gap(self, phi, dn, u, zones, s0):
         """h/Delta at exterior angles phi."""

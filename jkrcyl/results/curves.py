@@ -207,7 +207,9 @@ class TwoPatchCurve:
         G/w at the bottom and top edges (1 on the branch).
     ends : tuple of str
         How each end finishes: 'single' (a_top -> 0: the single-patch state with h(pi) = 0), 'mirror' (a -> 0:
-        the upside-down single patch), 'full' (eps + eps_top -> pi: into full contact) or 'loop' (a closed curve).
+        the upside-down single patch), 'full' (eps + eps_top -> pi: into full contact) or 'loop' (a closed curve);
+        under the Maugis-Dugdale law 'single'/'mirror' end at an arc of 1e-4 rad (its zone stays: a bridge), and
+        'unresolved' where the states stop short (jkrcyl.analysis.cohesive_two_patch).
 
     Examples
     --------

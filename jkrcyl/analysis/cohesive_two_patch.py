@@ -1,0 +1,202 @@
+"""The Maugis-Dugdale law's two-patch family through the model core: the branches traced
+(jkrcyl.numerics.cohesive_two_branch: along JKR's, each state warm-started from its neighbour), a state at a given
+half-angle (cold, from JKR's state: jkrcyl.numerics.cohesive_two.solve's guess), the states at a load or an
+approach, and the landing of a path on the branch (:meth:`CohesiveTwoPatch.land`).
+
+Results are JKR's types (jkrcyl.results.TwoPatchCurve, TwoPatchState), normalised as section 6 (P* = p/vartheta);
+for this law G_bot, G_top are the zones' J-integrals over w, s0 h(zone end)/w = h(c)/h0 (1 on the branch: the
+contact edges have k = 0), gap_min the smallest gap outside both arcs, and TwoPatchState.energy is U* plus the
+zones' interface energy, so that for both laws the total potential is energy - 2 M^2 vartheta (eps + eps_top)
+(units 4 pi Delta^2 vartheta/beta*).  Branch ends: JKR's labels where reached ('single': the top arc shrinks to
+END_ARC, its zone staying as a bridge; 'mirror' the same upside down), 'unresolved' where the states stop short
+(e.g. the zones meet near full contact at small lambda).
+
+alpha* = 0 only (the two-arc cohesive collocation); elsewhere a ValueError naming alpha_ratio.
+"""
+from __future__ import annotations
+
+import functools
+import math
+
+import numpy as np
+
+from .._validate import count
+from ..numerics import cohesive as _co
+from ..numerics import cohesive_two as _ct
+from ..numerics import cohesive_two_branch as _cb
+from ..numerics import roots as _roots
+from ..model import two_patch as _two
+from ..model.problem import Problem
+from ..model.single_patch import solver
+from ..results import TwoPatchCurve, TwoPatchState
+from . import tracing as _tr
+
+DEFAULT_POINTS = 12       # scaffold points per branch (JKR's branch resampled; benchmarks/bench_cohesive_two.py)
+GAP_SAMPLES = 256         # exterior angles of the gap check
+
+
+class CohesiveTwoPatch:
+    """The two-patch family of a problem with the Maugis-Dugdale edge (module docstring)."""
+
+    def __init__(self, pb: Problem):
+        _two.require_finite_theta(pb)
+        _cb.require_alpha_zero(pb.alpha_ratio)
+        self.pb = pb
+        self.jkr = Problem(pb.M, pb.theta, pb.gb, pb.alpha_ratio)
+        m, s0, kernel = _co._law(pb.m, pb.edge.s0, pb.theta, pb.gb, 0.0)
+        self.law = _cb.BranchLaw(m, s0, kernel)
+
+    # --- states ---------------------------------------------------------------------------------------------
+    def result(self, st) -> TwoPatchState:
+        """A numerics TwoPatchCohesive as a TwoPatchState (module docstring); _lin keeps the numerics state."""
+        pb, th = self.pb, self.pb.scale
+        ends = st.fields.gap(np.array([st.c, math.pi - st.c_top])) / st.h0_over_Delta
+        total = _ct.potential(st)
+        return TwoPatchState(M=pb.M, theta=pb.theta, gb=pb.gb, eps=float(st.eps), eps_top=float(st.eps_top),
+                             P_star=float(st.p) / th, B_star=float(st.B) / th,
+                             delta_over_Delta=float(st.delta_over_Delta), G_bot=float(ends[0]),
+                             G_top=float(ends[1]),
+                             energy=float(total + 2 * pb.m ** 2 * (st.eps + st.eps_top)) / th,
+                             gap_min=gap_min(st), alpha_ratio=pb.alpha_ratio, _lin=st)
+
+    def flags(self, s: TwoPatchState):
+        """(stable_load, stable_grip, stable_grip_work) of a state (cohesive_two_branch.flags)."""
+        with _cb.one_blas_thread():
+            return _cb.flags(_cb.jacobian(self.law, s._lin), self.pb.work_shift)
+
+    def potential(self, s: TwoPatchState) -> float:
+        """The total potential in the kernel scale (units 4 pi Delta^2/beta*)."""
+        return _ct.potential(s._lin)
+
+    @functools.cached_property
+    def n(self) -> int:
+        """Nodes per arc of every state of the problem: from the largest arc of JKR's branches (one
+        discretisation: a state solved alone equals the traced one); ValueError naming sigma0 (too thin zones,
+        or too thick: cohesive_two_branch.branch_nodes)."""
+        points = [p for p, _ in _tr.traced(self.jkr)]
+        return _cb.branch_nodes(np.vstack(points) if points else np.full((1, 2), 0.1), self.law.m, self.law.s0)
+
+    def state(self, eps=None, eps_top=None, guess=None) -> TwoPatchState:
+        """The equilibrium with one half-angle given, the other from guess: Newton from JKR's state there (guess
+        for JKR's secant) -- cold, independent of any traced branch; the node count of the branches."""
+        ref = _two.solve(self.jkr, eps_top=eps_top, eps=eps, guess=guess)
+        n = self.n
+        held, value = (1, ref.eps_top) if eps is None else (0, ref.eps)
+        return self.at(held, value, (ref.eps, ref.eps_top)[1 - held], n)
+
+    def at(self, held, value, guess, n, d0=None) -> TwoPatchState:
+        """The state with half-angle ``held`` (0: eps, 1: eps_top) at value, the other from guess, n nodes per
+        arc; ValueError naming guess where none is found."""
+        d0 = np.full(2, _co.dugdale_zone(self.law.m, self.law.s0)) if d0 is None else d0
+        try:
+            with _cb.one_blas_thread():
+                st, _ = _cb.solve_at(self.law, held, value, guess, d0, n)
+        except _cb.NotFound:
+            raise ValueError(f"guess: no cohesive two-patch state near {guess!r} (the other half-angle at "
+                             f"{value!r})") from None
+        return self.result(st)
+
+    # --- branches -------------------------------------------------------------------------------------------
+    def branches(self, n=None) -> tuple:
+        """Every branch (JKR's, followed under the law), each a TwoPatchCurve; n: points per scaffold branch
+        (default DEFAULT_POINTS; the ends at an axis add the states down to END_ARC)."""
+        n = DEFAULT_POINTS if n is None else count("n", n, low=4, high=1000)
+        return _branches(self, n)
+
+    def curve(self, states, jacobians, ends) -> TwoPatchCurve:
+        pb = self.pb
+        res = [self.result(s) for s in states]
+        fl = np.array([_cb.flags(J, pb.work_shift) for J in jacobians], dtype=bool).reshape(-1, 3)
+        arr = lambda k: np.array([getattr(s, k) for s in res])
+        sv = solver(self.jkr)
+        eps, et = arr("eps"), arr("eps_top")
+        P, d = arr("P_star"), arr("delta_over_Delta")
+        a, at = np.tan(eps / 2), np.tan(et / 2)
+        return TwoPatchCurve(M=pb.M, theta=pb.theta, gb=pb.gb, a=a, a_top=at, eps=eps, eps_top=et,
+                             eps_star=sv.eps_star(a), eps_top_star=sv.eps_star(at), P_star=P, delta_over_Delta=d,
+                             delta_work_over_Delta=d + pb.work_shift * pb.scale * P, gap_min=arr("gap_min"),
+                             feasible=arr("gap_min") >= -1e-9, stable_load=fl[:, 0], stable_grip=fl[:, 1],
+                             stable_grip_work=fl[:, 2], G_bot=arr("G_bot"), G_top=arr("G_top"), ends=tuple(ends),
+                             alpha_ratio=pb.alpha_ratio)
+
+    # --- states at a load or an approach --------------------------------------------------------------------
+    def states_at(self, key: str, target: float) -> list:
+        """The states where the field key (P_star, delta_over_Delta, delta_work_over_Delta) equals target: sign
+        changes along each traced branch, refined by Brent's method in the half-angle that varies most over the
+        bracket (the other held at its interpolated value)."""
+        out = []
+        for b in self.branches():
+            v = np.asarray(getattr(b, key)) - target
+            for i in _roots.sign_changes(v):
+                s = self._refine(b, i, key, target, self.n)
+                if s is not None:
+                    out.append(s)
+        return out
+
+    def _refine(self, b, i, key, target, n):
+        """The state in the bracket (i, i + 1) of branch b: the half-angle that varies most held at x, the other
+        solved from the chord; Brent in x on key - target.  None where the bracket holds no state."""
+        e, et = b.eps[i:i + 2], b.eps_top[i:i + 2]
+        held = int(abs(math.log(et[1] / et[0])) > abs(math.log(e[1] / e[0])))
+        xs, ys = (e, et) if held == 0 else (et, e)
+        state = lambda x: self.at(held, x, ys[0] + (ys[1] - ys[0]) * (x - xs[0]) / (xs[1] - xs[0]), n)
+
+        def f(x, _):
+            s = state(x)
+            val = (s.delta_over_Delta + self.pb.work_shift * self.pb.scale * s.P_star
+                   if key == "delta_work_over_Delta" else getattr(s, key))
+            return val - target
+        try:
+            return state(_roots.brent(f, min(xs), max(xs), xtol=1e-13 * max(xs)))
+        except ValueError:
+            return None
+
+    # --- the walker's landing ---------------------------------------------------------------------------------
+    def land(self, control: str, value: float):
+        """Where a path that reaches the branch with the held quantity of control ('load': P*, 'grip':
+        delta/Delta, 'grip-work') at value lands: the states of the traced branches there, stable under the
+        control first, then by contact size.  A list of (TwoPatchState, (stable_load, stable_grip,
+        stable_grip_work)); [] where the branch does not reach the value."""
+        key = {"load": "P_star", "grip": "delta_over_Delta", "grip-work": "delta_work_over_Delta"}.get(control)
+        if key is None:
+            raise ValueError(f"control must be 'load', 'grip' or 'grip-work', got {control!r}")
+        which = ("load", "grip", "grip-work").index(control)
+        got = [(s, self.flags(s)) for s in self.states_at(key, float(value))]
+        return sorted(got, key=lambda sf: (not sf[1][which], -(sf[0].eps + sf[0].eps_top)))
+
+
+@functools.lru_cache(maxsize=16)
+def of(pb: Problem) -> CohesiveTwoPatch:
+    """The two-patch family of a problem with the Maugis-Dugdale edge, cached per problem (its traced branches
+    with it)."""
+    return CohesiveTwoPatch(pb)
+
+
+def land_two_patch(pb: Problem, control: str, value: float) -> list:
+    """For the walker (jkrcyl.analysis.path) where a path under the law reaches the two-patch branch (the top
+    closes): the states of the traced branches with the held quantity of control ('load': P*, 'grip':
+    delta/Delta, 'grip-work': delta_work/Delta) at value, stable under the control first, then the larger
+    contact first -- a list of (TwoPatchState, (stable_load, stable_grip, stable_grip_work)); [] where the
+    branch does not reach the value (CohesiveTwoPatch.land).  ValueError naming sigma0 or alpha_ratio where the
+    law's branches are not followed (cohesive_two_branch.branch_nodes, require_alpha_zero).  E.g. at M = 0.2,
+    vartheta = 1, lambda = 20: ``land_two_patch(pb, "load", -0.5)`` gives one state at P* = -0.5, unstable under
+    every control (tests/test_cohesive_two_patch_branch.py).
+    """
+    return of(pb).land(control, value)
+
+
+def gap_min(st) -> float:
+    """min h/Delta outside both arcs (Chebyshev points of the open gap, clustered at the arc ends)."""
+    return float(np.min(st.fields.gap(_two.exterior_angles(st.eps, st.eps_top, GAP_SAMPLES))))
+
+
+@functools.lru_cache(maxsize=16)
+def _branches(fam: CohesiveTwoPatch, n: int) -> tuple:
+    out = []
+    for b in _tr.branches(fam.jkr, n):
+        points = np.column_stack([b.eps, b.eps_top])
+        with _cb.one_blas_thread():
+            t = _cb.trace(fam.law, points, b.ends, fam.n)
+        if t.states:
+            out.append(fam.curve(t.states, t.jacobians, t.ends))
+    return tuple(out)
