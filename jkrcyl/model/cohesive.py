@@ -29,9 +29,8 @@ zone end grows with the zone).  The total potential (elastic + Dugdale interface
 dE = p d(delta/Delta) along the branches.  A zone reaching round at the touch end that stops reaching round by
 a jump of its first zone-end root (jkrcyl.numerics.cohesive_branch.top_opens) is an S-shaped branch -- the round
 zone, then the root near the top back in eps to a fold, then the first root -- traced whole
-(jkrcyl.numerics.cohesive_round), a narrow S or a top bridge.  Full contact is the bonded pin of jkrcyl.model.full_contact
-(where the tension stays below s0).  Not modelled: two patches (jkrcyl.laws.dugdale: the law's families),
-top-zone bridges (jkrcyl.numerics.cohesive_zones finds them; :attr:`unmodelled` says so).
+(jkrcyl.numerics.cohesive_round); a narrow S or a top bridge is refused (:attr:`unmodelled`).  Full contact is the
+bonded pin of jkrcyl.model.full_contact; two patches: jkrcyl.analysis.cohesive_two_patch.
 """
 from __future__ import annotations
 
@@ -284,14 +283,10 @@ class Cohesive(SinglePatch):
         return None
 
     def grows_under_pull(self, a, control, towards=0):
-        """At a fold, whether a further pull makes the contact grow.  Reached by a walk along stable states
-        (towards = the sign of a's change along it): the state goes on past the fold the way the walk went (the
-        stable side is behind it), so the contact grows where eps rises that way.  Otherwise the branch's tangent
-        in the direction a further pull drives it: under load the approach falls, under grip the load rises
-        towards 0.  The two agree at an ordinary fold; where the approach turns with the load (every slope along
-        the branch vanishing together: an elastic pin nu_I 0.45 in a rigid hole, h0 1.47 Delta, lambda 2.47,
-        tests/test_gap_stop.py) the tangent's sign is noise and only the walk's direction says.  The zone-only
-        pin (a <= 1) has no contact to grow."""
+        """At a fold, whether a further pull makes the contact grow: eps rising the way the walk went (towards,
+        the sign of a's change: the stable side is behind it); without a walk, the tangent's (under load the
+        approach falls, under grip the load rises).  They agree but where every slope vanishes at the fold
+        (tests/test_gap_stop.py, test_fold_direction.py).  The zone-only pin (a <= 1) has no contact."""
         if a <= 1:
             return False
         (deps, _), pt = self._where(a)[2], self.point(a)
