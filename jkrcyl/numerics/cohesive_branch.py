@@ -77,6 +77,7 @@ class Law:
         self.eps_hi = min(math.pi - 0.05, 2 * math.atan(_one.receding_contact(theta, gb, ar)) * (1 - EPS_MARGIN))
         self.p_cap = P_CAP * self.m ** (4 / 3)
         self.fixed = functools.lru_cache(maxsize=256)(self._fixed)
+        self.residuals = {}          # the zone-end residual by (log eps, log(c - eps)): cohesive_follow.residual
 
     def nodes(self, eps):
         """Nodes as a function of eps only (a smooth residual along the trace: jkrcyl.numerics.cohesive_pull_off)."""

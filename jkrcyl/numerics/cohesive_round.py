@@ -130,6 +130,9 @@ def near_top(law, eps_open):
     else:
         return None, f"the narrow S-shaped branch does not return past its opening eps = {eps_open:.6g} rad"
     j = int(np.argmin(es))
+    if not (np.all(np.diff(es[:j + 1]) < 0) and np.all(np.diff(es[j:]) > 0)):     # one fold, else another root
+        return None, (f"the narrow S-shaped branch next to its opening eps = {eps_open:.6g} rad does not turn "
+                      "back in eps once")
     if 0 < j < len(es) - 1:              # the fold in eps between the root near the top and the first root
         lx = [math.log(xs[j - 1]), math.log(xs[j]), math.log(xs[j + 1])]
         at = lambda v: _eps_at(law, math.pi - math.exp(v), es[j], abs(es[j + 1] - es[j - 1]) + 1e-12)
