@@ -309,16 +309,21 @@ def _zone_end_alone(eps, law, c_near, span):
 @example(E=math.inf, nu=0.0, E_I=math.inf, nu_I=0.01, h0=1.75, lam=0.4571893319093754)
 @example(E=math.inf, nu=0.0, E_I=math.inf, nu_I=0.0, h0=1.25, lam=1.75)
 @example(E=math.inf, nu=0.0, E_I=math.inf, nu_I=0.0, h0=1.5, lam=1.5)
+# the narrow S of test_a_narrow_s_is_told_apart (M 0.70, lambda 1.47: h0 = m^2/s0, s0 = zone_strength(1.47, m))
+@example(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3, h0=1.6912457176049538, lam=1.47)
+# found by hypothesis (two rigid bodies): an S whose fold lies 7e-4 below the opening, past the scan's jump (the
+# continuation's first step cut across it: one family at the mid contact); traced next to the top by pi - c
+@example(E=math.inf, nu=0.0, E_I=math.inf, nu_I=0.0, h0=1.5, lam=1.5625)
 def test_s_branches_over_material_pairs(E, nu, E_I, nu_I, h0, lam):
-    """Random pairs, rigid bodies included, where the branch is S-shaped: traced whole; between the turn (the fold
-    in eps between the two zone-end families) and the round zone's opening, the two states solved alone at one
-    contact (:func:`_zone_end_alone`: the zone-end root nearest each traced one) are the traced ones to 1e-8; no
-    pull from first contact.  Where the round zone stays within the range up to the receding limit the branch is
-    that round zone alone (the zone-end pair joins it past a_crit)."""
+    """Random pairs, rigid bodies included, where the branch is S-shaped (narrow or not): traced whole; between
+    the turn (the fold in eps between the two zone-end families) and the round zone's opening, the two states
+    solved alone at one contact (:func:`_zone_end_alone`: the zone-end root nearest each traced one) are the
+    traced ones to 1e-8; no pull from first contact.  Where the round zone stays within the range up to the
+    receding limit the branch is that round zone alone (the zone-end pair joins it past a_crit)."""
     c = cohesive_contact(E, nu, E_I, nu_I, h0, lam)
     law = law_of(c)
     opens = cb.opens_of(cb.Law(*law))
-    assume(opens is not None and opens[2] == "S-shaped branch")
+    assume(opens is not None and opens[2] in ("S-shaped branch", "narrow S-shaped branch"))
     sv, a, s = _table(c)
     assert sv._sub.reason == "" and sv.unmodelled == ""
     assert c.pull_off("load").reason.startswith("no adherence force")

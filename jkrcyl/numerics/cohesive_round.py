@@ -14,12 +14,13 @@ larger contacts.  Two folds in eps, at eps_open and eps_jump: the branch is
 traced here as one polyline in x = (log eps, log(c - eps)): the round part at the constant x1 = log(pi - eps_open)
 (so its arclength is log eps, the parameter of a round-zone branch, and its last point is the opening), then the
 zone part by the continuation of jkrcyl.numerics.cohesive_follow from c = pi - START_DC at the opening, the
-tangent oriented towards a shorter zone.  On a narrow S (the fold ~3e-4 below the opening in eps, the zone end
-there within ~1e-2 of pi: cohesive_branch.top_opens) the continuation's first step would cut across both turns,
-so the zone part next to the top is parametrised by x = pi - c instead (:func:`near_top`: eps(x) is single-valued
-there, falling from the opening along c2 to the fold and rising along c1), its points geometric in x from
-TOP_FIRST, the fold refined and kept as a point, and the continuation starts past the opening on c1.  The round
-prefix's points have c = pi (Traced reads n_round).
+tangent oriented towards a shorter zone.  Where the S is narrow (its fold within ~1e-3 of the opening in eps, the
+zone end there within ~1e-2 of pi: cohesive_branch.top_opens 'narrow S-shaped branch', and an S whose fold lies
+just past the scan's jump) that first step would cut across both turns, so wherever eps is single-valued in
+x = pi - c next to the top (falling from the opening along c2 to the fold, rising along c1 past the opening) the
+zone part there is traced by x instead (:func:`near_top`: points geometric in x from TOP_FIRST, the fold refined
+and kept as a point) and the continuation starts from its last point.  The round prefix's points have c = pi
+(Traced reads n_round).
 """
 import math
 
@@ -75,12 +76,15 @@ def trace(law, eps_jump, inside, top_gap):
     eps = np.geomspace(law.eps_lo, eps_open, n)
     eps[-1] = eps_open
     rounded = np.column_stack([np.log(eps), np.full(n, x1)])
-    if eps_open < eps_jump:              # a narrow S: the zone part near the top parametrised by pi - c
-        near, why = near_top(law, eps_open)
-        if why:
-            return rounded, "zone", why, n
+    # the zone part next to the top by pi - c where eps(pi - c) is single-valued through the fold (a narrow S, and
+    # any S whose fold lies within TOP_PAST of the opening: the continuation's first step would cut across it);
+    # else (a wide S, c turning along the root near the top) the continuation from c = pi - START_DC
+    near, why = near_top(law, eps_open)
+    if not why:
         y, prev = near[-1], near[-1] - near[-2]
         rounded = np.vstack([rounded, near[:-1]])
+    elif eps_open < eps_jump:            # a narrow S not traced next to the top: said so
+        return rounded, "zone", why, n
     else:
         y, prev = _zone_start(law, eps_open), np.array([-1.0, 0.0])
     if y is None:
@@ -114,10 +118,13 @@ def near_top(law, eps_open):
     xs, es = [], []
     x, guess = TOP_FIRST, eps_open
     while x < TOP_MAX:
-        width = 1e-12 * eps_open if len(es) < 2 else max(abs(es[-1] - es[-2]), 1e-12 * eps_open)
-        if len(es) >= 2:                 # linear in log x from the last two points
-            guess = es[-1] + (es[-1] - es[-2]) * math.log(x / xs[-1]) / math.log(xs[-1] / xs[-2])
+        steps = np.abs(np.diff(es[-3:]))
+        width = max(steps.max(initial=0.0), 1e-12 * eps_open)
+        if len(es) >= 2:                 # x geometric: linear (quadratic) in the index from the last two (three)
+            guess = 2 * es[-1] - es[-2] + (es[-1] - 2 * es[-2] + es[-3] if len(es) >= 3 else 0.0)
         e = _eps_at(law, math.pi - x, guess, width)
+        if e is not None and len(es) >= 3 and abs(e - guess) > 8 * width:     # another family's root: not this one
+            e = None
         if e is None:
             return None, (f"the cohesive branch could not be followed beyond the round zone's opening at eps = "
                           f"{eps_open:.6g} rad: no contact with its zone end at pi - {x:.3g} rad near eps = "
@@ -130,7 +137,7 @@ def near_top(law, eps_open):
     else:
         return None, f"the narrow S-shaped branch does not return past its opening eps = {eps_open:.6g} rad"
     j = int(np.argmin(es))
-    if not (np.all(np.diff(es[:j + 1]) < 0) and np.all(np.diff(es[j:]) > 0)):     # one fold, else another root
+    if not (0 < j and np.all(np.diff(es[:j + 1]) < 0) and np.all(np.diff(es[j:]) > 0)):  # one fold, else not an S
         return None, (f"the narrow S-shaped branch next to its opening eps = {eps_open:.6g} rad does not turn "
                       "back in eps once")
     if 0 < j < len(es) - 1:              # the fold in eps between the root near the top and the first root
