@@ -26,6 +26,8 @@ poisson = st.one_of(st.just(0.0), st.floats(0.01, 0.49))
 @given(E=modulus, nu=poisson, E_I=modulus, nu_I=poisson, h0=st.floats(0.9, 2.1), lam=st.floats(0.2, 3.0))
 # the S-shaped branch of tests/test_cohesive_s_branch.py (identical bodies, nu 0.3, M = 0.45, lambda = 1)
 @example(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3, h0=1.3747437098080626, lam=1.0)
+# the narrow S of tests/test_cohesive_s_branch.py (M 0.70, lambda 1.47: h0 = m^2/s0, s0 = zone_strength(1.47, m))
+@example(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3, h0=1.6912457176049538, lam=1.47)
 # found by hypothesis: h0 just below Delta (the free range and the floating one both hold the centred pin), the
 # map said 'floats' and the walker snapped in (two rigid bodies; a rigid pin in a soft cradle)
 @example(E=math.inf, nu=0.01, E_I=math.inf, nu_I=0.0, h0=1.0, lam=1.822483711054704)

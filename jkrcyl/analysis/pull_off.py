@@ -32,7 +32,7 @@ def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
     """Detachment along the quasi-static path (module docstring) under ``control``."""
     if pb.M == 0:
         return PullOff(control, None, None, None, None, "no adhesion (w = 0): the contact vanishes at P = 0")
-    # a branch not followed whole (a cohesive narrow S) still answers where the pin floats onto it at first
+    # a branch not followed whole (a cohesive top bridge) still answers where the pin floats onto it at first
     # touch: the path back from there does not reach the part not followed
     unmodelled = solver(pb).unmodelled
     if unmodelled and solver(pb).floats_onto() is None:

@@ -13,7 +13,6 @@
   range (c -> c_lo = 0, delta = -h0) to the touch (h(0) = 0), where the contact branch starts
   (:meth:`Cohesive.continues`); a touch beyond pi/2 (the approach's pole) starts from c_lo = pi/2.  Present
   when the contact branch starts from a touch (not when the range reaches round there).
-
 * ``super-critical``: the same curve past the receding limit a_crit (the pole of the load of every law),
   a = 1000 + t, t its arclength from just past the pole (or from the load cap |p| = P_CAP m^(4/3)) towards the
   full circle -- jkrcyl.numerics.cohesive_super.  At finite lambda it turns back in eps at a fold where the zone
@@ -27,10 +26,10 @@ jkrcyl.model.stability with the derivatives D_X of jkrcyl.numerics.cohesive_bran
 dE/dc = 2 (s0 h(c) - m^2); the contactless pin is a saddle under load, stable under grip where the opening at its
 zone end grows with the zone).  The total potential (elastic + Dugdale interface energy - w over the contact) has
 dE = p d(delta/Delta) along the branches.  A zone reaching round at the touch end that stops reaching round by
-a jump of its first zone-end root (jkrcyl.numerics.cohesive_branch.top_opens) is an S-shaped branch -- the round
-zone, then the root near the top back in eps to a fold, then the first root -- traced whole
-(jkrcyl.numerics.cohesive_round); a narrow S or a top bridge is refused (:attr:`unmodelled`).  Full contact is the
-bonded pin of jkrcyl.model.full_contact; two patches: jkrcyl.analysis.cohesive_two_patch.
+a jump of its first zone-end root (jkrcyl.numerics.cohesive_branch.top_opens) is an S-shaped branch, narrow or
+not (the round zone, the root near the top back in eps to a fold, the first root), traced whole
+(jkrcyl.numerics.cohesive_round); a top bridge is refused (:attr:`unmodelled`).  Full contact: the bonded pin of
+jkrcyl.model.full_contact (tension below s0); two patches: jkrcyl.analysis.cohesive_two_patch.
 """
 from __future__ import annotations
 
@@ -336,14 +335,11 @@ class Cohesive(SinglePatch):
     @functools.cached_property
     def unmodelled(self):
         """Why the analyses cannot follow the branch ('' when they can): the trace stopped before the branch's end
-        (jkrcyl.numerics.cohesive_follow says where and why), or its zone stops reaching round by a jump to a top
-        bridge (jkrcyl.numerics.cohesive_branch.top_opens; an S-shaped branch is traced: kind 'zone')."""
+        (cohesive_follow says why), or its zone jumps to a top bridge (cohesive_branch.top_opens)."""
         if self._sub.reason:                 # the trace stopped before the branch's end: no silent answer
             return self._sub.reason
-        if self._sub.kind != "all":          # a zone end all along, or an S-shaped branch traced whole
-            return ""
-        opens = _cb.opens_of(self.law)       # None for h0 >= 2 Delta: no state pulls, nothing to follow
-        return "" if opens is None else _cpo.jump_reason(opens)
+        opens = _cb.opens_of(self.law) if self._sub.kind == "all" else None     # 'zone': an S traced whole
+        return "" if opens is None else _cpo.jump_reason(opens)             # None: h0 >= 2 Delta, nothing pulls
 
     def floating(self):
         """(lo, hi) of delta/Delta of the pin floating in a range that reaches round (p = 0), or None."""

@@ -77,6 +77,7 @@ class Law:
         self.eps_hi = min(math.pi - 0.05, 2 * math.atan(_one.receding_contact(theta, gb, ar)) * (1 - EPS_MARGIN))
         self.p_cap = P_CAP * self.m ** (4 / 3)
         self.fixed = functools.lru_cache(maxsize=256)(self._fixed)
+        self.residuals = {}          # the zone-end residual by (log eps, log(c - eps)): cohesive_follow.residual
 
     def nodes(self, eps):
         """Nodes as a function of eps only (a smooth residual along the trace: jkrcyl.numerics.cohesive_pull_off)."""
@@ -120,12 +121,12 @@ def top_opens(law, points=ROUND_SCAN):
     onto the first root (traced whole: jkrcyl.numerics.cohesive_round, where the round zone ends past the jump);
     'narrow S-shaped branch' where the round zone has reached the range already at the jump the scan sees (h(pi)
     >= (1 - NARROW) h0 there: at M 0.70, lambda 1.47 (gb 1/2.8) the two zone-end roots near the top, pi - c =
-    1e-3 and 2e-2 at 1e-4 below the opening, meet ~3e-4 below it in eps: the continuation's steps cut across
-    that S, not traced); 'top bridge' -- beside the top (h has a local minimum at pi), so the zone would part
-    beside the top and keep a zone at the top apart from the bottom one (not traced; none found yet: the two
-    cases once called so, M 0.70 at lambda 1.47 and M 0.093 at lambda 0.05, are S-shaped).  A scan of
-    ``points`` contacts (geometric in eps up to eps_hi: the top gap grows with the contact), the first short one
-    bisected to 1e-10 in log eps."""
+    1e-3 and 2e-2 at 1e-4 below the opening, meet ~3e-4 below it in eps: traced with the zone part next to the
+    top parametrised by pi - c, jkrcyl.numerics.cohesive_round.near_top); 'top bridge' -- beside the top (h has
+    a local minimum at pi), so the zone would part beside the top and keep a zone at the top apart from the
+    bottom one (not traced; none found yet: the two cases once called so, M 0.70 at lambda 1.47 and M 0.093 at
+    lambda 0.05, are S-shaped).  A scan of ``points`` contacts (geometric in eps up to eps_hi: the top gap grows
+    with the contact), the first short one bisected to 1e-10 in log eps."""
     c_at = lambda e: law.state(e).c
     eps = np.geomspace(law.eps_lo, law.eps_hi, points)
     if c_at(eps[0]) < math.pi:
@@ -154,12 +155,12 @@ def trace(law):
     """The branch as (x points (n, 2), kind, reason): kind 'zone' (x = (log eps, log(c - eps))) or 'all'
     (x = (log eps, 0)); reason '' when the trace ends where the branch leaves its domain (the receding limit, the
     zone reaching round, p = P_CAP m^(4/3)), else why it stopped before (jkrcyl.numerics.cohesive_follow).
-    An S-shaped branch (:func:`top_opens`) is traced whole (jkrcyl.numerics.cohesive_round): kind 'zone' with a
-    fourth item, the number of leading points whose zone is round (c = pi)."""
+    An S-shaped branch, narrow or not (:func:`top_opens`), is traced whole (jkrcyl.numerics.cohesive_round): kind
+    'zone' with a fourth item, the number of leading points whose zone is round (c = pi)."""
     start = law.state(law.eps_lo)
     if start.zones == "all":
         opens = opens_of(law)
-        if opens is not None and opens[2] == "S-shaped branch":
+        if opens is not None and opens[2] in ("S-shaped branch", "narrow S-shaped branch"):
             return _round.trace(law, opens[0], lambda x: _inside(law, x), lambda e: state_values(law, e, math.pi)[2])
         eps = np.geomspace(law.eps_lo, law.eps_hi, ALL_POINTS)
         return np.column_stack([np.log(eps), np.zeros(eps.size)]), "all", ""

@@ -18,6 +18,7 @@ from . import cohesive_kernels as _ck
 from . import cohesive_roots as _cr
 
 LOG_PI = math.log(math.pi)
+MEMO_MAX = 20000        # residuals kept per law (each one float)
 Followed = namedtuple("Followed", ["points", "reason"])
 Followed.__doc__ = """The traced points (n, 2) in (log eps, log(c - eps)) and why the trace ended early ('' when it
 left the domain, as it should: the caller's inside(x) said so)."""
@@ -25,7 +26,17 @@ left the domain, as it should: the caller's inside(x) said so)."""
 
 def residual(law, x):
     """h(c) - h0 at x = (log eps, log(c - eps)) with k = 0 (delta eliminated); NaN off the plane's physical part
-    (eps or eps + d not in (0, pi), a non-finite x): the correctors treat it as no point."""
+    (eps or eps + d not in (0, pi), a non-finite x): the correctors treat it as no point.  Kept per law by x (a
+    step's fold-side check and its tangent read the same points: ~1/6 of a trace's residuals)."""
+    key, memo = (float(x[0]), float(x[1])), law.residuals
+    if key not in memo:
+        if len(memo) > MEMO_MAX:
+            memo.clear()
+        memo[key] = _residual(law, x)
+    return memo[key]
+
+
+def _residual(law, x):
     if not (x[0] < LOG_PI and x[1] < LOG_PI):       # NaN fails too
         return math.nan
     eps, d = math.exp(x[0]), math.exp(x[1])
