@@ -72,13 +72,18 @@ class Refined(_two.FixedArcs):
         self.norm = float(np.max(np.sum(np.abs(A), axis=1)))
 
     def solve(self, rhs):
+        if hasattr(self, "lu"):           # the refinement failed on this pair once: its own LU from then on
+            return super().solve(rhs)
         x = self.ref.solve(rhs)
         for _ in range(REFINE_STEPS):
             r = rhs - self.sys.A @ x
             if np.max(np.abs(r)) <= 64 * np.finfo(float).eps * self.norm * np.max(np.abs(x)):
                 return x
             x = x + self.ref.solve(r)
-        raise NotConverged
+        if not hasattr(self, "u0"):       # in the constructor: the caller (BranchLaw.arcs) factorises afresh
+            raise NotConverged
+        _two.FixedArcs.factor(self)       # later (a zone solution): factorise this pair, the direct solve
+        return super().solve(rhs)
 
 
 class NotConverged(Exception):
