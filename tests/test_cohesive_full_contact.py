@@ -80,10 +80,17 @@ def test_the_bond_holds_below_the_strength_only(lam):
         assert jkr(c).solve(P=P, branches=["full-contact"])[0].feasible
 
 
-def test_the_confined_classification_is_still_refused_by_name():
+@pytest.mark.slow                  # ~30 s: the law's two-patch branches (ConfinedEvents.branches)
+def test_the_confined_classification_through_the_contact_is_jkrs():
+    """M = 0.5, lambda = 50: Contact.confined_events zips into full contact as JKR's (its fold, not at a class
+    boundary), the fold load within 1/lambda^2 of JKR's."""
     c = contact(0.5, 50.0)
-    with pytest.raises(ValueError, match="^sigma0: .*not modelled for the Maugis-Dugdale law"):
-        c.confined_events()
+    got, ref = c.confined_events(), jkr(c).confined_events()
+    assert got.regime == ref.regime == "zip-full" and abs(got.P_fold - ref.P_fold) < 1 / 50.0 ** 2
+
+
+def test_bad_load_on_full_contact():
+    c = contact(0.5, 50.0)
     with pytest.raises(ValueError, match="^P"):
         c.solve(P=math.nan, branches=["full-contact"])
 

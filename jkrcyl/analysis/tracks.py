@@ -151,7 +151,7 @@ class LazyTrack(SingleTrack):
 
 def track(pb: Problem, un: Units, regime: str, side: str, control: str):
     """The track of a single-patch branch: a :class:`LazyTrack` where the solver gives the held values without
-    its table (SinglePatch.table_values, the cohesive law), else jkrcyl.analysis.path.SingleTrack."""
+    its table (SinglePatch.table_values, the cohesive law), else :class:`SingleTrack`."""
     if solver(pb).table_values(regime, "p") is None:
         return SingleTrack(pb, un, regime, side, control)
     return LazyTrack(pb, un, regime, side, control)
