@@ -128,7 +128,8 @@ class Analyses:
         Raises
         ------
         ValueError
-            For a rigid cradle, Delta = 0 or a law without two patches.
+            For a rigid cradle, Delta = 0 or a law without two patches (the Maugis-Dugdale law: naming sigma0
+            where its two-patch branches are not followed, jkrcyl.analysis.cohesive_two_patch).
 
         Examples
         --------
@@ -137,7 +138,7 @@ class Analyses:
         >>> jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m).confined_events().regime
         'detachment'
         """
-        pb = self.problem.require("two-patch", "confined_events() is")
+        pb = self.problem.require("two-patch-branches", "confined_events() is")
         return _confined.confined_events(_two.require_finite_theta(pb))
 
     # --- forward problems and paths (jkrcyl.analysis) -----------------------------------------------------

@@ -80,13 +80,15 @@ def two_patch_state(M: float, theta: float, *, gb: float, eps: Optional[float] =
     return _family(Problem(M, theta, gb, alpha_ratio, edge_of_strength(s0))).state(eps, eps_top, guess)
 
 
-def confined_events(M: float, theta: float, *, gb: float, alpha_ratio: float = 0.0) -> ConfinedEvents:
+def confined_events(M: float, theta: float, *, gb: float, alpha_ratio: float = 0.0,
+                    s0: Optional[float] = None) -> ConfinedEvents:
     """What slow pulling under load control does to the pin in the hole (jkrcyl.analysis.confined).
 
     Parameters
     ----------
-    M, theta, gb, alpha_ratio
-        The problem (:func:`problem`; vartheta finite).
+    M, theta, gb, alpha_ratio, s0
+        The problem (:func:`problem`; vartheta finite; s0: the Maugis-Dugdale law, alpha_ratio = 0, where the
+        top closes the walker landing on the law's traced two-patch branch).
 
     Returns
     -------
@@ -96,14 +98,16 @@ def confined_events(M: float, theta: float, *, gb: float, alpha_ratio: float = 0
     Raises
     ------
     ValueError
-        Naming theta (inf) or a problem parameter.
+        Naming theta (inf), a problem parameter, or s0 where the law's two-patch branches are not followed.
 
     Examples
     --------
     >>> (ev := confined_events(0.3, 1.0, gb=1 / 2.8)).regime, round(ev.P_fold, 4)
     ('detachment', -0.2856)
     """
-    return _confined.confined_events(_two.require_finite_theta(Problem(M, theta, gb, alpha_ratio)))
+    pb = Problem(M, theta, gb, alpha_ratio, edge_of_strength(s0)).require("two-patch-branches",
+                                                                          "confined_events() is")
+    return _confined.confined_events(_two.require_finite_theta(pb))
 
 
 def full_contact(theta: float, P_star: Optional[float] = None, delta_over_Delta: Optional[float] = None, *,

@@ -183,12 +183,11 @@ def test_flags_on_a_fixed_law():
 
 # --- the law interface and bad input ------------------------------------------------------------------------
 def test_the_law_models_the_super_critical_family():
-    """The family is the law's (Edge.models); the confined classification is still refused by name."""
+    """The family is the law's (Edge.models); two patches through their traced branches only (the walker lands
+    on them by the law's own landing: tests/test_cohesive_top_landing.py)."""
     c = contact(0.4, 50.0)
     edge = c.problem.edge
     assert edge.models("super-critical") and not edge.models("two-patch") and edge.models("two-patch-branches")
-    with pytest.raises(ValueError, match="^sigma0: confined_events"):
-        c.confined_events()
     states = c.solve(P=0.3 * c.load_scale, branches=["super-critical", "super-critical-top"])
     assert {s.branch for s in states} == {"super-critical", "super-critical-top"}
     for s in states:

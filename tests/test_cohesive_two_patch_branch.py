@@ -69,12 +69,13 @@ def test_a_state_needs_exactly_one_half_angle():
         EQ.two_patch_state(0.2, THETA, gb=GB, eps=1.0, eps_top=0.3, s0=s0_of(20.0, 0.2))
 
 
-def test_the_confined_classification_and_a_search_of_every_branch_leave_two_patches_out():
-    """Not modelled yet for the law (the walker's landing): confined_events refuses naming sigma0; solve without
-    branches returns no two-patch state (as before), with branches=['two-patch'] it searches them."""
+def test_the_confined_classification_refuses_outside_the_branches_and_a_search_of_every_branch_leaves_them_out():
+    """confined_events follows the law's branches (tests/test_cohesive_top_landing.py): where they are not
+    followed (lambda = 3, zones not small) it refuses naming sigma0; solve without branches returns no two-patch
+    state (as before), with branches=['two-patch'] it searches them."""
     m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
-    c = jkrcyl.Contact(R=10e-3, Delta=1e-6, w=0.05, materials=m, sigma0=1e6)
-    with pytest.raises(ValueError, match="^sigma0: confined_events"):
+    c = jkrcyl.Contact.with_lambda(R=10e-3, Delta=1e-6, w=0.05, materials=m, lambda_=3.0)
+    with pytest.raises(ValueError, match="^sigma0: the two-patch branches"):
         c.confined_events()
     assert c.problem.models("two-patch-branches") and not c.problem.models("two-patch")
 

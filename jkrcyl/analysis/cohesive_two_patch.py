@@ -133,23 +133,60 @@ class CohesiveTwoPatch:
                     out.append(s)
         return out
 
-    def _refine(self, b, i, key, target, n):
-        """The state in the bracket (i, i + 1) of branch b: the half-angle that varies most held at x, the other
-        solved from the chord; Brent in x on key - target.  None where the bracket holds no state."""
-        e, et = b.eps[i:i + 2], b.eps_top[i:i + 2]
+    def along(self, b, i, k, n=None):
+        """(state(x), xs) between points i and k of branch b: the half-angle that varies most held at x (xs: its
+        values at i and k), the other solved from the chord."""
+        e, et = b.eps[[i, k]], b.eps_top[[i, k]]
         held = int(abs(math.log(et[1] / et[0])) > abs(math.log(e[1] / e[0])))
         xs, ys = (e, et) if held == 0 else (et, e)
-        state = lambda x: self.at(held, x, ys[0] + (ys[1] - ys[0]) * (x - xs[0]) / (xs[1] - xs[0]), n)
+        n = self.n if n is None else n
+        return (lambda x: self.at(held, x, ys[0] + (ys[1] - ys[0]) * (x - xs[0]) / (xs[1] - xs[0]), n)), xs
 
-        def f(x, _):
-            s = state(x)
-            val = (s.delta_over_Delta + self.pb.work_shift * self.pb.scale * s.P_star
-                   if key == "delta_work_over_Delta" else getattr(s, key))
-            return val - target
+    def held(self, s, key: str) -> float:
+        """The field key (P_star, delta_over_Delta, delta_work_over_Delta) of a state."""
+        return (s.delta_over_Delta + self.pb.work_shift * self.pb.scale * s.P_star
+                if key == "delta_work_over_Delta" else getattr(s, key))
+
+    def _refine(self, b, i, key, target, n):
+        """The state in the bracket (i, i + 1) of branch b (:meth:`along`); Brent in x on key - target.  None
+        where the bracket holds no state."""
+        state, xs = self.along(b, i, i + 1, n)
         try:
-            return state(_roots.brent(f, min(xs), max(xs), xtol=1e-13 * max(xs)))
+            return state(_roots.brent(lambda x, _: self.held(state(x), key) - target, min(xs), max(xs),
+                                      xtol=1e-13 * max(xs)))
         except ValueError:
             return None
+
+    def fold(self, b, i, k, key: str, sgn: int, target: float = math.inf):
+        """The fold of the field key on branch b between points i and k (a bracket of the largest sgn * key):
+        golden-section search in the held half-angle (:meth:`along`) to 1e-10 of the bracket; (state, 'fold'),
+        or (state, 'target') where the fold lies past target (sgn * (key - target) > 0): the state at target
+        between point i and the fold (Brent)."""
+        state, xs = self.along(b, i, k)
+        x, f = self._golden(state, xs, key, sgn)
+        if sgn * (self.held(f, key) - target) <= 0:
+            return f, "fold"
+        x0 = float(xs[0])
+        r = _roots.brent(lambda z, _: self.held(state(z), key) - target, min(x0, x), max(x0, x),
+                         xtol=1e-13 * max(x0, x))
+        return state(r), "target"
+
+    def _golden(self, state, xs, key, sgn):
+        f = lambda x: -sgn * self.held(state(x), key)
+        lo, hi = sorted(map(float, xs))
+        g = (math.sqrt(5) - 1) / 2
+        x1, x2 = hi - g * (hi - lo), lo + g * (hi - lo)
+        f1, f2 = f(x1), f(x2)
+        while hi - lo > 1e-10 * hi:
+            if f1 < f2:
+                hi, x2, f2 = x2, x1, f1
+                x1 = hi - g * (hi - lo)
+                f1 = f(x1)
+            else:
+                lo, x1, f1 = x1, x2, f2
+                x2 = lo + g * (hi - lo)
+                f2 = f(x2)
+        return 0.5 * (lo + hi), state(0.5 * (lo + hi))
 
     # --- the walker's landing ---------------------------------------------------------------------------------
     def land(self, control: str, value: float):

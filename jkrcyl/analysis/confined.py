@@ -23,9 +23,12 @@ from ..model.problem import Problem
 from ..results import ConfinedEvents
 from . import branches as _br
 from ..units import Units
+from . import forward as _fw
+from . import landing as _land
 from . import path as _path
 from . import pull_off as _po
 from . import tracing as _tr
+from .two_patch_family import family as _family
 
 _DESCENT = {"full": "snap-in-full", "transfer": "snap-in-transfer", "two-patch": "two-patch",
             "single": "two-patch"}
@@ -33,6 +36,11 @@ _DESCENT = {"full": "snap-in-full", "transfer": "snap-in-transfer", "two-patch":
 
 def _onsets(pb: Problem):
     """(eps, P*, delta/Delta, stable under load) of every single-patch state with h(pi) = 0."""
+    if not pb.models("two-patch"):     # a law's branch parameter is not tan(eps/2): its states at the roots of h
+        un = Units.normalised(pb, K_edge=1.0)
+        return tuple(sorted((s.eps, s.P_star, s.delta_over_Delta, s.stable_load) for r in _br.solver(pb).regimes()
+                            if r != _br.ZONE_ONLY for s in _fw.single_patch_states(
+                                pb, un, r, [a for a, _ in _br.roots(pb, r, "h")], "load")))
     out = []
     for e in _tr.onset_angles(pb):
         a = math.tan(e / 2)
@@ -46,7 +54,8 @@ def confined_events(pb: Problem) -> ConfinedEvents:
     """Classify the confined regime of a problem (finite vartheta, M > 0): see the module docstring."""
     _two.require_finite_theta(pb)
     un = Units.normalised(pb, K_edge=1.0)           # normalised: P = P*, delta = delta/Delta
-    bs = _tr.branches(pb)
+    law = not pb.models("two-patch")                # a law landing on its traced branch (the cohesive one)
+    bs = _family(pb, "confined_events() is").branches() if law else _tr.branches(pb)
     grip = [a for r in _br.solver(pb).regimes() for a, kind in _br.stationary_roots(pb, "grip", r)
             if kind == "min" and bool(_br.values_at(pb, r, a).feasible[0])]
     common = dict(onsets=_onsets(pb), grip_detachment=bool(grip),
@@ -65,6 +74,15 @@ def confined_events(pb: Problem) -> ConfinedEvents:
         tension = _full.state(pb, P_star=s.P_star).tension_everywhere if zip_full else None
         return ConfinedEvents(pb.M, pb.theta, "zip-full" if zip_full else "detachment", begin, s.P_star, nan,
                               fold_in_tension=tension, **common)
+    if law:                     # where the walker lands from the onset at that load (jkrcyl.analysis.landing)
+        on = _land.top_onset(pb, un, s, "load")
+        to, _ = _land.land(pb, un, on, "gap", "load", on.P, False)
+        if to is None:
+            raise ValueError(_land.two_patch_refusal(pb) or f"sigma0: no stable state where the top closes at "
+                             f"P* = {on.P_star:.6g} on the law's branches")
+        regime = ("two-patch" if to.branch == "two-patch" else "snap-in-full" if to.branch == "full-contact"
+                  else "snap-in-transfer")
+        return ConfinedEvents(pb.M, pb.theta, regime, begin, nan, on.P_star, **common)
     e_on, P_on, _, _ = min(common["onsets"], key=lambda o: abs(o[0] - s.eps))   # the onset the walk met
     outcome, _ = _two.descend(pb, P_on, e_on, control="load")
     return ConfinedEvents(pb.M, pb.theta, _DESCENT[outcome], begin, nan, P_on, **common)
@@ -77,7 +95,7 @@ def outcomes(pb: Problem, points):
     regime = None
     if any(not p.feasible for p in points):
         regime = ("gap-closes-first" if pb.rigid_cradle or pb.M == 0 or not pb.models("two-patch")
-                  else confined_events(pb).regime)
+                  else confined_events(pb).regime)           # (a law: its confined_events costs its branches)
     return [replace(p, outcome=(regime if not p.feasible else
                                 "zip-full" if _po.grows_under_pull(pb, p.a, "load") else "detachment"))
             for p in points]

@@ -57,6 +57,9 @@ class _Run:
             s, event = self._follow(s, target, leg)
             if event == "target":
                 return s, ""
+            if event == "gap" and not self.pb.models("two-patch"):    # a coarse table: from where the top closes
+                s = _land.top_onset(self.pb, self.un, s, self.control)
+                self.add(s, leg)
             value = s.held()
             short = _short(self.pb, s) if event == "end" else ""
             if short:
@@ -71,6 +74,9 @@ class _Run:
             if to is None:
                 why = self.pb.not_modelled("full-contact", "the contact growing round after a zip (two patches, "
                                            "full contact) is") if kind == "zip" else ""
+                if kind == "top-contact" and not self.pb.models("two-patch"):
+                    why = _land.two_patch_refusal(self.pb) or self.pb.not_modelled(
+                        "two-patch-branches", "the contact at the bottom and the top (two patches) is")
                 return None, f"leg {leg}: no stable state to jump to after the {kind} at {s!r}" + (
                     f" -- {why}" if why else "")
             if kind != "continue":                           # a branch going on as another is no jump

@@ -19,9 +19,9 @@
 With a cohesive (Maugis-Dugdale) edge law the single-patch branches (sub- and super-critical, contactless) are
 the solver's (jkrcyl.model.cohesive), full contact is JKR's bonded pin where the tension stays below sigma0, and
 the two-patch states are those of its traced branches (jkrcyl.analysis.cohesive_two_patch, alpha* = 0), found
-when the user names the branch (Contact.solve(..., branches=['two-patch'])); a search of every branch and the
-walker's leave them out, as the walker does not land on them yet (a law without two-patch branches: a ValueError
-when asked by name).
+when the user names the branch (Contact.solve(..., branches=['two-patch'])); a search of every branch leaves them
+out, the walker landing on them only where the top closes (jkrcyl.analysis.landing.land, from the onset h(pi) = 0)
+(a law without two-patch branches: a ValueError when asked by name).
 
 Stability is that of the control (jkrcyl.units.CONTROLS): fixed load for P, fixed paper's approach for
 delta ('grip'), fixed work-conjugate approach for delta_work ('grip-work').  Signs as in section 6: P and delta

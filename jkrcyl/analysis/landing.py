@@ -14,7 +14,9 @@ from ..model.problem import Problem
 from ..model.single_patch import solver
 from ..units import CONTROLS, Units
 from . import branches as _br
+from . import cohesive_two_patch as _cohesive
 from . import forward as _fw
+from .two_patch_family import family as _family
 
 
 def _other(side):
@@ -101,12 +103,45 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
         if got is None:
             got = nearest([x for x in candidates(names) if x.side == s.side])
         return got, "pull-off"
-    if event == "fold":
-        grow = [x for x in cands if x.size > s.size and x.side in (s.side, "both")]
-        return (min(grow, key=lambda x: x.size), "zip") if grow else (None, "zip")
-    if not pb.models("two-patch"):       # the top closes: the nascent top contact needs two patches
-        return None, "top-contact"
+    if event == "fold":          # a super-critical fold: the contact grows (zips round), else pushed (the round-zone
+        grow = [x for x in cands if x.size > s.size and x.side in (s.side, "both")]    # tail's largest load: the
+        if grow or not up:       # bond at the top breaks) onto the nearest stable state on its side
+            return (min(grow, key=lambda x: x.size), "zip") if grow else (None, "zip")
+        return nearest([x for x in cands if x.side == s.side]), "zip"
+    if not pb.models("two-patch"):       # the top closes: the law's traced two-patch branch, where it has one
+        if not pb.models("two-patch-branches") or two_patch_refusal(pb):
+            return None, "top-contact"
+        two = [_fw.two_patch_state(pb, un, x, control) for x, _ in _cohesive.land_two_patch(pb, control, target)]
+        cands = [x for x in cands if x.branch != "two-patch"] + [x for x in two if x.stable and x.feasible]
+        return _land_on_top_contact(pb, s, cands, control, target, Problem(pb.M, pb.theta, pb.gb)), "top-contact"
     return _land_on_top_contact(pb, s, cands, control, target), "top-contact"
+
+
+def two_patch_refusal(pb: Problem) -> str:
+    """Why the law's traced two-patch branch is not followed on this problem ('' where it is: the law's family
+    refuses it, e.g. the cohesive law's zones too thin or too thick, alpha* != 0)."""
+    try:
+        getattr(_family(pb), "n", None)         # the node count of the law's states: its refusal, if any
+    except ValueError as why:
+        return str(why)
+    return ""
+
+
+def top_onset(pb: Problem, un: Units, s, control: str):
+    """The state of the branch of s where h(pi) = 0 between s (a feasible table point, the walk's 'gap') and its
+    infeasible neighbour with h(pi) <= 0: where the top closes (a law whose table is coarse there, the cohesive
+    one, lands from it); s itself where no such neighbour brackets a root."""
+    regime = s.branch.replace("-top", "")
+    t = _br.table(pb, regime)
+    a, h = np.asarray(t.a), np.asarray(t.h_pi_over_Delta)
+    i = int(np.argmin(np.abs(a - s.a)))
+    for k in (i - 1, i + 1):
+        if 0 <= k < a.size and h[k] <= 0 < h[i]:
+            (lo, flo), (hi, fhi) = sorted(((float(a[i]), float(h[i])), (float(a[k]), float(h[k]))))
+            r = solver(pb).root("h", lo, hi, flo, fhi)
+            if r is not None:
+                return _fw.single_patch_states(pb, un, regime, [r], control, s.side)[0]
+    return s
 
 
 def _zips_round(pb, un, control, target, side):
@@ -133,11 +168,12 @@ def _pull_off_landing(s, cands, control):
     return min(other, key=lambda x: x.size) if other else None
 
 
-def _land_on_top_contact(pb, s, cands, control, target):
+def _land_on_top_contact(pb, s, cands, control, target, jkr=None):
     """The gap at phi = pi closes (h(pi) = 0, the walk's 'gap'): a nascent top contact appears and the edges relax
     at the held value (jkrcyl.model.two_patch.descend); the landing is the candidate where that relaxation ends
     -- full contact, the patch on the other side (the bottom arc vanished), or the two-patch state nearest to
-    the end point."""
+    the end point.  jkr: the problem whose descent predicts it (a law with thin zones: JKR's, its limit)."""
+    pb = pb if jkr is None else jkr
     if s.side == "top":            # the mirror (P* -> -P*, approach -> -2 - approach): solve it at the bottom
         mirrored = -target if control == "load" else -2.0 - target
         outcome, end = _two.descend(pb, mirrored, s.eps, control=control)

@@ -26,6 +26,7 @@ from . import forward as _fw
 from . import landing as _land
 from . import tracing as _tr
 from . import tracks as _tracks
+from .two_patch_family import family as _family
 
 
 def walk(track: "_tracks.SingleTrack", i: int, target: float):
@@ -77,10 +78,15 @@ def _fold_in_cell(track, j: int, k: int, sgn: int):
 
 
 def walk_two_patch(pb: Problem, un: Units, s, target: float, control: str):
-    """On a traced two-patch branch from state s towards target: (visited states, event, end state); states
-    between branch points by linear interpolation of the half-angles, solved afresh."""
+    """On a traced two-patch branch of the law (its family: jkrcyl.analysis.two_patch_family) from state s towards
+    target: (visited points, event, end state).  JKR: states between branch points by linear interpolation of
+    the half-angles, solved afresh, a fold at a branch point; a law whose branch is sampled coarsely (the
+    cohesive one): the target state by Brent and the fold by golden section between branch points."""
+    fam = _family(pb)
+    exact = not pb.models("two-patch")
+    bs = fam.branches() if exact else _tr.branches(pb)
     best = None
-    for b in _tr.branches(pb):
+    for b in bs:
         d = np.hypot(b.eps - s.eps, b.eps_top - s.eps_top)
         if best is None or d.min() < best[0]:
             best = (d.min(), b, int(np.argmin(d)))
@@ -89,7 +95,11 @@ def walk_two_patch(pb: Problem, un: Units, s, target: float, control: str):
     y = np.asarray(getattr(b, ctl.normalised)) * un.per_normalised(control)
     stable = getattr(b, ctl.stable)
     state = lambda e, et: _fw.two_patch_state(pb, un, _tr._two.equilibrium_state(pb, e, et), control)
+    as_eq = lambda x: _fw.two_patch_state(pb, un, x, control)
     sgn = 1 if target > y[i] else -1
+    goal = target / un.per_normalised(control)
+    if exact and sgn * (target - s.held()) <= 0:
+        return [], "target", s
     step = next((k - i for k in (i - 1, i + 1) if 0 <= k < y.size and sgn * (y[k] - y[i]) > 0), None)
     if step is None:
         return [], "fold", s
@@ -97,14 +107,22 @@ def walk_two_patch(pb: Problem, un: Units, s, target: float, control: str):
     while 0 <= j + step < y.size:
         k = j + step
         if sgn * (y[k] - target) >= 0:
+            if exact:
+                return seen, "target", as_eq(fam._refine(b, min(j, k), ctl.normalised, goal, fam.n))
             t = (target - y[j]) / (y[k] - y[j])
             return seen, "target", state(float(b.eps[j] + t * (b.eps[k] - b.eps[j])),
                                          float(b.eps_top[j] + t * (b.eps_top[k] - b.eps_top[j])))
         if not stable[k] or not b.feasible[k] or sgn * (y[k] - y[j]) <= 0:
+            if exact:                    # the fold in (j - step, k): the sampled branch may hide its extremum
+                f, event = fam.fold(b, j - step if j != i else j, k, ctl.normalised, sgn, goal)
+                return seen, event, as_eq(f)
             return seen, "fold", state(float(b.eps[j]), float(b.eps_top[j]))
         j = k
         seen.append((un.physical("load", b.P_star[j]), un.physical("grip", b.delta_over_Delta[j]), "two-patch", b.a[j]))
-    return seen, "fold", state(float(b.eps[j]), float(b.eps_top[j]))
+    if not exact:
+        return seen, "fold", state(float(b.eps[j]), float(b.eps_top[j]))
+    f, event = fam.fold(b, j - step, j, ctl.normalised, sgn, goal)
+    return seen, event, as_eq(f)
 
 
 class PullPath(NamedTuple):

@@ -26,7 +26,8 @@ class DugdaleEdge(Edge):
 
     Its branch families: the sub- and super-critical single patch with its zone, the zone alone
     ('contactless'), the bonded pin ('full-contact', where the tension stays below s0) and the two-patch branches
-    ('two-patch-branches'; not 'two-patch': the walker's landing and the confined classification).
+    ('two-patch-branches'; not 'two-patch', JKR's landing on every jump: the walker lands on the law's branch
+    where the top closes, jkrcyl.analysis.landing).
 
     Examples
     --------

@@ -60,29 +60,31 @@ def one_blas_thread():
 class Refined(_two.FixedArcs):
     """Fixed arcs whose systems are solved by iterative refinement preconditioned with a nearby pair's LU (the
     collocation matrix moves smoothly with the arcs): O(n^2) per solve instead of an O(n^3) LU; a fresh LU where
-    the refinement does not reach the LU's own residual (NotConverged) -- the answers are those of a direct solve
-    to rounding."""
+    the refinement does not reach the LU's own residual -- the answers are those of a direct solve to rounding."""
 
     def __init__(self, eps, eps_top, kernel, n, ref):
         self.ref = ref
         super().__init__(eps, eps_top, kernel, n)
 
     def factor(self):
-        A = self.sys.A
-        self.norm = float(np.max(np.sum(np.abs(A), axis=1)))
+        self.norm = float(np.max(np.sum(np.abs(self.sys.A), axis=1)))
 
     def solve(self, rhs):
-        x = self.ref.solve(rhs)
-        for _ in range(REFINE_STEPS):
-            r = rhs - self.sys.A @ x
-            if np.max(np.abs(r)) <= 64 * np.finfo(float).eps * self.norm * np.max(np.abs(x)):
-                return x
-            x = x + self.ref.solve(r)
-        raise NotConverged
+        if not hasattr(self, "lu"):       # (once the refinement failed on this pair: its own LU from then on)
+            x = self.ref.solve(rhs)
+            for _ in range(REFINE_STEPS):
+                r = rhs - self.sys.A @ x
+                if np.max(np.abs(r)) <= 64 * np.finfo(float).eps * self.norm * np.max(np.abs(x)):
+                    return x
+                x = x + self.ref.solve(r)
+            if not hasattr(self, "u0"):   # in the constructor: the caller (BranchLaw.arcs) factorises afresh
+                raise NotConverged
+            _two.FixedArcs.factor(self)   # later (a zone solution): this pair's LU, the direct solve
+        return super().solve(rhs)
 
 
 class NotConverged(Exception):
-    """The refinement of :class:`Refined` did not converge (the reference pair too far)."""
+    """The refinement of :class:`Refined` did not converge in its constructor (the reference pair too far)."""
 
 
 class BranchLaw(_two._Law):
