@@ -49,4 +49,8 @@ def family(pb: Problem, what: str = "two-patch states are", param: str = ""):
     """The two-patch family of the problem's edge law (cached per problem); ValueError naming the law's parameter
     where its two-patch branches are not modelled, theta where vartheta = inf."""
     pb.require("two-patch-branches", what, param)
-    return REGISTRY[pb.edge.two_patch_family](pb)
+    name = pb.edge.two_patch_family
+    if name not in REGISTRY:        # a law of one's own that models two patches without saying by which family
+        raise ValueError(f"{pb.edge.param}: the {pb.edge.name} law models two patches but names the two-patch "
+                         f"family {name!r}, not one of {sorted(REGISTRY)} (jkrcyl.analysis.two_patch_family)")
+    return REGISTRY[name](pb)
