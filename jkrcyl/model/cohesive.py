@@ -28,7 +28,8 @@ zone end grows with the zone).  The total potential (elastic + Dugdale interface
 dE = p d(delta/Delta) along the branches.  A zone reaching round at the touch end that stops reaching round by
 a jump of its first zone-end root (jkrcyl.numerics.cohesive_branch.top_opens) is an S-shaped branch, narrow or
 not (the round zone, the root near the top back in eps to a fold, the first root), traced whole
-(jkrcyl.numerics.cohesive_round); a top bridge is refused (:attr:`unmodelled`).  Full contact: the bonded pin of
+(jkrcyl.numerics.cohesive_round); a top bridge (a zone beside the top apart from the bottom one: h with a
+local minimum at pi, not met so far) is refused (:attr:`unmodelled`).  Full contact: the bonded pin of
 jkrcyl.model.full_contact (tension below s0); two patches: jkrcyl.analysis.cohesive_two_patch.
 """
 from __future__ import annotations
