@@ -1,0 +1,229 @@
+"""The top bridge of the Maugis-Dugdale law: one contact |phi| < eps with its zone |phi| < c at the bottom and a
+second zone |phi - pi| < c_top at the top, held by its own traction, as a 1-D family.
+
+Notation of jkrcyl.numerics.cohesive (kernel scale: p = P beta*/(4 pi Delta), lengths over Delta, h0 = m^2/s0).
+Where the single patch's gap has a local minimum at phi = pi (JKR's two-patch regime: the pin is drawn to the top
+of the hole) the single-patch states end where h(pi) = h0: below, the law puts traction at the top.  There the
+top-zone family starts with c_top -> 0 (:func:`junction`), and it lies on the single patch's side h(pi) > h0: in
+two dimensions a zone's own traction lowers the gap at its end by ~ 4 s0 c_top log(1/c_top) (the kernel's log),
+more than the flat top's curvature raises it, so a small zone closes its own end h(pi - c_top) = h0 under a
+single-patch gap above h0.  Measured (M 0.1, vartheta 10, gb 1/2.8, lambda 50: the junction at eps 0.0283,
+delta/Delta -1.728): the family runs back in eps with c_top growing until the gap at the top closes, h(pi) = 0
+(eps 0.005, c_top 2.3e-3 ~ h0/(4 s0 log 2), delta/Delta -1.19), where the top contact forms under its zone (the
+law's two patches); at lambda 20 it reaches the touch end (eps -> 0) before the top closes.  Each state is a
+saddle (the top zone grows at a held load or approach: :func:`stable`), the barrier between the single patch and
+two patches, vanishing at the junction: the single patch is a fold there.
+
+Each state solves k = 0 at the contact edge (delta eliminated: jkrcyl.numerics.cohesive.FixedContact.solve),
+h(c) = h0 (the bottom zone end at a fixed contact and c_top: cohesive_roots.zone_end_near, the LU reused) and
+h(pi - c_top) = h0, a scalar root in eps (one LU per iterate); the family is traced in c_top (monotone along it in
+every case met), from CT_START geometrically.  Stability as jkrcyl.numerics.cohesive_two_stability: the energy of
+states whose zone ends are held (grad 2 s0 (h(c_i) - h0)), a minimum where G_ij = d(h(c_i) - h0)/dc_j at the held
+quantity is positive definite.  The total potential: jkrcyl.numerics.cohesive_branch.potential (both zones).
+"""
+import math
+from collections import namedtuple
+
+import numpy as np
+
+from . import cohesive as _co
+from . import cohesive_branch as _cb
+from . import roots as _roots
+
+CT_START = 1e-9           # the first c_top of a trace (its states within ~s0 CT_START of the junction's)
+CT_RATIO = 1.35           # c_top grows by this factor per point
+CT_MAX_POINTS = 400
+EPS_STEP = 1e-7           # bracket search in eps: the first step relative to eps, doubled
+EPS_XTOL = 1e-15          # the eps root to this relative tolerance
+HOLD_STEP = 1e-4          # zone_matrix: central differences, relative to each zone length
+
+TopZoneBranch = namedtuple("TopZoneBranch", ["junction", "states", "end", "onset"])
+TopZoneBranch.__doc__ = """A traced top-zone family (jkrcyl.numerics.cohesive.CohesiveState each, zones 'bottom+top').
+
+junction: the single-patch state where h(pi) = h0 (c_top = 0); states: the family in increasing c_top; end: why
+the trace ended -- 'top closes' (h(pi) reaches 0: onset is that state, the top contact's onset), 'touch' (eps
+reaches the law's smallest traced contact: the family goes on without contact, jkrcyl.numerics.cohesive_zones
+.contactless_states), 'zones meet' (c + c_top -> pi) or 'no root' (the eps root not found next to the last
+state: a fold in c_top)."""
+
+
+def law_of(m, s0, theta, gb, ar=0.0):
+    """The validated law with its node policy and cached fixed contacts (jkrcyl.numerics.cohesive_branch.Law)."""
+    return _cb.Law(m, s0, theta, gb, ar)
+
+
+def fixed_state(law, eps, c_top, d_near):
+    """The state at the contact eps with the top zone c_top (0: none) and its bottom zone end nearest to
+    eps + d_near (k = 0, h(c) = h0), or None when no zone end lies within a factor 100 of d_near."""
+    fc = law.fixed(eps)
+    d = fc.zone_end_near(law.s0, law.h0, d_near, c_top)
+    if d is None or eps + d + c_top >= math.pi:
+        return None
+    zones = _co.zones_of(eps + d, c_top)
+    dn, u = fc.solve(zones, law.s0)
+    return _co._state(eps, eps + d, fc, dn, u, zones, law.m, law.s0, law.kernel, law.gb, fc.sys.n, c_top)
+
+
+def _top_gap(st):
+    """h(pi - c_top) - h0 (h(pi) - h0 without top zone)."""
+    return st.fields.gap(math.pi - st.c_top)[0] - st.h0_over_Delta
+
+
+def _eps_root(law, c_top, eps0, d_near, side):
+    """The state with the top zone c_top whose eps solves h(pi - c_top) = h0, searched from eps0 towards side
+    (+1: larger eps) by a growing bracket, then Brent (to EPS_XTOL relative); None when none is found."""
+    memo = {}
+
+    def f(eps):
+        if eps not in memo:
+            st = fixed_state(law, eps, c_top, d_near)
+            memo[eps] = (math.nan, None) if st is None else (_top_gap(st), st)
+        return memo[eps][0]
+
+    lo, flo = eps0, f(eps0)
+    if not math.isfinite(flo):
+        return None
+    step = EPS_STEP
+    while step < 1.0:
+        hi = eps0 * (1 + side * step) if side > 0 else eps0 / (1 + step)
+        if not law.eps_lo * 0.5 < hi < law.eps_hi:
+            return None
+        fhi = f(hi)
+        if not math.isfinite(fhi):
+            return None
+        if flo * fhi <= 0:
+            a, b = sorted((lo, hi))
+            eps = _roots.brent(lambda x, _: f(x), a, b, (), memo[a][0], memo[b][0], EPS_XTOL * b)
+            f(eps)
+            return memo[eps][1]
+        lo, flo, step = hi, fhi, step * 2
+    return None
+
+
+def junction(law, lo, hi):
+    """The single-patch state where h(pi) = h0 between the contacts lo and hi (h(pi) - h0 changes sign there;
+    the zone end the first root above the Dugdale estimate, as jkrcyl.numerics.cohesive.cohesive_state)."""
+    def f(eps):
+        return law.state(eps).h_pi_over_Delta - law.h0
+    flo, fhi = f(lo), f(hi)
+    if flo * fhi > 0:
+        raise ValueError(f"lo, hi: h(pi) - h0 must change sign between the contacts {lo:g} and {hi:g}")
+    eps = _roots.brent(lambda x, _: f(x), lo, hi, (), flo, fhi, EPS_XTOL * hi)
+    return law.state(eps)
+
+
+def junctions(law, points=None):
+    """Every contact of the law's traced single-patch branch where h(pi) = h0 with a local minimum of the gap at
+    pi (a top zone can part there): [(junction state, side)], side +1 where the single patch's h(pi) > h0 lies at
+    larger eps (the top-zone family's side).  points: the branch's (eps, c) (default: cohesive_branch.trace)."""
+    if points is None:
+        x = _cb.trace(law)[0]
+        points = np.column_stack([np.exp(x[:, 0]), np.exp(x[:, 0]) + np.exp(x[:, 1])])
+    h = np.array([_cb.state_values(law, e, c)[2] if c < math.pi else math.nan for e, c in points]) - law.h0
+    out = []
+    for i in _roots.sign_changes(h):
+        st = junction(law, points[i, 0], points[i + 1, 0])
+        if st.fields.gap(math.pi * (1 - 1e-3))[0] > st.h_pi_over_Delta:
+            out.append((st, 1 if h[i + 1] > h[i] else -1))
+    return out
+
+
+def trace(law, start, side, ct_start=CT_START, ratio=CT_RATIO):
+    """The top-zone family from the junction state start (:func:`junction`) on its side (+1: towards larger eps),
+    c_top from ct_start by the factor ratio per point, to its end (TopZoneBranch; 'top closes' refined to h(pi) = 0
+    by Brent in c_top)."""
+    states, eps, d, ct = [], start.eps, start.c - start.eps, ct_start
+    end, onset = "no root", None
+    for _ in range(CT_MAX_POINTS):
+        st = _eps_root(law, ct, eps, d, side)
+        if st is None:
+            end = "touch" if eps * (1 - 1e-3) < law.eps_lo * 1.5 else "zones meet" if st is None and \
+                eps + d + ct * ratio >= math.pi * (1 - 1e-6) else "no root"
+            break
+        if st.h_pi_over_Delta <= 0:
+            onset = _onset(law, states[-1] if states else start, st, side)
+            end = "top closes"
+            break
+        states.append(st)
+        eps, d, ct = st.eps, st.c - st.eps, ct * ratio
+    return TopZoneBranch(start, states, end, onset)
+
+
+def _onset(law, before, after, side):
+    """The state of the family between before (h(pi) > 0) and after (h(pi) <= 0) where h(pi) = 0."""
+    memo = {}
+
+    def f(ct):
+        st = _eps_root(law, ct, before.eps, before.c - before.eps, side)
+        memo[ct] = st
+        return math.nan if st is None else st.h_pi_over_Delta
+    lo = max(before.c_top, CT_START * 1e-3)         # before solves h(pi - lo) = h0 already: its h(pi) is f(lo)
+    ct = _roots.brent(lambda x, _: f(x), lo, after.c_top, (), before.h_pi_over_Delta, after.h_pi_over_Delta,
+                      1e-13 * after.c_top)
+    return memo.get(ct) or _eps_root(law, ct, before.eps, before.c - before.eps, side)
+
+
+def state_at(law, c_top, eps_guess, d_guess, side=-1):
+    """The top-zone state with the top zone c_top, solved alone: its eps by the bracket from eps_guess towards side,
+    the bottom zone end nearest to eps + d_guess (a check on the traced family)."""
+    return _eps_root(law, c_top, eps_guess, d_guess, side)
+
+
+# --- energy and stability -------------------------------------------------------------------------------------
+def potential(st):
+    """Total potential (kernel scale): elastic energy and the Dugdale interface energy of both zones
+    (jkrcyl.numerics.cohesive_branch.potential)."""
+    return _cb.potential(st)
+
+
+def held_state(law, c, c_top, control, value, eps_guess):
+    """The state with the zone ends c and c_top held, k = 0 at the contact edge and the control's quantity at value
+    ('grip': delta/Delta, 'load': p): a scalar root in eps near eps_guess (bracketed, Brent).  Returns (state,
+    [h(c) - h0, h(pi - c_top) - h0])."""
+    if control not in ("grip", "load"):
+        raise ValueError(f"control must be 'grip' or 'load', got {control!r}")
+    zones = _co.zones_of(c, c_top)
+
+    def pieces(eps):
+        fc = law.fixed(eps)
+        ua = fc.fx[3] + law.s0 * fc.zone_unit(zones)
+        if control == "grip":
+            dn = value
+        else:
+            p_a = fc.load_width(ua, zones, law.s0)[0]
+            dn = (value - p_a) / (fc.ep @ fc.fx[4])
+        u = ua + dn * fc.fx[4]
+        return fc, dn, u, fc.ek @ u
+
+    k = lambda eps: pieces(eps)[3]
+    lo, hi, step = eps_guess, eps_guess, 1e-6
+    klo = khi = k(eps_guess)
+    while klo * khi > 0 and step < 0.5:
+        lo, hi = eps_guess / (1 + step), min(eps_guess * (1 + step), 0.5 * (eps_guess + c))
+        klo, khi, step = k(lo), k(hi), step * 2
+    if klo * khi > 0:
+        raise ValueError(f"eps_guess: no zone-end-held state near the contact {eps_guess:g}")
+    eps = _roots.brent(lambda x, _: k(x), lo, hi, (), klo, khi, EPS_XTOL * hi)
+    fc, dn, u, _ = pieces(eps)
+    st = _co._state(eps, c, fc, dn, u, zones, law.m, law.s0, law.kernel, law.gb, fc.sys.n, c_top)
+    return st, st.fields.gap(np.array([c, math.pi - c_top])) - law.h0
+
+
+def zone_matrix(law, st, control):
+    """G_ij = d(h(c_i) - h0)/dc_j at the held quantity of control (central differences of zone-end-held states,
+    steps HOLD_STEP times each zone length: c - eps and c_top), unsymmetrised."""
+    value = st.delta_over_Delta if control == "grip" else st.p
+    ends = np.array([st.c, st.c_top])
+    steps = HOLD_STEP * np.array([st.c - st.eps, st.c_top])
+    G = np.empty((2, 2))
+    for j in range(2):
+        g = [held_state(law, *(ends + sgn * steps[j] * np.eye(2)[j]), control, value, st.eps)[1] for sgn in (1, -1)]
+        G[:, j] = (g[0] - g[1]) / (2 * steps[j])
+    return G
+
+
+def stable(law, st, control, G=None):
+    """Whether the top-zone state st is stable under control ('grip' or 'load'): the held energy a minimum, G's
+    symmetric part positive definite."""
+    G = zone_matrix(law, st, control) if G is None else G
+    return bool(np.all(np.linalg.eigvalsh(0.5 * (G + G.T)) > 0))
