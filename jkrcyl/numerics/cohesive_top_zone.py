@@ -33,6 +33,7 @@ from . import roots as _roots
 CT_START = 1e-9           # the first c_top of a trace (its states within ~s0 CT_START of the junction's)
 CT_RATIO = 1.35           # c_top grows by this factor per point
 CT_MAX_POINTS = 400
+RATIO_MIN = 1e-4           # trace: the step in c_top refined (square roots of the ratio) down to this before an end
 EPS_STEP = 1e-7           # bracket search in eps: the first step relative to eps, doubled
 EPS_XTOL = 1e-15          # the eps root to this relative tolerance
 HOLD_STEP = 1e-4          # zone_matrix: central differences, relative to each zone length
@@ -132,21 +133,37 @@ def trace(law, start, side, ct_start=CT_START, ratio=CT_RATIO):
     """The top-zone family from the junction state start (:func:`junction`) on its side (+1: towards larger eps),
     c_top from ct_start by the factor ratio per point, to its end (TopZoneBranch; 'top closes' refined to h(pi) = 0
     by Brent in c_top)."""
-    states, eps, d, ct = [], start.eps, start.c - start.eps, ct_start
-    end, onset = "no root", None
-    for _ in range(CT_MAX_POINTS):
-        st = _eps_root(law, ct, eps, d, side)
-        if st is None:
-            end = "touch" if eps * (1 - 1e-3) < law.eps_lo * 1.5 else "zones meet" if st is None and \
-                eps + d + ct * ratio >= math.pi * (1 - 1e-6) else "no root"
+    states, eps, d, step = [], start.eps, start.c - start.eps, ratio
+    ct, end, onset = ct_start, "", None
+    while len(states) < CT_MAX_POINTS:
+        # eps runs away from the junction, and can turn back (a fold in eps): search its way first, then back
+        st = _either(law, ct, eps, d, side)
+        if st is None:                                # refine the step before calling it an end
+            if step - 1 > RATIO_MIN and states:
+                step = math.sqrt(step)
+                ct = states[-1].c_top * step
+                continue
+            end = _end_reason(law, eps, d, ct)
             break
         if st.h_pi_over_Delta <= 0:
             onset = _onset(law, states[-1] if states else start, st, side)
             end = "top closes"
             break
+        side = side if st.eps == eps else (1 if st.eps > eps else -1)
         states.append(st)
-        eps, d, ct = st.eps, st.c - st.eps, ct * ratio
-    return TopZoneBranch(start, states, end, onset)
+        eps, d, ct = st.eps, st.c - st.eps, st.c_top * step
+    return TopZoneBranch(start, states, end or "points", onset)
+
+
+def _end_reason(law, eps, d, ct):
+    """Why no state follows the last one (eps, d = c - eps) at the next c_top = ct."""
+    if eps < 2 * law.eps_lo or eps < 1e-3 * ct:
+        return "touch"
+    if eps > law.eps_hi * (1 - 1e-3):
+        return "receding limit"
+    if eps + d + ct >= math.pi * (1 - 1e-6):
+        return "zones meet"
+    return "no root"
 
 
 def _onset(law, before, after, side):
@@ -154,19 +171,24 @@ def _onset(law, before, after, side):
     memo = {}
 
     def f(ct):
-        st = _eps_root(law, ct, before.eps, before.c - before.eps, side)
+        st = _either(law, ct, before.eps, before.c - before.eps, side)
         memo[ct] = st
         return math.nan if st is None else st.h_pi_over_Delta
     lo = max(before.c_top, CT_START * 1e-3)         # before solves h(pi - lo) = h0 already: its h(pi) is f(lo)
     ct = _roots.brent(lambda x, _: f(x), lo, after.c_top, (), before.h_pi_over_Delta, after.h_pi_over_Delta,
                       1e-13 * after.c_top)
-    return memo.get(ct) or _eps_root(law, ct, before.eps, before.c - before.eps, side)
+    return memo.get(ct) or _either(law, ct, before.eps, before.c - before.eps, side)
 
 
 def state_at(law, c_top, eps_guess, d_guess, side=-1):
     """The top-zone state with the top zone c_top, solved alone: its eps by the bracket from eps_guess towards side,
     the bottom zone end nearest to eps + d_guess (a check on the traced family)."""
-    return _eps_root(law, c_top, eps_guess, d_guess, side)
+    return _either(law, c_top, eps_guess, d_guess, side)
+
+
+def _either(law, c_top, eps0, d_near, side):
+    """:func:`_eps_root` towards side, else back (the family can turn in eps)."""
+    return _eps_root(law, c_top, eps0, d_near, side) or _eps_root(law, c_top, eps0, d_near, -side)
 
 
 # --- energy and stability -------------------------------------------------------------------------------------
