@@ -167,3 +167,18 @@ def test_the_family_shrinks_as_lambda_grows():
         assert law.state(o.eps).h_pi_over_Delta == pytest.approx(strip, rel=0.1)
         spans.append(o.delta_over_Delta - j.delta_over_Delta)
     assert all(s > 0 for s in spans) and spans[1] > spans[2] > spans[3]
+
+
+def test_where_the_top_closes_the_laws_two_patch_states_begin(law, junctions):
+    """The first junction's family (the top closes at eps 0.0048): the two-arc states of
+    jkrcyl.numerics.cohesive_two.solve (two contacts, k = 0 at both edges, zones at both: another solver, cold
+    from the onset's eps) tend to the onset as the top arc eps_top -> 0, as eps_top^2 (measured in delta/Delta:
+    2.3e-3, 2.8e-4, 3.8e-5 at eps_top 1e-4, 3e-5, 1e-5): the top bridge is the two patches' continuation."""
+    from jkrcyl.numerics import cohesive_two as two
+    o = tz.trace(law, *junctions[0], ratio=3.0).onset
+    diffs = []
+    for eps_top in (1e-4, 1e-5):
+        s = two.solve(eps_top, law.m, law.s0, THETA, GB, 0.0, o.eps)
+        diffs.append(max(abs(s.delta_over_Delta - o.delta_over_Delta), abs(s.p - o.p), abs(s.c_top - o.c_top),
+                         abs(s.eps - o.eps)))
+    assert diffs[1] < 1e-4 and diffs[1] < diffs[0] / 30
