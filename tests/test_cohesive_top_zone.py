@@ -182,3 +182,30 @@ def test_where_the_top_closes_the_laws_two_patch_states_begin(law, junctions):
         diffs.append(max(abs(s.delta_over_Delta - o.delta_over_Delta), abs(s.p - o.p), abs(s.c_top - o.c_top),
                          abs(s.eps - o.eps)))
     assert diffs[1] < 1e-4 and diffs[1] < diffs[0] / 30
+
+
+def contactless_touch_with_top_zone(law, c_lo, c_hi):
+    """The state without contact, zones at the bottom and top (cohesive_zones.contactless_states: closed form in
+    delta, the top zone end by a scan and Brent), that touches the bottom, h(0) = 0: Brent in its bottom zone c."""
+    from jkrcyl.numerics import roots
+
+    def top(c):
+        return min((s for s in cz.contactless_states(c, law.m, law.s0, THETA, GB) if 0 < s.c_top < 0.1),
+                   key=lambda s: s.c_top)
+    return top(roots.root(lambda c: top(c).fields.gap(0.0)[0], c_lo, c_hi))
+
+
+def test_at_lambda_20_the_family_reaches_the_touch_without_the_top_closing():
+    """lambda 20, the first junction (eps 0.0155): the top zone grows while the contact shrinks to nothing (h(pi)
+    still 0.16 Delta): the family ends at the touch, on the state without contact held by zones at the bottom
+    and top that touches the bottom -- approached as eps^2 (measured: delta within 1.7e-5 at eps 3.1e-5, rate 1.84)."""
+    law = law_at(20.0)
+    j, side = tz.junctions(law)[0]
+    br = tz.trace(law, j, side, ratio=2.0)
+    assert br.end == "touch" and br.onset is None and br.states[-1].h_pi_over_Delta > 0.15
+    ref = contactless_touch_with_top_zone(law, 0.9 * br.states[-1].c, 1.1 * br.states[-1].c)
+    diff = [max(abs(s.p - ref.p), abs(s.delta_over_Delta - ref.delta_over_Delta), abs(s.c_top - ref.c_top),
+                abs(s.c - ref.c)) for s in br.states[-2:]]
+    assert diff[1] < 1e-4
+    rate = math.log(diff[0] / diff[1]) / math.log(br.states[-2].eps / br.states[-1].eps)
+    assert 1.6 < rate < 2.4, rate

@@ -36,6 +36,7 @@ CT_MAX_POINTS = 400
 RATIO_MIN = 1e-4           # trace: the step in c_top refined (square roots of the ratio) down to this before an end
 EPS_STEP = 1e-7           # bracket search in eps: the first step relative to eps, doubled
 EPS_XTOL = 1e-15          # the eps root to this relative tolerance
+TOUCH = 1e-2              # the trace follows eps down to this times the law's smallest traced contact (the touch end)
 HOLD_STEP = 1e-4          # zone_matrix: central differences, relative to each zone length
 
 TopZoneBranch = namedtuple("TopZoneBranch", ["junction", "states", "end", "onset"])
@@ -87,7 +88,7 @@ def _eps_root(law, c_top, eps0, d_near, side):
     step = EPS_STEP
     while step < 1.0:
         hi = eps0 * (1 + side * step) if side > 0 else eps0 / (1 + step)
-        if not law.eps_lo * 0.5 < hi < law.eps_hi:
+        if not law.eps_lo * TOUCH < hi < law.eps_hi:
             return None
         fhi = f(hi)
         if not math.isfinite(fhi):
@@ -157,7 +158,7 @@ def trace(law, start, side, ct_start=CT_START, ratio=CT_RATIO):
 
 def _end_reason(law, eps, d, ct):
     """Why no state follows the last one (eps, d = c - eps) at the next c_top = ct."""
-    if eps < 2 * law.eps_lo or eps < 1e-3 * ct:
+    if eps < 4 * TOUCH * law.eps_lo:
         return "touch"
     if eps > law.eps_hi * (1 - 1e-3):
         return "receding limit"
