@@ -221,8 +221,8 @@ def held_state(law, c, c_top, control, value, eps_guess):
     k = lambda eps: pieces(eps)[3]
     lo, hi, step = eps_guess, eps_guess, 1e-6
     klo = khi = k(eps_guess)
-    while klo * khi > 0 and step < 0.5:
-        lo, hi = eps_guess / (1 + step), min(eps_guess * (1 + step), 0.5 * (eps_guess + c))
+    while klo * khi > 0 and step < 5.0:                # a bracket up to e^5 either way (a held state near the touch)
+        lo, hi = eps_guess * math.exp(-step), min(eps_guess * math.exp(step), 0.5 * (eps_guess + c))
         klo, khi, step = k(lo), k(hi), step * 2
     if klo * khi > 0:
         raise ValueError(f"eps_guess: no zone-end-held state near the contact {eps_guess:g}")
@@ -234,10 +234,11 @@ def held_state(law, c, c_top, control, value, eps_guess):
 
 def zone_matrix(law, st, control):
     """G_ij = d(h(c_i) - h0)/dc_j at the held quantity of control (central differences of zone-end-held states,
-    steps HOLD_STEP times each zone length: c - eps and c_top), unsymmetrised."""
+    steps HOLD_STEP times each zone length, c - eps and c_top, or the contact eps if smaller: near the touch the
+    held contact moves ~ (c step)/eps and vanishes under load a step ~ eps away), unsymmetrised."""
     value = st.delta_over_Delta if control == "grip" else st.p
     ends = np.array([st.c, st.c_top])
-    steps = HOLD_STEP * np.array([st.c - st.eps, st.c_top])
+    steps = HOLD_STEP * np.minimum([st.c - st.eps, st.c_top], st.eps)
     G = np.empty((2, 2))
     for j in range(2):
         g = [held_state(law, *(ends + sgn * steps[j] * np.eye(2)[j]), control, value, st.eps)[1] for sgn in (1, -1)]
