@@ -51,7 +51,7 @@ def junctions(law):
 @pytest.fixture(scope="module")
 def family(law, junctions):
     """The grip path's family (the second junction, side +1), coarse (c_top x 3 per point)."""
-    return tz.trace(law, *junctions[1], ratio=3.0)
+    return tz.trace(law, junctions[1][0], ratio=3.0)
 
 
 def test_two_junctions_where_the_gap_at_the_top_reaches_h0(law, junctions):
@@ -99,7 +99,7 @@ def test_energy_changes_by_p_d_delta_with_both_zones(law, family):
     x = np.cos(np.pi * np.arange(n) / (n - 1))[::-1]
     sts, prev = [], a
     for ct in a.c_top + (b.c_top - a.c_top) * (x + 1) / 2:
-        prev = tz.state_at(law, ct, prev.eps, prev.c - prev.eps, 1)
+        prev = tz.state_at(law, ct, prev.eps, prev.c - prev.eps)
         sts.append(prev)
     p = np.array([s.p for s in sts])
     d = np.array([s.delta_over_Delta for s in sts])
@@ -115,10 +115,10 @@ def test_energy_changes_by_p_d_delta_with_both_zones(law, family):
 def test_continuous_with_the_single_patch_at_the_junction(law, junctions, which):
     """c_top -> 0: p, delta the single patch's where h(pi) = h0, the difference ~ c_top log(1/c_top) (measured
     1.2e-7, 1.4e-9, 1.6e-11 at c_top 1e-10, 1e-12, 1e-14)."""
-    j, side = junctions[which]
+    j = junctions[which][0]
     diffs = []
     for ct in (1e-10, 1e-12):
-        st = tz.state_at(law, ct, j.eps, j.c - j.eps, side)
+        st = tz.state_at(law, ct, j.eps, j.c - j.eps)
         diffs.append(max(abs(st.p - j.p), abs(st.delta_over_Delta - j.delta_over_Delta)))
         assert st.eps == pytest.approx(j.eps, rel=1e-6)
     assert diffs[0] < 2e-7 and diffs[1] < 1e-8
@@ -127,12 +127,12 @@ def test_continuous_with_the_single_patch_at_the_junction(law, junctions, which)
 
 @pytest.mark.parametrize("which", [0, 1])
 def test_bridge_is_a_saddle_and_the_junction_keeps_the_single_patchs_flag(law, junctions, which):
-    """G (held zone ends) symmetric (Maxwell: measured 2e-6 of G_12 at c_top 1e-5, the differences' rounding);
-    its bottom entry next to the junction (c_top 1e-5: G_11 within 2 % of c_top 1e-6's) has the sign
+    """G (held zone ends) symmetric (Maxwell: measured <= 8e-7 of G_12 at c_top 1e-4, the differences' rounding);
+    its bottom entry next to the junction (c_top 1e-4: G_11 within 15 % of c_top 1e-6's) has the sign
     of the single patch's own stability rule (cohesive_branch.point: the first junction unstable under both
     controls, the second stable under grip only); the top entry < 0: the top zone grows at a held quantity."""
-    j, side = junctions[which]
-    st = tz.state_at(law, 1e-5, j.eps, j.c - j.eps, side)
+    j = junctions[which][0]
+    st = tz.state_at(law, 1e-4, j.eps, j.c - j.eps)
     pt = cb.point(law, j.eps, j.c, (1.0, 1.0))
     rule = {"grip": pt.ddn_dt * pt.D_dn < 0, "load": pt.dp_dt * pt.D_p < 0}
     assert rule == ({"grip": False, "load": False} if which == 0 else {"grip": True, "load": False})
@@ -158,8 +158,8 @@ def test_the_family_shrinks_as_lambda_grows():
     spans = []
     for lam in (20.0, 50.0, 100.0, 200.0):
         law = law_at(lam)
-        j, side = tz.junctions(law)[-1]
-        br = tz.trace(law, j, side, ratio=2.0)
+        j = tz.junctions(law)[-1][0]
+        br = tz.trace(law, j, ratio=2.0)
         o = br.onset
         est = law.h0 / (4 * law.s0 * math.log(2))
         assert br.end == "top closes" and abs(o.c_top / est - 1) < o.c_top
@@ -175,7 +175,7 @@ def test_where_the_top_closes_the_laws_two_patch_states_begin(law, junctions):
     from the onset's eps) tend to the onset as the top arc eps_top -> 0, as eps_top^2 (measured in delta/Delta:
     2.3e-3, 2.8e-4, 3.8e-5 at eps_top 1e-4, 3e-5, 1e-5): the top bridge is the two patches' continuation."""
     from jkrcyl.numerics import cohesive_two as two
-    o = tz.trace(law, *junctions[0], ratio=3.0).onset
+    o = tz.trace(law, junctions[0][0], ratio=3.0).onset
     diffs = []
     for eps_top in (1e-4, 1e-5):
         s = two.solve(eps_top, law.m, law.s0, THETA, GB, 0.0, o.eps)
@@ -200,8 +200,8 @@ def test_at_lambda_20_the_family_reaches_the_touch_without_the_top_closing():
     still 0.16 Delta): the family ends at the touch, on the state without contact held by zones at the bottom
     and top that touches the bottom -- approached as eps^2 (measured: delta within 1.7e-5 at eps 3.1e-5, rate 1.84)."""
     law = law_at(20.0)
-    j, side = tz.junctions(law)[0]
-    br = tz.trace(law, j, side, ratio=2.0)
+    j = tz.junctions(law)[0][0]
+    br = tz.trace(law, j, ratio=2.0)
     assert br.end == "touch" and br.onset is None and br.states[-1].h_pi_over_Delta > 0.15
     ref = contactless_touch_with_top_zone(law, 0.9 * br.states[-1].c, 1.1 * br.states[-1].c)
     diff = [max(abs(s.p - ref.p), abs(s.delta_over_Delta - ref.delta_over_Delta), abs(s.c_top - ref.c_top),

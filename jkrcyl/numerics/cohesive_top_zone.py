@@ -71,34 +71,33 @@ def _top_gap(st):
     return st.fields.gap(math.pi - st.c_top)[0] - st.h0_over_Delta
 
 
-def _eps_root(law, c_top, eps0, d_near, side):
-    """The state with the top zone c_top whose eps solves h(pi - c_top) = h0, searched from eps0 towards side
-    (+1: larger eps) by a growing bracket, then Brent (to EPS_XTOL relative); None when none is found."""
+def _eps_root(law, c_top, eps0, d_near):
+    """The state with the top zone c_top whose eps solves h(pi - c_top) = h0 nearest to eps0: a bracket grown
+    geometrically on both sides of eps0 (the family can turn back in eps), then Brent (to EPS_XTOL relative);
+    None when none is found within a factor e^2."""
     memo = {}
 
     def f(eps):
         if eps not in memo:
-            st = fixed_state(law, eps, c_top, d_near)
+            st = fixed_state(law, eps, c_top, d_near) if law.eps_lo * TOUCH < eps < law.eps_hi else None
             memo[eps] = (math.nan, None) if st is None else (_top_gap(st), st)
         return memo[eps][0]
 
-    lo, flo = eps0, f(eps0)
-    if not math.isfinite(flo):
+    f0 = f(eps0)
+    if not math.isfinite(f0):
         return None
+    if f0 == 0.0:
+        return memo[eps0][1]
     step = EPS_STEP
-    while step < 1.0:
-        hi = eps0 * (1 + side * step) if side > 0 else eps0 / (1 + step)
-        if not law.eps_lo * TOUCH < hi < law.eps_hi:
-            return None
-        fhi = f(hi)
-        if not math.isfinite(fhi):
-            return None
-        if flo * fhi <= 0:
-            a, b = sorted((lo, hi))
-            eps = _roots.brent(lambda x, _: f(x), a, b, (), memo[a][0], memo[b][0], EPS_XTOL * b)
-            f(eps)
-            return memo[eps][1]
-        lo, flo, step = hi, fhi, step * 2
+    while step < 2.0:
+        for x in (eps0 * math.exp(-step), eps0 * math.exp(step)):
+            fx = f(x)
+            if math.isfinite(fx) and fx * f0 <= 0:
+                a, b = sorted((eps0, x))
+                eps = _roots.brent(lambda y, _: f(y), a, b, (), memo[a][0], memo[b][0], EPS_XTOL * b)
+                f(eps)
+                return memo[eps][1]
+        step *= 2
     return None
 
 
@@ -130,15 +129,14 @@ def junctions(law, points=None):
     return out
 
 
-def trace(law, start, side, ct_start=CT_START, ratio=CT_RATIO):
-    """The top-zone family from the junction state start (:func:`junction`) on its side (+1: towards larger eps),
-    c_top from ct_start by the factor ratio per point, to its end (TopZoneBranch; 'top closes' refined to h(pi) = 0
-    by Brent in c_top)."""
+def trace(law, start, ct_start=CT_START, ratio=CT_RATIO):
+    """The top-zone family from the junction state start (:func:`junction`), c_top from ct_start by the factor
+    ratio per point (eps predicted from the last two, linear in log c_top), to its end (TopZoneBranch; 'top
+    closes' refined to h(pi) = 0 by Brent in c_top)."""
     states, eps, d, step = [], start.eps, start.c - start.eps, ratio
     ct, end, onset = ct_start, "", None
     while len(states) < CT_MAX_POINTS:
-        # eps runs away from the junction, and can turn back (a fold in eps): search its way first, then back
-        st = _either(law, ct, eps, d, side)
+        st = _eps_root(law, ct, _predict(states, ct, eps), d)
         if st is None:                                # refine the step before calling it an end
             if step - 1 > RATIO_MIN and states:
                 step = math.sqrt(step)
@@ -147,13 +145,21 @@ def trace(law, start, side, ct_start=CT_START, ratio=CT_RATIO):
             end = _end_reason(law, eps, d, ct)
             break
         if st.h_pi_over_Delta <= 0:
-            onset = _onset(law, states[-1] if states else start, st, side)
+            onset = _onset(law, states[-1] if states else start, st)
             end = "top closes"
             break
-        side = side if st.eps == eps else (1 if st.eps > eps else -1)
         states.append(st)
         eps, d, ct = st.eps, st.c - st.eps, st.c_top * step
     return TopZoneBranch(start, states, end or "points", onset)
+
+
+def _predict(states, ct, eps):
+    """eps at the top zone ct, extrapolated linearly in log c_top from the last two states (else eps)."""
+    if len(states) < 2:
+        return eps
+    a, b = states[-2:]
+    guess = b.eps + (b.eps - a.eps) * math.log(ct / b.c_top) / math.log(b.c_top / a.c_top)
+    return guess if 0.5 * b.eps < guess < 2 * b.eps else b.eps
 
 
 def _end_reason(law, eps, d, ct):
@@ -167,29 +173,24 @@ def _end_reason(law, eps, d, ct):
     return "no root"
 
 
-def _onset(law, before, after, side):
+def _onset(law, before, after):
     """The state of the family between before (h(pi) > 0) and after (h(pi) <= 0) where h(pi) = 0."""
     memo = {}
 
     def f(ct):
-        st = _either(law, ct, before.eps, before.c - before.eps, side)
+        st = _eps_root(law, ct, before.eps, before.c - before.eps)
         memo[ct] = st
         return math.nan if st is None else st.h_pi_over_Delta
     lo = max(before.c_top, CT_START * 1e-3)         # before solves h(pi - lo) = h0 already: its h(pi) is f(lo)
     ct = _roots.brent(lambda x, _: f(x), lo, after.c_top, (), before.h_pi_over_Delta, after.h_pi_over_Delta,
                       1e-13 * after.c_top)
-    return memo.get(ct) or _either(law, ct, before.eps, before.c - before.eps, side)
+    return memo.get(ct) or _eps_root(law, ct, before.eps, before.c - before.eps)
 
 
-def state_at(law, c_top, eps_guess, d_guess, side=-1):
-    """The top-zone state with the top zone c_top, solved alone: its eps by the bracket from eps_guess towards side,
-    the bottom zone end nearest to eps + d_guess (a check on the traced family)."""
-    return _either(law, c_top, eps_guess, d_guess, side)
-
-
-def _either(law, c_top, eps0, d_near, side):
-    """:func:`_eps_root` towards side, else back (the family can turn in eps)."""
-    return _eps_root(law, c_top, eps0, d_near, side) or _eps_root(law, c_top, eps0, d_near, -side)
+def state_at(law, c_top, eps_guess, d_guess):
+    """The top-zone state with the top zone c_top, solved alone: its eps the root nearest to eps_guess, the bottom
+    zone end nearest to eps + d_guess (a check on the traced family)."""
+    return _eps_root(law, c_top, eps_guess, d_guess)
 
 
 # --- energy and stability -------------------------------------------------------------------------------------
