@@ -20,6 +20,14 @@ h(pi - c_top) = h0, a scalar root in eps (one LU per iterate); the family is tra
 every case met), from CT_START geometrically.  Stability as jkrcyl.numerics.cohesive_two_stability: the energy of
 states whose zone ends are held (grad 2 s0 (h(c_i) - h0)), a minimum where G_ij = d(h(c_i) - h0)/dc_j at the held
 quantity is positive definite.  The total potential: jkrcyl.numerics.cohesive_branch.potential (both zones).
+At the top's closing the family meets the law's two-arc states (jkrcyl.numerics.cohesive_two.solve as the top arc
+eps_top -> 0, as eps_top^2); where the contact vanishes first (lambda 20 above) it meets the states without
+contact held by zones at the bottom and top (jkrcyl.numerics.cohesive_zones.contactless_states) where they touch.
+
+For the walker (jkrcyl.analysis.landing, not wired here): the single patch ends at the junction, h(pi) = h0, not
+where h(pi) = 0; there it meets the bridge, a saddle, so the junction is a fold of the combined branch and a walk
+on a stable single patch jumps there, at the held value, onto whatever is stable (the law's two patches).  The
+bridge is never walked: it is the barrier, vanishing at the junction.
 """
 import math
 from collections import namedtuple
@@ -129,6 +137,23 @@ def junctions(law, points=None):
     return out
 
 
+def families(m, s0, theta, gb, ar=0.0, ratio=CT_RATIO):
+    """Every top-zone family of the law (normalised as jkrcyl.numerics.cohesive: m, s0, vartheta, gb, ar): one
+    TopZoneBranch per contact of its single patch where h(pi) = h0 with a local minimum of the gap at the top
+    (:func:`junctions`, in increasing eps), traced by :func:`trace`; [] where the gap at the top never reaches the
+    range.
+
+    Examples
+    --------
+    >>> from jkrcyl.numerics.cohesive_scales import zone_strength
+    >>> [(b.end, round(b.junction.delta_over_Delta, 4), round(b.onset.delta_over_Delta, 4))
+    ...  for b in families(1.0, zone_strength(50.0, 1.0), 10.0, 1 / 2.8, ratio=3.0)]
+    [('top closes', -1.7279, -1.1727), ('top closes', -1.1528, -0.61)]
+    """
+    law = law_of(m, s0, theta, gb, ar)
+    return [trace(law, st, ratio=ratio) for st, _ in junctions(law)]
+
+
 def trace(law, start, ct_start=CT_START, ratio=CT_RATIO):
     """The top-zone family from the junction state start (:func:`junction`), c_top from ct_start by the factor
     ratio per point (eps predicted from the last two, linear in log c_top), to its end (TopZoneBranch; 'top
@@ -164,7 +189,7 @@ def _predict(states, ct, eps):
 
 def _end_reason(law, eps, d, ct):
     """Why no state follows the last one (eps, d = c - eps) at the next c_top = ct."""
-    if eps < 4 * TOUCH * law.eps_lo:
+    if eps < 0.1 * law.eps_lo:                     # below the single patch's own touch end: the contact vanishes
         return "touch"
     if eps > law.eps_hi * (1 - 1e-3):
         return "receding limit"
