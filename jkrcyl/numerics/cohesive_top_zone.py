@@ -7,10 +7,13 @@ of the hole) the single-patch states end where h(pi) = h0: below, the law puts t
 top-zone family starts with c_top -> 0 (:func:`junction`), and it lies on the single patch's side h(pi) > h0: in
 two dimensions a zone's own traction lowers the gap at its end by ~ 4 s0 c_top log(1/c_top) (the kernel's log),
 more than the flat top's curvature raises it, so a small zone closes its own end h(pi - c_top) = h0 under a
-single-patch gap above h0.  Measured (M 0.1, vartheta 10, gb 1/2.8, lambda 50: the junction at eps 0.0283,
-delta/Delta -1.728): the family runs back in eps with c_top growing until the gap at the top closes, h(pi) = 0
-(eps 0.005, c_top 2.3e-3 ~ h0/(4 s0 log 2), delta/Delta -1.19), where the top contact forms under its zone (the
-law's two patches); at lambda 20 it reaches the touch end (eps -> 0) before the top closes.  Each state is a
+single-patch gap above h0.  Measured (M 0.1, vartheta 10, gb 1/2.8, lambda 50: junctions at eps 0.0283 and 0.728,
+delta/Delta -1.728 and -1.153): each family runs away from the single patch's h(pi) = 0 with c_top growing until
+the gap at the top closes, h(pi) = 0 (eps 0.0048 and 1.12, c_top 2.31e-3 = h0/(4 s0 log 2) to 1e-4, delta/Delta
+-1.173 and -0.610), where the top contact forms under its zone (the law's two patches); at lambda 20 the first
+reaches the touch end (eps -> 0) before the top closes.  The single patch's h(pi) at the top's closing is the
+strip's h0 (1 + log(1/(2 c_top))/log 2) (0.70 Delta at lambda 50, 0.26 at 200): the family shrinks as lambda grows
+like h0 log(lambda), not h0.  Each state is a
 saddle (the top zone grows at a held load or approach: :func:`stable`), the barrier between the single patch and
 two patches, vanishing at the junction: the single patch is a fold there.
 
@@ -41,7 +44,7 @@ from . import roots as _roots
 CT_START = 1e-9           # the first c_top of a trace (its states within ~s0 CT_START of the junction's)
 CT_RATIO = 1.35           # c_top grows by this factor per point
 CT_MAX_POINTS = 400
-RATIO_MIN = 1e-4           # trace: the step in c_top refined (square roots of the ratio) down to this before an end
+RATIO_MIN = 1e-4          # trace: the step in c_top refined (square roots of the ratio) down to this before an end
 EPS_STEP = 1e-7           # bracket search in eps: the first step relative to eps, doubled
 EPS_XTOL = 1e-15          # the eps root to this relative tolerance
 TOUCH = 1e-2              # the trace follows eps down to this times the law's smallest traced contact (the touch end)
@@ -52,9 +55,9 @@ TopZoneBranch.__doc__ = """A traced top-zone family (jkrcyl.numerics.cohesive.Co
 
 junction: the single-patch state where h(pi) = h0 (c_top = 0); states: the family in increasing c_top; end: why
 the trace ended -- 'top closes' (h(pi) reaches 0: onset is that state, the top contact's onset), 'touch' (eps
-reaches the law's smallest traced contact: the family goes on without contact, jkrcyl.numerics.cohesive_zones
-.contactless_states), 'zones meet' (c + c_top -> pi) or 'no root' (the eps root not found next to the last
-state: a fold in c_top)."""
+below 0.1 of the law's smallest traced contact: the family goes on without contact, the states of
+jkrcyl.numerics.cohesive_zones.contactless_states), 'receding limit', 'zones meet' (c + c_top -> pi), 'no root'
+(no eps root next to the last state: a fold in c_top) or 'points' (CT_MAX_POINTS states)."""
 
 
 def law_of(m, s0, theta, gb, ar=0.0):
