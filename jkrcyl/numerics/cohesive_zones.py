@@ -64,7 +64,8 @@ def top_zone_states(eps, m, s0, theta, gb, ar=0.0, n=None):
     """Every state with the contact |phi| < eps, its zone |phi| < c and a second zone |phi - pi| < c_top at the top
     (c + c_top < pi): for each c_top the bottom zone end solves h(c) = h0 (as jkrcyl.numerics.cohesive
     .cohesive_state), and c_top is a root of h(pi - c_top) = h0 on a scan (TOP_SCAN) refined by Brent.  Nodes as
-    the state without top zone.  Feasibility not checked (gap_check)."""
+    the state without top zone.  Feasibility not checked (gap_check).  The family through the small root (the
+    top bridge, from c_top = 0 where h(pi) = h0 to the top's closing): jkrcyl.numerics.cohesive_top_zone."""
     base = _co.cohesive_state(eps, m, s0, theta, gb, ar, n)
     if base.zones == "all" or base.m == 0.0:
         return []

@@ -1,0 +1,282 @@
+"""The top bridge of the Maugis-Dugdale law: one contact |phi| < eps with its zone |phi| < c at the bottom and a
+second zone |phi - pi| < c_top at the top, held by its own traction, as a 1-D family.
+
+Notation of jkrcyl.numerics.cohesive (kernel scale: p = P beta*/(4 pi Delta), lengths over Delta, h0 = m^2/s0).
+Where the single patch's gap has a local minimum at phi = pi (JKR's two-patch regime: the pin is drawn to the top
+of the hole) the single-patch states end where h(pi) = h0: below, the law puts traction at the top.  There the
+top-zone family starts with c_top -> 0 (:func:`junction`), and it lies on the single patch's side h(pi) > h0: in
+two dimensions a zone's own traction lowers the gap at its end by ~ 4 s0 c_top log(1/c_top) (the kernel's log),
+more than the flat top's curvature raises it, so a small zone closes its own end h(pi - c_top) = h0 under a
+single-patch gap above h0.  Measured (M 0.1, vartheta 10, gb 1/2.8, lambda 50: junctions at eps 0.0283 and 0.728,
+delta/Delta -1.728 and -1.153): each family runs away from the single patch's h(pi) = 0 with c_top growing until
+the gap at the top closes, h(pi) = 0 (eps 0.0048 and 1.12, c_top 2.31e-3 = h0/(4 s0 log 2) to 1e-4, delta/Delta
+-1.173 and -0.610), where the top contact forms under its zone (the law's two patches); at lambda 20 the first
+reaches the touch end (eps -> 0) before the top closes.  The single patch's h(pi) at the top's closing is the
+strip's h0 (1 + log(1/(2 c_top))/log 2) (0.70 Delta at lambda 50, 0.26 at 200): the family shrinks as lambda grows
+like h0 log(lambda), not h0.  Each state is a
+saddle (the top zone grows at a held load or approach: :func:`stable`), the barrier between the single patch and
+two patches, vanishing at the junction: the single patch is a fold there.
+
+Each state solves k = 0 at the contact edge (delta eliminated: jkrcyl.numerics.cohesive.FixedContact.solve),
+h(c) = h0 (the bottom zone end at a fixed contact and c_top: cohesive_roots.zone_end_near, the LU reused) and
+h(pi - c_top) = h0, a scalar root in eps (one LU per iterate); the family is traced in c_top (monotone along it in
+every case met), from CT_START geometrically.  Stability as jkrcyl.numerics.cohesive_two_stability: the energy of
+states whose zone ends are held (grad 2 s0 (h(c_i) - h0)), a minimum where G_ij = d(h(c_i) - h0)/dc_j at the held
+quantity is positive definite.  The total potential: jkrcyl.numerics.cohesive_branch.potential (both zones).
+At the top's closing the family meets the law's two-arc states (jkrcyl.numerics.cohesive_two.solve as the top arc
+eps_top -> 0, as eps_top^2); where the contact vanishes first (lambda 20 above) it meets the states without
+contact held by zones at the bottom and top (jkrcyl.numerics.cohesive_zones.contactless_states) where they touch.
+
+For the walker (jkrcyl.analysis.landing, not wired here): the single patch ends at the junction, h(pi) = h0, not
+where h(pi) = 0; there it meets the bridge, a saddle, so the junction is a fold of the combined branch and a walk
+on a stable single patch jumps there, at the held value, onto whatever is stable (the law's two patches).  The
+bridge is never walked: it is the barrier, vanishing at the junction.
+"""
+import math
+from collections import namedtuple
+
+import numpy as np
+
+from . import cohesive as _co
+from . import cohesive_branch as _cb
+from . import roots as _roots
+
+CT_START = 1e-9           # the first c_top of a trace (its states within ~s0 CT_START of the junction's)
+CT_RATIO = 1.35           # c_top grows by this factor per point
+CT_MAX_POINTS = 400
+RATIO_MIN = 1e-4          # trace: the step in c_top refined (square roots of the ratio) down to this before an end
+EPS_STEP = 1e-7           # bracket search in eps: the first step relative to eps, doubled
+EPS_XTOL = 1e-15          # the eps root to this relative tolerance
+TOUCH = 1e-2              # the trace follows eps down to this times the law's smallest traced contact (the touch end)
+HOLD_STEP = 1e-4          # zone_matrix: central differences, relative to each zone length
+
+TopZoneBranch = namedtuple("TopZoneBranch", ["junction", "states", "end", "onset"])
+TopZoneBranch.__doc__ = """A traced top-zone family (jkrcyl.numerics.cohesive.CohesiveState each, zones 'bottom+top').
+
+junction: the single-patch state where h(pi) = h0 (c_top = 0); states: the family in increasing c_top; end: why
+the trace ended -- 'top closes' (h(pi) reaches 0: onset is that state, the top contact's onset), 'touch' (eps
+below 0.1 of the law's smallest traced contact: the family goes on without contact, the states of
+jkrcyl.numerics.cohesive_zones.contactless_states), 'receding limit', 'zones meet' (c + c_top -> pi), 'no root'
+(no eps root next to the last state: a fold in c_top) or 'points' (CT_MAX_POINTS states)."""
+
+
+def law_of(m, s0, theta, gb, ar=0.0):
+    """The validated law with its node policy and cached fixed contacts (jkrcyl.numerics.cohesive_branch.Law)."""
+    return _cb.Law(m, s0, theta, gb, ar)
+
+
+def fixed_state(law, eps, c_top, d_near):
+    """The state at the contact eps with the top zone c_top (0: none) and its bottom zone end nearest to
+    eps + d_near (k = 0, h(c) = h0), or None when no zone end lies within a factor 100 of d_near."""
+    fc = law.fixed(eps)
+    d = fc.zone_end_near(law.s0, law.h0, d_near, c_top)
+    if d is None or eps + d + c_top >= math.pi:
+        return None
+    zones = _co.zones_of(eps + d, c_top)
+    dn, u = fc.solve(zones, law.s0)
+    return _co._state(eps, eps + d, fc, dn, u, zones, law.m, law.s0, law.kernel, law.gb, fc.sys.n, c_top)
+
+
+def _top_gap(st):
+    """h(pi - c_top) - h0 (h(pi) - h0 without top zone)."""
+    return st.fields.gap(math.pi - st.c_top)[0] - st.h0_over_Delta
+
+
+def _eps_root(law, c_top, eps0, d_near):
+    """The state with the top zone c_top whose eps solves h(pi - c_top) = h0 nearest to eps0: a bracket grown
+    geometrically on both sides of eps0 (the family can turn back in eps), then Brent (to EPS_XTOL relative);
+    None when none is found within a factor e^2."""
+    memo = {}
+
+    def f(eps):
+        if eps not in memo:
+            st = fixed_state(law, eps, c_top, d_near) if law.eps_lo * TOUCH < eps < law.eps_hi else None
+            memo[eps] = (math.nan, None) if st is None else (_top_gap(st), st)
+        return memo[eps][0]
+
+    f0 = f(eps0)
+    if not math.isfinite(f0):
+        return None
+    if f0 == 0.0:
+        return memo[eps0][1]
+    step = EPS_STEP
+    while step < 2.0:
+        for x in (eps0 * math.exp(-step), eps0 * math.exp(step)):
+            fx = f(x)
+            if math.isfinite(fx) and fx * f0 <= 0:
+                a, b = sorted((eps0, x))
+                eps = _roots.brent(lambda y, _: f(y), a, b, (), memo[a][0], memo[b][0], EPS_XTOL * b)
+                f(eps)
+                return memo[eps][1]
+        step *= 2
+    return None
+
+
+def junction(law, lo, hi):
+    """The single-patch state where h(pi) = h0 between the contacts lo and hi (h(pi) - h0 changes sign there;
+    the zone end the first root above the Dugdale estimate, as jkrcyl.numerics.cohesive.cohesive_state)."""
+    def f(eps):
+        return law.state(eps).h_pi_over_Delta - law.h0
+    flo, fhi = f(lo), f(hi)
+    if flo * fhi > 0:
+        raise ValueError(f"lo, hi: h(pi) - h0 must change sign between the contacts {lo:g} and {hi:g}")
+    eps = _roots.brent(lambda x, _: f(x), lo, hi, (), flo, fhi, EPS_XTOL * hi)
+    return law.state(eps)
+
+
+def junctions(law, points=None):
+    """Every contact of the law's traced single-patch branch where h(pi) = h0 with a local minimum of the gap at
+    pi (a top zone can part there): [(junction state, side)], side +1 where the single patch's h(pi) > h0 lies at
+    larger eps (the top-zone family's side).  points: the branch's (eps, c) (default: cohesive_branch.trace)."""
+    if points is None:
+        x = _cb.trace(law)[0]
+        points = np.column_stack([np.exp(x[:, 0]), np.exp(x[:, 0]) + np.exp(x[:, 1])])
+    h = np.array([_cb.state_values(law, e, c)[2] if c < math.pi else math.nan for e, c in points]) - law.h0
+    out = []
+    for i in _roots.sign_changes(h):
+        st = junction(law, points[i, 0], points[i + 1, 0])
+        if st.fields.gap(math.pi * (1 - 1e-3))[0] > st.h_pi_over_Delta:
+            out.append((st, 1 if h[i + 1] > h[i] else -1))
+    return out
+
+
+def families(m, s0, theta, gb, ar=0.0, ratio=CT_RATIO):
+    """Every top-zone family of the law (normalised as jkrcyl.numerics.cohesive: m, s0, vartheta, gb, ar): one
+    TopZoneBranch per contact of its single patch where h(pi) = h0 with a local minimum of the gap at the top
+    (:func:`junctions`, in increasing eps), traced by :func:`trace`; [] where the gap at the top never reaches the
+    range.
+
+    Examples
+    --------
+    >>> from jkrcyl.numerics.cohesive_scales import zone_strength
+    >>> [(b.end, round(b.junction.delta_over_Delta, 4), round(b.onset.delta_over_Delta, 4))
+    ...  for b in families(1.0, zone_strength(50.0, 1.0), 10.0, 1 / 2.8, ratio=3.0)]
+    [('top closes', -1.7279, -1.1727), ('top closes', -1.1528, -0.61)]
+    """
+    law = law_of(m, s0, theta, gb, ar)
+    return [trace(law, st, ratio=ratio) for st, _ in junctions(law)]
+
+
+def trace(law, start, ct_start=CT_START, ratio=CT_RATIO):
+    """The top-zone family from the junction state start (:func:`junction`), c_top from ct_start by the factor
+    ratio per point (eps predicted from the last two, linear in log c_top), to its end (TopZoneBranch; 'top
+    closes' refined to h(pi) = 0 by Brent in c_top)."""
+    states, eps, d, step = [], start.eps, start.c - start.eps, ratio
+    ct, end, onset = ct_start, "", None
+    while len(states) < CT_MAX_POINTS:
+        st = _eps_root(law, ct, _predict(states, ct, eps), d)
+        if st is None:                                # refine the step before calling it an end
+            if step - 1 > RATIO_MIN and states:
+                step = math.sqrt(step)
+                ct = states[-1].c_top * step
+                continue
+            end = _end_reason(law, eps, d, ct)
+            break
+        if st.h_pi_over_Delta <= 0:
+            onset = _onset(law, states[-1] if states else start, st)
+            end = "top closes"
+            break
+        states.append(st)
+        eps, d, ct = st.eps, st.c - st.eps, st.c_top * step
+    return TopZoneBranch(start, states, end or "points", onset)
+
+
+def _predict(states, ct, eps):
+    """eps at the top zone ct, extrapolated linearly in log c_top from the last two states (else eps)."""
+    if len(states) < 2:
+        return eps
+    a, b = states[-2:]
+    guess = b.eps + (b.eps - a.eps) * math.log(ct / b.c_top) / math.log(b.c_top / a.c_top)
+    return guess if 0.5 * b.eps < guess < 2 * b.eps else b.eps
+
+
+def _end_reason(law, eps, d, ct):
+    """Why no state follows the last one (eps, d = c - eps) at the next c_top = ct."""
+    if eps < 0.1 * law.eps_lo:                     # below the single patch's own touch end: the contact vanishes
+        return "touch"
+    if eps > law.eps_hi * (1 - 1e-3):
+        return "receding limit"
+    if eps + d + ct >= math.pi * (1 - 1e-6):
+        return "zones meet"
+    return "no root"
+
+
+def _onset(law, before, after):
+    """The state of the family between before (h(pi) > 0) and after (h(pi) <= 0) where h(pi) = 0."""
+    memo = {}
+
+    def f(ct):
+        st = _eps_root(law, ct, before.eps, before.c - before.eps)
+        memo[ct] = st
+        return math.nan if st is None else st.h_pi_over_Delta
+    lo = max(before.c_top, CT_START * 1e-3)         # before solves h(pi - lo) = h0 already: its h(pi) is f(lo)
+    ct = _roots.brent(lambda x, _: f(x), lo, after.c_top, (), before.h_pi_over_Delta, after.h_pi_over_Delta,
+                      1e-13 * after.c_top)
+    return memo.get(ct) or _eps_root(law, ct, before.eps, before.c - before.eps)
+
+
+def state_at(law, c_top, eps_guess, d_guess):
+    """The top-zone state with the top zone c_top, solved alone: its eps the root nearest to eps_guess, the bottom
+    zone end nearest to eps + d_guess (a check on the traced family)."""
+    return _eps_root(law, c_top, eps_guess, d_guess)
+
+
+# --- energy and stability -------------------------------------------------------------------------------------
+def potential(st):
+    """Total potential (kernel scale): elastic energy and the Dugdale interface energy of both zones
+    (jkrcyl.numerics.cohesive_branch.potential)."""
+    return _cb.potential(st)
+
+
+def held_state(law, c, c_top, control, value, eps_guess):
+    """The state with the zone ends c and c_top held, k = 0 at the contact edge and the control's quantity at value
+    ('grip': delta/Delta, 'load': p): a scalar root in eps near eps_guess (bracketed, Brent).  Returns (state,
+    [h(c) - h0, h(pi - c_top) - h0])."""
+    if control not in ("grip", "load"):
+        raise ValueError(f"control must be 'grip' or 'load', got {control!r}")
+    zones = _co.zones_of(c, c_top)
+
+    def pieces(eps):
+        fc = law.fixed(eps)
+        ua = fc.fx[3] + law.s0 * fc.zone_unit(zones)
+        if control == "grip":
+            dn = value
+        else:
+            p_a = fc.load_width(ua, zones, law.s0)[0]
+            dn = (value - p_a) / (fc.ep @ fc.fx[4])
+        u = ua + dn * fc.fx[4]
+        return fc, dn, u, fc.ek @ u
+
+    k = lambda eps: pieces(eps)[3]
+    lo, hi, step = eps_guess, eps_guess, 1e-6
+    klo = khi = k(eps_guess)
+    while klo * khi > 0 and step < 5.0:                # a bracket up to e^5 either way (a held state near the touch)
+        lo, hi = eps_guess * math.exp(-step), min(eps_guess * math.exp(step), 0.5 * (eps_guess + c))
+        klo, khi, step = k(lo), k(hi), step * 2
+    if klo * khi > 0:
+        raise ValueError(f"eps_guess: no zone-end-held state near the contact {eps_guess:g}")
+    eps = _roots.brent(lambda x, _: k(x), lo, hi, (), klo, khi, EPS_XTOL * hi)
+    fc, dn, u, _ = pieces(eps)
+    st = _co._state(eps, c, fc, dn, u, zones, law.m, law.s0, law.kernel, law.gb, fc.sys.n, c_top)
+    return st, st.fields.gap(np.array([c, math.pi - c_top])) - law.h0
+
+
+def zone_matrix(law, st, control):
+    """G_ij = d(h(c_i) - h0)/dc_j at the held quantity of control (central differences of zone-end-held states,
+    steps HOLD_STEP times each zone length, c - eps and c_top, or the contact eps if smaller: near the touch the
+    held contact moves ~ (c step)/eps and vanishes under load a step ~ eps away), unsymmetrised."""
+    value = st.delta_over_Delta if control == "grip" else st.p
+    ends = np.array([st.c, st.c_top])
+    steps = HOLD_STEP * np.minimum([st.c - st.eps, st.c_top], st.eps)
+    G = np.empty((2, 2))
+    for j in range(2):
+        g = [held_state(law, *(ends + sgn * steps[j] * np.eye(2)[j]), control, value, st.eps)[1] for sgn in (1, -1)]
+        G[:, j] = (g[0] - g[1]) / (2 * steps[j])
+    return G
+
+
+def stable(law, st, control, G=None):
+    """Whether the top-zone state st is stable under control ('grip' or 'load'): the held energy a minimum, G's
+    symmetric part positive definite."""
+    G = zone_matrix(law, st, control) if G is None else G
+    return bool(np.all(np.linalg.eigvalsh(0.5 * (G + G.T)) > 0))
