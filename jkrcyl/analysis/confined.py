@@ -35,12 +35,14 @@ _DESCENT = {"full": "snap-in-full", "transfer": "snap-in-transfer", "two-patch":
 
 
 def _onsets(pb: Problem):
-    """(eps, P*, delta/Delta, stable under load) of every single-patch state with h(pi) = 0."""
+    """(eps, P*, delta/Delta, stable under load) of every single-patch state where the top adheres: h(pi) equal
+    to the law's range (JKR: h(pi) = 0; the cohesive law: h0, jkrcyl.analysis.landing.top_onset)."""
     if not pb.models("two-patch"):     # a law's branch parameter is not tan(eps/2): its states at the roots of h
         un = Units.normalised(pb, K_edge=1.0)
+        h0 = pb.edge.range_over_Delta(pb.m)
         return tuple(sorted((s.eps, s.P_star, s.delta_over_Delta, s.stable_load) for r in _br.solver(pb).regimes()
                             if r != _br.ZONE_ONLY for s in _fw.single_patch_states(
-                                pb, un, r, [a for a, _ in _br.roots(pb, r, "h")], "load")))
+                                pb, un, r, [a for a, _ in _br.roots(pb, r, "h", h0)], "load")))
     out = []
     for e in _tr.onset_angles(pb):
         a = math.tan(e / 2)

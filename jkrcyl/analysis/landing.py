@@ -16,6 +16,7 @@ from ..units import CONTROLS, Units
 from . import branches as _br
 from . import cohesive_two_patch as _cohesive
 from . import forward as _fw
+from . import tracing as _tr
 from .two_patch_family import family as _family
 
 
@@ -113,7 +114,8 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
             return None, "top-contact"
         two = [_fw.two_patch_state(pb, un, x, control) for x, _ in _cohesive.land_two_patch(pb, control, target)]
         cands = [x for x in cands if x.branch != "two-patch"] + [x for x in two if x.stable and x.feasible]
-        return _land_on_top_contact(pb, s, cands, control, target, Problem(pb.M, pb.theta, pb.gb)), "top-contact"
+        jkr = Problem(pb.M, pb.theta, pb.gb)
+        return _land_on_top_contact(pb, s, cands, control, _jkr_onset(jkr, s, control), jkr), "top-contact"
     return _land_on_top_contact(pb, s, cands, control, target), "top-contact"
 
 
@@ -128,17 +130,21 @@ def two_patch_refusal(pb: Problem) -> str:
 
 
 def top_onset(pb: Problem, un: Units, s, control: str):
-    """The state of the branch of s where h(pi) = 0 between s (a feasible table point, the walk's 'gap') and its
-    infeasible neighbour with h(pi) <= 0: where the top closes (a law whose table is coarse there, the cohesive
-    one, lands from it); s itself where no such neighbour brackets a root."""
+    """The state of the branch of s where the gap at the top reaches the law's range, h(pi) = h0 (JKR: 0),
+    between s (a feasible table point, the walk's 'gap') and its infeasible neighbour below it: where the top
+    adheres (the law's table is coarse there: the walk lands from this state).  Under the cohesive law the single
+    patch ends there, not where h(pi) = 0: below h0 the law pulls at the top, and the top-zone states beyond
+    (jkrcyl.numerics.cohesive_top_zone) are saddles, the barrier to two patches vanishing at h(pi) = h0 -- a
+    fold of the combined branch.  s itself where no such neighbour brackets a root."""
     regime = s.branch.replace("-top", "")
     t = _br.table(pb, regime)
-    a, h = np.asarray(t.a), np.asarray(t.h_pi_over_Delta)
+    h0 = pb.edge.range_over_Delta(pb.m)
+    a, h = np.asarray(t.a), np.asarray(t.h_pi_over_Delta) - h0
     i = int(np.argmin(np.abs(a - s.a)))
     for k in (i - 1, i + 1):
         if 0 <= k < a.size and h[k] <= 0 < h[i]:
             (lo, flo), (hi, fhi) = sorted(((float(a[i]), float(h[i])), (float(a[k]), float(h[k]))))
-            r = solver(pb).root("h", lo, hi, flo, fhi)
+            r = solver(pb).root("h", lo, hi, flo, fhi, target=h0)
             if r is not None:
                 return _fw.single_patch_states(pb, un, regime, [r], control, s.side)[0]
     return s
@@ -168,11 +174,25 @@ def _pull_off_landing(s, cands, control):
     return min(other, key=lambda x: x.size) if other else None
 
 
+def _jkr_onset(jkr: Problem, s, control: str) -> float:
+    """The held value (normalised: P*, delta/Delta, delta_work/Delta) of JKR's top onset (h(pi) = 0) nearest to
+    the contact of s: where JKR's descent predicts what follows a law's top onset (the law's top adheres at
+    h(pi) = h0, earlier than JKR's by ~h0 log(lambda): jkrcyl.numerics.cohesive_top_zone)."""
+    on = []
+    for e in _tr.onset_angles(jkr):
+        c = _br.values_at(jkr, solver(jkr).regime_of(math.tan(e / 2)), math.tan(e / 2))
+        on.append((abs(e - s.eps), float({"load": c.P_star, "grip": c.delta_over_Delta,
+                                          "grip-work": c.delta_work_over_Delta}[control][0])))
+    v = min(on)[1]
+    return v if s.side != "top" else -v if control == "load" else -2.0 - v     # a walk at the top: its mirror
+
+
 def _land_on_top_contact(pb, s, cands, control, target, jkr=None):
-    """The gap at phi = pi closes (h(pi) = 0, the walk's 'gap'): a nascent top contact appears and the edges relax
-    at the held value (jkrcyl.model.two_patch.descend); the landing is the candidate where that relaxation ends
-    -- full contact, the patch on the other side (the bottom arc vanished), or the two-patch state nearest to
-    the end point.  jkr: the problem whose descent predicts it (a law with thin zones: JKR's, its limit)."""
+    """The gap at phi = pi closes (h(pi) = 0, the walk's 'gap'; the law's range h0 for a cohesive law): a nascent
+    top contact appears and the edges relax at the held value (jkrcyl.model.two_patch.descend); the landing is the
+    candidate where that relaxation ends -- full contact, the patch on the other side (the bottom arc vanished),
+    or the two-patch state nearest to the end point.  jkr: the problem whose descent predicts it (a law with thin
+    zones: JKR's, its limit, at its own onset: target is then JKR's held value there, :func:`_jkr_onset`)."""
     pb = pb if jkr is None else jkr
     if s.side == "top":            # the mirror (P* -> -P*, approach -> -2 - approach): solve it at the bottom
         mirrored = -target if control == "load" else -2.0 - target

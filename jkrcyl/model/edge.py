@@ -119,6 +119,27 @@ class Edge:
         ValueError: M must be > 0 with the Maugis-Dugdale law (w > 0: lambda and h0 = w/sigma0 need it)
         """
 
+    def range_over_Delta(self, m: float) -> float:
+        """The range of the adhesive traction over the clearance: a gap below it is pulled (the top of the hole
+        adheres where h(pi) falls below it, jkrcyl.analysis.landing.top_onset); 0 for an edge of zero range.
+
+        Parameters
+        ----------
+        m : float
+            The adhesion M vartheta (M_R* for vartheta = inf).
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> from jkrcyl.laws import GRIFFITH_EDGE
+        >>> GRIFFITH_EDGE.range_over_Delta(0.3)
+        0.0
+        """
+        return 0.0
+
     def models(self, family: str) -> bool:
         """Whether the branch family is modelled for this law.
 
