@@ -109,8 +109,13 @@ def test_bad_input_names_the_parameter(kw, name):
 
 
 def test_too_thin_a_zone_is_refused_naming_sigma0():
+    """Beyond the law's LAMBDA_MAX = 1e4 (the zone thinner than double precision keeps), and without the end
+    layers where the zones would need more than NODES_MAX_TWO nodes per arc (lambda = 400: ~2600)."""
+    with pytest.raises(ValueError, match="^sigma0 is too large for the cohesive law"):
+        cohesive(2e4)
     with pytest.raises(ValueError, match="^sigma0 is too large for the two-arc cohesive solver"):
-        cohesive(400.0)
+        ct.solve(EPS_TOP, M * THETA, zone_strength(400.0, M * THETA), THETA, GB, 0.0, guess=jkr_state().eps,
+                 layered=False)
 
 
 def test_no_state_near_the_guess_is_a_value_error():
@@ -155,8 +160,9 @@ def test_mirror_state_is_the_solve_with_the_arcs_swapped():
 
 # --- stability: the energy of zone-end-held states ------------------------------------------------------------
 def _law(lam, theta=THETA, gb=GB, M_=M):
+    """The law of ct.solve's states at lambda = 20 (zones thin enough for their end layers to be subtracted)."""
     from jkrcyl.numerics import arcs
-    return ct._Law(M_ * theta, zone_strength(lam, M_ * theta), arcs.Kernel(theta, gb))
+    return ct._Law(M_ * theta, zone_strength(lam, M_ * theta), arcs.Kernel(theta, gb), layered=True)
 
 
 @pytest.mark.slow

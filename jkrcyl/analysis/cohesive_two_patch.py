@@ -44,7 +44,7 @@ class CohesiveTwoPatch:
         self.pb = pb
         self.jkr = Problem(pb.M, pb.theta, pb.gb, pb.alpha_ratio)
         m, s0, kernel = _co._law(pb.m, pb.edge.s0, pb.theta, pb.gb, 0.0)
-        self.law = _cb.BranchLaw(m, s0, kernel)
+        self.law = _cb.BranchLaw(m, s0, kernel, layered=True)
 
     # --- states ---------------------------------------------------------------------------------------------
     def result(self, st) -> TwoPatchState:
