@@ -84,7 +84,10 @@ def needs_layers(eps, eps_top, d):
 
 
 def _wrap(phi):
-    return np.angle(np.exp(1j * np.asarray(phi, dtype=float)))
+    """phi wrapped to [-pi, pi], angles already there unchanged (not rounded: the gap at a thin zone's end moves
+    by ~1e-12 per ulp of the angle at lambda = 1000)."""
+    phi = np.asarray(phi, dtype=float)
+    return np.where(np.abs(phi) <= math.pi, phi, np.angle(np.exp(1j * phi)))
 
 
 class FixedArcs:
@@ -237,6 +240,8 @@ def solve(eps_top, m, s0, theta, gb, ar, guess, n=None, tol=1e-11, layered=None)
         raise ValueError(f"guess must be < pi - eps_top = {math.pi - eps_top!r}, got {guess!r}")
     d0 = min(_co.dugdale_zone(m, s0), 0.25 * (math.pi - guess - eps_top))
     layered = needs_layers(guess, eps_top, d0) if layered is None else bool(layered)
+    if layered:
+        _layer.check_lambda(m, s0)
     law = _Law(m, s0, kernel, layered)
     n = nodes(guess, eps_top, d0, ar, layered) if n is None else _co.count("n", n, 8, NODES_MAX_TWO)
     x = newton(lambda y: law.residual(y, eps_top, n), np.array([guess, math.log(d0), math.log(d0)]),

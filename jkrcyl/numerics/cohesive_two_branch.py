@@ -37,14 +37,16 @@ from threadpoolctl import ThreadpoolController
 
 from . import cohesive as _co
 from . import cohesive_two as _two
+from . import cohesive_two_layer as _layer
 from . import roots as _roots
 
 ZONE_MAX = 0.02           # the largest Dugdale zone estimate followed [rad] (lambda >~ 8 at M = 0.2)
 ARC_STEP = 1e-6           # central differences of the half-angles in flags, relative
 ZONE_STEP = 1e-5          # ... of the zone ends and the approach, relative to the zone length
 SECANT_STEPS = 12         # Newton steps at most (a warm start takes 2-4)
-STEP_FLOOR = 1e-10        # a full Newton step below this (relative, the free half-angle) ends it: the rounding floor
-                          # of k_top at a small top arc and thin zones (~1e-10 at lambda = 1000, eps_top = 3.5e-4)
+RESIDUAL_FLOOR = 1e-8     # Newton ends where its steps stop reducing residuals below this (the rounding floor,
+                          # above tol at thin zones: k_top ~2e-11, h(c) - h0 ~3e-12 at lambda = 1000 -- terms of
+                          # size s0 ~ 85 cancel -- and k_top ~1e-10 at a top arc of 3.5e-4)
 END_ARC = 1e-4            # a branch end at an axis: the smaller arc followed down to this [rad]
 END_FACTOR = 0.1          # ... shrinking by this factor per state
 REUSE_SPAN = 0.05         # arcs within this (in log half-angle) of a factorised pair reuse its LU
@@ -137,12 +139,14 @@ def require_alpha_zero(ar):
 def branch_nodes(points, m, s0, ar=0.0):
     """Nodes per arc for the states near the scaffold points (k, 2), with the end layers subtracted (module
     docstring: a count independent of lambda); ValueError naming sigma0 where the zones are not small
-    (d > ZONE_MAX: low lambda, where JKR's branch is no guide to the law's)."""
+    (d > ZONE_MAX: low lambda, where JKR's branch is no guide to the law's) or too thin (lambda beyond
+    cohesive_two_layer.LAMBDA_MAX)."""
     d = _co.dugdale_zone(m, s0)
     if d > ZONE_MAX:
         raise ValueError(f"sigma0: the two-patch branches are followed from JKR's where the Dugdale zones are "
                          f"small (~{d:.3g} rad > {ZONE_MAX} here: the transition parameter lambda = "
                          f"{4 * s0 / m ** (2 / 3):.3g} is too small for it)")
+    _layer.check_lambda(m, s0)
     return max(_two.nodes(e, et, d, ar, layered=True) for e, et in points)
 
 
@@ -190,7 +194,7 @@ def solve_at(law, held, value, guess, d0, n, jx=None, tol=1e-11):
             col[0] = (rt - r - J[:, 1:] @ dz[1:]) / dz[0]
 
     got = _roots.damped_newton(f, z, jacobian, scale, tol, np.array([0.2 * z[0], 2.0, 2.0]), SECANT_STEPS, 6,
-                               np.array([STEP_FLOOR * z[0], 1e-8, 1e-8]), secant)
+                               RESIDUAL_FLOOR * scale, secant)
     if got is None:
         raise NotFound
     z, jx = got[0], col[0]

@@ -8,7 +8,11 @@ Chebyshev resolves only with ~sqrt(eps/(c - eps)) nodes (564 per arc at lambda =
 the same function about pi (K depends on phi - psi only).  The rest w = v - v_bot - v_top solves the two-arc
 system with the right-hand side of a unit zone traction -Z_C + Q_bot + Q_top at the collocation points,
 Q the layer's exact potential (cohesive_layer.potential), and is smooth: a node count of JKR's arcs, whatever the
-zone length (lambda up to LAMBDA_MAX).
+zone length.  What bounds lambda (LAMBDA_MAX) is rounding, not nodes: the zone-end gaps h(c) - h0 are sums of terms
+of size ~s0 (the zone's and the layer's potentials, which cancel) and carry ~1e-12 of noise at lambda = 1000, which
+the thin zones' weak hold on the arcs amplifies ~1e4 into the half-angles (measured along the branch at M = 0.2,
+64 against 96 nodes per arc: P* 4e-9 at lambda = 200, 1e-7 at 1000, 3e-7 at 2000, 1e-4 at 5000; the states'
+distance to JKR's is ~0.2 lambda^-2 in P* there).
 
 Q of an arc at any angle of the circle, wrapped to x = (phi - centre)/e with |x| <= pi/e: the layer's log part in
 closed form, the analytic rest of K by cohesive_layer's 32-point Chebyshev moments, whose nearest singularity
@@ -24,7 +28,16 @@ import numpy as np
 from . import arcs_enrich as _en
 from . import cohesive_layer as _cl
 
-LAMBDA_MAX = 1e4          # as one arc: c = eps + d keeps d only to ulp(c) (~1e-8 relative at 1e4)
+LAMBDA_MAX = 1e3          # the transition parameter 4 s0/m^(2/3) resolved on two arcs (module docstring)
+
+
+def check_lambda(m, s0):
+    """ValueError naming sigma0 where lambda = 4 s0/m^(2/3) exceeds LAMBDA_MAX (module docstring)."""
+    lam = 4 * s0 / m ** (2 / 3)
+    if lam > LAMBDA_MAX:
+        raise ValueError(f"sigma0 is too large for the two-arc cohesive solver: its transition parameter lambda = "
+                         f"{lam:.4g} must be at most {LAMBDA_MAX:g} (at most {LAMBDA_MAX / lam:.3g} times this "
+                         f"sigma0; the two-patch states are JKR's there to O(lambda^-2) ~ {lam ** -2:.1g})")
 
 
 def zone_ends(zones):
@@ -100,4 +113,7 @@ class Layers:
 
 
 def _wrap(phi):
-    return np.angle(np.exp(1j * np.asarray(phi, dtype=float)))
+    """phi wrapped to [-pi, pi], angles already there unchanged (not rounded: the gap at a thin zone's end moves
+    by ~1e-12 per ulp of the angle at lambda = 1000)."""
+    phi = np.asarray(phi, dtype=float)
+    return np.where(np.abs(phi) <= math.pi, phi, np.angle(np.exp(1j * phi)))

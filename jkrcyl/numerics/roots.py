@@ -205,14 +205,20 @@ def secant(f, x0, x1, lo, hi, tol=1e-13, maxit=40):
     return x1, f1
 
 
-def damped_newton(f, x, jacobian, scale, tol, largest, max_steps, halvings, xtol=None, after_step=None):
+def damped_newton(f, x, jacobian, scale, tol, largest, max_steps, halvings, floor=None, after_step=None):
     """Newton on a small system f(x) = 0 (f: a vector, or None outside its domain) with the Jacobian
     ``jacobian(x, r)`` (None: singular or not computable), each step scaled down to |dx_i| <= largest_i and halved
-    while |f/scale| does not decrease (at most ``halvings`` times).  Converged where |f_i| < tol scale_i, or where
-    a full step is within xtol (componentwise, when given: the residual's rounding floor reached -- the point
-    after that step is taken); ``after_step(x, dx, r, r_new, J)`` sees each accepted step (e.g. a secant update
-    of a column).  Returns (x, f(x)), or None (no convergence in max_steps, the domain left, no Jacobian)."""
+    while |f/scale| does not decrease (at most ``halvings`` times).  Converged where |f_i| < tol scale_i; or, with
+    floor given, where the steps stop reducing f (the line search fails, or max_steps run out) at |f_i| < floor_i:
+    f's rounding floor reached above tol (the best point is returned).  ``after_step(x, dx, r, r_new, J)`` sees
+    each accepted step (e.g. a secant update of a column).  Returns (x, f(x)), or None (no convergence, the domain
+    left, no Jacobian)."""
     r = f(x)
+    best = (x, r)
+
+    def at_floor():
+        return floor is not None and best[1] is not None and np.all(np.abs(best[1]) < floor)
+
     for _ in range(max_steps):
         if r is None:
             return None
@@ -223,19 +229,18 @@ def damped_newton(f, x, jacobian, scale, tol, largest, max_steps, halvings, xtol
             return None
         dx = np.linalg.solve(J, -r)
         dx *= min(1.0, float(np.min(largest / np.maximum(np.abs(dx), 1e-300))))
-        if xtol is not None and np.all(np.abs(dx) <= xtol):
-            rt = f(x + dx)
-            return None if rt is None else (x + dx, rt)
         for _ in range(halvings):
             rt = f(x + dx)
             if rt is not None and np.linalg.norm(rt / scale) < np.linalg.norm(r / scale):
                 break
             dx /= 2
         else:
-            return None
+            return best if at_floor() else None
         if after_step is not None:
             after_step(x, dx, r, rt, J)
         x, r = x + dx, rt
+        if np.linalg.norm(r / scale) < np.linalg.norm(best[1] / scale):
+            best = (x, r)
     if r is not None and np.all(np.abs(r) < tol * scale):
         return x, r
-    return None
+    return best if at_floor() else None
