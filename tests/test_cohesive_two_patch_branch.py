@@ -39,9 +39,15 @@ def problem(M, lam):
 
 
 def jkr_at(M, e, et):
-    """JKR's two-patch state with the larger of (e, et) held (tests/ reference: model.two_patch's secant on F)."""
+    """JKR's two-patch state with the larger of (e, et) held (tests/ reference: model.two_patch's secant on F), at
+    JKR_NODES per arc: its default count is too few at large near-touching arcs (M = 0.2, eps_top 0.3633: 31
+    nodes, 7e-5 off in eps; tests/test_cohesive_two_layer.py), which once passed for a faster-than-lambda^-2 P*."""
     jkr = EQ.problem(M, THETA, GB)
-    return tp.solve(jkr, eps_top=et, guess=e) if et < e else tp.solve(jkr, eps=e, guess=et)
+    return (tp.solve(jkr, eps_top=et, guess=e, n=JKR_NODES) if et < e else
+            tp.solve(jkr, eps=e, guess=et, n=JKR_NODES))
+
+
+JKR_NODES = 96
 
 
 @pytest.fixture(scope="module")
@@ -186,13 +192,12 @@ def _limit_errors(M, lam):
 
 @pytest.mark.slow
 def test_jkr_limit_at_lambda_50_and_100():
-    """M = 0.3 (its branch's largest arc 2.4 keeps lambda = 100 within the node budget, 922 per arc): the law's
-    bottom arc, P* and delta/Delta at the same top arc equal JKR's within C/lambda^2, measured max over the three
-    arcs at lambda = 50, 100: C_eps = 2.396, 2.393 and C_delta = 0.0743, 0.0745 (second order: the same C),
-    C_P = 0.091, 0.060 (better than second order: the P* difference falls faster)."""
+    """M = 0.3: the law's bottom arc, P* and delta/Delta at the same top arc equal JKR's within C/lambda^2,
+    measured max over the three arcs at lambda = 50, 100: C_eps = 2.396, 2.392, C_P = 0.1009, 0.1009, C_delta =
+    0.0742, 0.0741 -- second order, the same C (against JKR at 24-31 nodes per arc C_P read 0.091, 0.060)."""
     c50, c100 = _limit_errors(0.3, 50.0), _limit_errors(0.3, 100.0)
-    assert np.all(c50 < [2.5, 0.1, 0.08]) and np.all(c100 < [2.5, 0.1, 0.08])
-    assert abs(c100[0] / c50[0] - 1) < 0.01 and abs(c100[2] / c50[2] - 1) < 0.01 and c100[1] < 0.8 * c50[1]
+    assert np.all(c50 < [2.5, 0.12, 0.08]) and np.all(c100 < [2.5, 0.12, 0.08])
+    assert np.all(np.abs(c100 / c50 - 1) < 0.01)
     assert np.all(c50 > [2.0, 0.05, 0.05])               # a finite zone: not JKR's states themselves
 
 
