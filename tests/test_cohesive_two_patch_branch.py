@@ -17,6 +17,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import assume, given
+from hypothesis import strategies as hst
 
 import jkrcyl
 from jkrcyl.analysis.cohesive_two_patch import land_two_patch
@@ -218,3 +220,12 @@ def test_contact_two_patch_and_solve_by_name():
     got = c.solve(P=P, branches=["two-patch"])
     assert got and all(abs(s.P / P - 1) < 1e-9 and abs(s.extra["G_top"] - 1) < 1e-9 for s in got)
     assert all(s.branch != "two-patch" for s in c.solve(P=P))
+
+
+@given(hst.lists(hst.floats(-10, 10), min_size=4, max_size=4))
+def test_positive_definite_in_closed_form_is_the_eigenvalues(entries):
+    """The flags' 2 x 2 test (first entry and determinant of the symmetric part) against LAPACK's eigenvalues."""
+    G = np.array(entries).reshape(2, 2)
+    ev = np.linalg.eigvalsh(0.5 * (G + G.T))
+    assume(np.min(np.abs(ev)) > 1e-9 * max(1.0, np.max(np.abs(ev))))     # off the boundary (rounding decides there)
+    assert cs.positive_definite(G) == bool(np.all(ev > 0))

@@ -38,6 +38,7 @@ from threadpoolctl import ThreadpoolController
 from . import cohesive as _co
 from . import cohesive_two as _two
 from . import cohesive_two_layer as _layer
+from . import cohesive_two_stability as _stab
 from . import roots as _roots
 
 ZONE_MAX = 0.02           # the largest Dugdale zone estimate followed [rad] (lambda >~ 8 at M = 0.2)
@@ -245,7 +246,7 @@ def flags(J, work_shift):
     out = []
     for a, b in ((0.0, 1.0), (1.0, 0.0), (1.0, work_shift)):
         G = zone_matrix(J, a, b)
-        out.append(bool(np.all(np.linalg.eigvalsh(0.5 * (G + G.T)) > 0)))
+        out.append(_stab.positive_definite(G))
     return tuple(out)
 
 

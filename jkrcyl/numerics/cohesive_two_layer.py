@@ -40,6 +40,9 @@ def check_lambda(m, s0):
                          f"sigma0; the two-patch states are JKR's there to O(lambda^-2) ~ {lam ** -2:.1g})")
 
 
+MEMO = 4                  # zone ends whose right-hand side part is kept, per arc
+
+
 def zone_ends(zones):
     """(c, c_top) of a zone set of cohesive.zones_of (0 where a zone is absent), or None for the zone all round
     (no zone end: no layer)."""
@@ -62,7 +65,7 @@ class Layers:
         self.arcs = ((0.0, float(eps)), (math.pi, float(eps_top)))
         self.kernel = kernel
         k0, k1 = kernel.k0, kernel.k1
-        self.trig, self.tables, self.x = [], [], []
+        self.trig, self.tables, self.x, self.memo = [], [], [], ({}, {})
         n = points.size // 2
         for centre, e in self.arcs:
             gc, gs = _cl.trig_coefficients(e, _en.K_TRIG)
@@ -73,13 +76,24 @@ class Layers:
             self.tables.append(tuple(_cl.smooth_table(xi, e, k0, k1, 0.0, n) for xi in self.x[-1]))
 
     def rhs(self, c, c_top):
-        """Q_bot + Q_top at the collocation points (unit s0): what a unit zone traction's right-hand side adds."""
+        """Q_bot + Q_top at the collocation points (unit s0): what a unit zone traction's right-hand side adds.
+        Each arc's part is kept for its last few zone ends (a Newton's differences move one zone end at a time)."""
         out = 0.0
-        for (centre, e), end, (gc, gs, q), xs, tabs in zip(self.arcs, (c, c_top), self.trig, self.x, self.tables):
+        for i, ((centre, e), end) in enumerate(zip(self.arcs, (c, c_top))):
             if end > e:
-                out = out + np.concatenate([_cl.potential(x, e, end, self.kernel.k0, self.kernel.k1, 0.0, gc, gs,
-                                                          q, t, x.size) for x, t in zip(xs, tabs)])
+                out = out + self._arc_rhs(i, end)
         return out
+
+    def _arc_rhs(self, i, end):
+        memo = self.memo[i]
+        if end not in memo:
+            if len(memo) >= MEMO:
+                memo.pop(next(iter(memo)))
+            e = self.arcs[i][1]
+            gc, gs, q = self.trig[i]
+            memo[end] = np.concatenate([_cl.potential(x, e, end, self.kernel.k0, self.kernel.k1, 0.0, gc, gs, q, t,
+                                                      x.size) for x, t in zip(self.x[i], self.tables[i])])
+        return memo[end]
 
     def at(self, phi, c, c_top):
         """Q_bot + Q_top at angles phi (any, e.g. outside the arcs: the gap subtracts s0 times it)."""

@@ -80,4 +80,11 @@ def stable(law, st, control, G=None):
     """Whether the two-patch state st is stable under control ('load' or 'grip'): G's symmetric part positive
     definite (module docstring); G: :func:`zone_matrix` when already computed."""
     G = zone_matrix(law, st, control) if G is None else G
-    return bool(np.all(np.linalg.eigvalsh(0.5 * (G + G.T)) > 0))
+    return positive_definite(G)
+
+
+def positive_definite(G):
+    """Whether the symmetric part of the 2 x 2 matrix G is positive definite (both eigenvalues > 0: its first
+    entry and its determinant > 0; in closed form -- LAPACK's call costs ~1 ms on a loaded machine)."""
+    a, b, d = G[0, 0], 0.5 * (G[0, 1] + G[1, 0]), G[1, 1]
+    return bool(a > 0 and a * d - b * b > 0)
