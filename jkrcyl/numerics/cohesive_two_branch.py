@@ -5,10 +5,12 @@ A state (:func:`solve_at`): one half-angle held, Newton in z = (the other, log d
 [k_top, h(c) - h0, h(pi - c_top) - h0] (k_bot = 0 fixes delta at given arcs and zones).  The zone columns of the
 Jacobian are differences at the same arcs (back-substitutions: only the zone right-hand side changes), the arc
 column a secant update along the iterates, started from the neighbour's: one new fixed-arc system per step.
-Profile of the cold cohesive_two.solve (lambda = 50, M = 0.2): 7 LUs of 2 x 760 unknowns, 0.2 s each, were the
-whole cost, and the assembly of a system costs about as much as its LU.  Here a new system near a factorised one
-(REUSE_SPAN) is solved by iterative refinement with that LU (:class:`BranchLaw`, :class:`Refined`: O(n^2), to the
-LU's own residual), so a state costs about one LU plus its assemblies.
+A new system near a factorised one (REUSE_SPAN) is solved by iterative refinement with that LU (:class:`BranchLaw`,
+:class:`Refined`: O(n^2), to the LU's own residual).  The Newton is jkrcyl.numerics.roots.damped_newton; where
+thin zones leave the residuals a rounding floor above tol (lambda ~ 1000) it ends at RESIDUAL_FLOOR.  Measured at
+M = 0.2 (benchmarks/bench_cohesive_two.py): the whole branch (16 states and their flags) in ~0.8 s CPU at every
+lambda from 20 to 1000 with the end layers (64 nodes per arc), where without them it took 2.6 / 29 s at lambda =
+20 / 50 (225 / 564 nodes per arc: 216 assemblies of 0.09 s at 50).
 
 The branch (:func:`trace`): JKR's (jkrcyl.analysis.tracing; the limit lambda -> inf, O(lambda^-2) away) is the
 scaffold.  At each scaffold point the half-angle that varies most along it is held at JKR's value and the other
