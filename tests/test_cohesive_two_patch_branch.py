@@ -17,6 +17,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import assume, given
+from hypothesis import strategies as hst
 
 import jkrcyl
 from jkrcyl.analysis.cohesive_two_patch import land_two_patch
@@ -39,9 +41,15 @@ def problem(M, lam):
 
 
 def jkr_at(M, e, et):
-    """JKR's two-patch state with the larger of (e, et) held (tests/ reference: model.two_patch's secant on F)."""
+    """JKR's two-patch state with the larger of (e, et) held (tests/ reference: model.two_patch's secant on F), at
+    JKR_NODES per arc: its default count is too few at large near-touching arcs (M = 0.2, eps_top 0.3633: 31
+    nodes, 7e-5 off in eps; tests/test_cohesive_two_layer.py), which once passed for a faster-than-lambda^-2 P*."""
     jkr = EQ.problem(M, THETA, GB)
-    return tp.solve(jkr, eps_top=et, guess=e) if et < e else tp.solve(jkr, eps=e, guess=et)
+    return (tp.solve(jkr, eps_top=et, guess=e, n=JKR_NODES) if et < e else
+            tp.solve(jkr, eps=e, guess=et, n=JKR_NODES))
+
+
+JKR_NODES = 96
 
 
 @pytest.fixture(scope="module")
@@ -55,7 +63,7 @@ def branch20():
 # --- bad input: a ValueError naming the parameter ---------------------------------------------------------------
 @pytest.mark.parametrize("kw, name", [
     (dict(alpha_ratio=0.1), "^alpha_ratio"), (dict(theta=math.inf), "^theta"), (dict(lam=3.0), "^sigma0"),
-    (dict(lam=300.0), "^sigma0"), (dict(n=2), "^n ")])
+    (dict(lam=2e4), "^sigma0"), (dict(lam=2000.0), "^sigma0 is too large for the two-arc"), (dict(n=2), "^n ")])
 def test_bad_input_names_the_parameter(kw, name):
     lam = kw.pop("lam", 20.0)
     args = dict(theta=THETA, n=None, alpha_ratio=0.0)
@@ -137,7 +145,7 @@ def test_stability_matrix_is_the_held_states_one(branch20):
         J = cb.jacobian(fam.law, st)
         for control, (a, c) in (("load", (0.0, 1.0)), ("grip", (1.0, 0.0))):
             mine = cb.zone_matrix(J, a, c)
-            held = cs.zone_matrix(ct._Law(st.m, st.s0, fam.law.kernel), st, control)
+            held = cs.zone_matrix(ct._Law(st.m, st.s0, fam.law.kernel, layered=True), st, control)
             assert np.max(np.abs(mine - held)) < 1e-4 * np.max(np.abs(held))
             assert cs.stable(fam.law, st, control, G=held) == cb.flags(J, fam.pb.work_shift)[("load", "grip").index(
                 control)]
@@ -186,13 +194,12 @@ def _limit_errors(M, lam):
 
 @pytest.mark.slow
 def test_jkr_limit_at_lambda_50_and_100():
-    """M = 0.3 (its branch's largest arc 2.4 keeps lambda = 100 within the node budget, 922 per arc): the law's
-    bottom arc, P* and delta/Delta at the same top arc equal JKR's within C/lambda^2, measured max over the three
-    arcs at lambda = 50, 100: C_eps = 2.396, 2.393 and C_delta = 0.0743, 0.0745 (second order: the same C),
-    C_P = 0.091, 0.060 (better than second order: the P* difference falls faster)."""
+    """M = 0.3: the law's bottom arc, P* and delta/Delta at the same top arc equal JKR's within C/lambda^2,
+    measured max over the three arcs at lambda = 50, 100: C_eps = 2.396, 2.392, C_P = 0.1009, 0.1009, C_delta =
+    0.0742, 0.0741 -- second order, the same C (against JKR at 24-31 nodes per arc C_P read 0.091, 0.060)."""
     c50, c100 = _limit_errors(0.3, 50.0), _limit_errors(0.3, 100.0)
-    assert np.all(c50 < [2.5, 0.1, 0.08]) and np.all(c100 < [2.5, 0.1, 0.08])
-    assert abs(c100[0] / c50[0] - 1) < 0.01 and abs(c100[2] / c50[2] - 1) < 0.01 and c100[1] < 0.8 * c50[1]
+    assert np.all(c50 < [2.5, 0.12, 0.08]) and np.all(c100 < [2.5, 0.12, 0.08])
+    assert np.all(np.abs(c100 / c50 - 1) < 0.01)
     assert np.all(c50 > [2.0, 0.05, 0.05])               # a finite zone: not JKR's states themselves
 
 
@@ -213,3 +220,12 @@ def test_contact_two_patch_and_solve_by_name():
     got = c.solve(P=P, branches=["two-patch"])
     assert got and all(abs(s.P / P - 1) < 1e-9 and abs(s.extra["G_top"] - 1) < 1e-9 for s in got)
     assert all(s.branch != "two-patch" for s in c.solve(P=P))
+
+
+@given(hst.lists(hst.floats(-10, 10), min_size=4, max_size=4))
+def test_positive_definite_in_closed_form_is_the_eigenvalues(entries):
+    """The flags' 2 x 2 test (first entry and determinant of the symmetric part) against LAPACK's eigenvalues."""
+    G = np.array(entries).reshape(2, 2)
+    ev = np.linalg.eigvalsh(0.5 * (G + G.T))
+    assume(np.min(np.abs(ev)) > 1e-9 * max(1.0, np.max(np.abs(ev))))     # off the boundary (rounding decides there)
+    assert cs.positive_definite(G) == bool(np.all(ev > 0))

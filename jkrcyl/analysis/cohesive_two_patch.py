@@ -44,7 +44,7 @@ class CohesiveTwoPatch:
         self.pb = pb
         self.jkr = Problem(pb.M, pb.theta, pb.gb, pb.alpha_ratio)
         m, s0, kernel = _co._law(pb.m, pb.edge.s0, pb.theta, pb.gb, 0.0)
-        self.law = _cb.BranchLaw(m, s0, kernel)
+        self.law = _cb.BranchLaw(m, s0, kernel, layered=True)
 
     # --- states ---------------------------------------------------------------------------------------------
     def result(self, st) -> TwoPatchState:
@@ -87,14 +87,18 @@ class CohesiveTwoPatch:
     def at(self, held, value, guess, n, d0=None) -> TwoPatchState:
         """The state with half-angle ``held`` (0: eps, 1: eps_top) at value, the other from guess, n nodes per
         arc; ValueError naming guess where none is found."""
+        return self.result(self._solve(held, value, guess, n, d0)[0])
+
+    def _solve(self, held, value, guess, n, d0=None, jx=None):
+        """(numerics state, jx) of :meth:`at` (cohesive_two_branch.solve_at; d0: the zone lengths to start from,
+        jx: a neighbour's Jacobian column)."""
         d0 = np.full(2, _co.dugdale_zone(self.law.m, self.law.s0)) if d0 is None else d0
         try:
             with _cb.one_blas_thread():
-                st, _ = _cb.solve_at(self.law, held, value, guess, d0, n)
+                return _cb.solve_at(self.law, held, value, guess, d0, n, jx)
         except _cb.NotFound:
             raise ValueError(f"guess: no cohesive two-patch state near {guess!r} (the other half-angle at "
                              f"{value!r})") from None
-        return self.result(st)
 
     # --- branches -------------------------------------------------------------------------------------------
     def branches(self, n=None) -> tuple:
@@ -135,25 +139,46 @@ class CohesiveTwoPatch:
 
     def along(self, b, i, k, n=None):
         """(state(x), xs) between points i and k of branch b: the half-angle that varies most held at x (xs: its
-        values at i and k), the other solved from the chord."""
+        values at i and k), the other solved -- from the chord for the first x, then warm from the state solved
+        last (its offset from the chord, its zones, its Jacobian column: a search's states are close).  state(x)
+        is the numerics state (cohesive_two.TwoPatchCohesive; :meth:`result` makes it a TwoPatchState)."""
         e, et = b.eps[[i, k]], b.eps_top[[i, k]]
         held = int(abs(math.log(et[1] / et[0])) > abs(math.log(e[1] / e[0])))
         xs, ys = (e, et) if held == 0 else (et, e)
         n = self.n if n is None else n
-        return (lambda x: self.at(held, x, ys[0] + (ys[1] - ys[0]) * (x - xs[0]) / (xs[1] - xs[0]), n)), xs
+        chord = lambda x: ys[0] + (ys[1] - ys[0]) * (x - xs[0]) / (xs[1] - xs[0])
+        last, memo = [], {}
 
-    def held(self, s, key: str) -> float:
-        """The field key (P_star, delta_over_Delta, delta_work_over_Delta) of a state."""
-        return (s.delta_over_Delta + self.pb.work_shift * self.pb.scale * s.P_star
-                if key == "delta_work_over_Delta" else getattr(s, key))
+        def state(x):
+            x = float(x)
+            if x not in memo:
+                if last:
+                    st, jx, x0 = last[0]
+                    free = (st.eps, st.eps_top)[1 - held]
+                    guess, d0 = chord(x) + free - chord(x0), np.array([st.c - st.eps, st.c_top - st.eps_top])
+                    try:
+                        memo[x] = self._solve(held, x, guess, n, d0, jx)
+                    except ValueError:                   # warm start too far: cold, from the chord
+                        memo[x] = self._solve(held, x, chord(x), n)
+                else:
+                    memo[x] = self._solve(held, x, chord(x), n)
+                last[:] = [(memo[x][0], memo[x][1], x)]
+            return memo[x][0]
+        return state, xs
+
+    def _held_numeric(self, st, key: str) -> float:
+        """:meth:`held` of a numerics state."""
+        P = float(st.p) / self.pb.scale
+        return {"P_star": P, "delta_over_Delta": float(st.delta_over_Delta),
+                "delta_work_over_Delta": float(st.delta_over_Delta) + self.pb.work_shift * self.pb.scale * P}[key]
 
     def _refine(self, b, i, key, target, n):
         """The state in the bracket (i, i + 1) of branch b (:meth:`along`); Brent in x on key - target.  None
         where the bracket holds no state."""
         state, xs = self.along(b, i, i + 1, n)
         try:
-            return state(_roots.brent(lambda x, _: self.held(state(x), key) - target, min(xs), max(xs),
-                                      xtol=1e-13 * max(xs)))
+            return self.result(state(_roots.brent(lambda x, _: self._held_numeric(state(x), key) - target,
+                                                  min(xs), max(xs), xtol=1e-13 * max(xs))))
         except ValueError:
             return None
 
@@ -164,15 +189,15 @@ class CohesiveTwoPatch:
         between point i and the fold (Brent)."""
         state, xs = self.along(b, i, k)
         x, f = self._golden(state, xs, key, sgn)
-        if sgn * (self.held(f, key) - target) <= 0:
-            return f, "fold"
+        if sgn * (self._held_numeric(f, key) - target) <= 0:
+            return self.result(f), "fold"
         x0 = float(xs[0])
-        r = _roots.brent(lambda z, _: self.held(state(z), key) - target, min(x0, x), max(x0, x),
+        r = _roots.brent(lambda z, _: self._held_numeric(state(z), key) - target, min(x0, x), max(x0, x),
                          xtol=1e-13 * max(x0, x))
-        return state(r), "target"
+        return self.result(state(r)), "target"
 
     def _golden(self, state, xs, key, sgn):
-        f = lambda x: -sgn * self.held(state(x), key)
+        f = lambda x: -sgn * self._held_numeric(state(x), key)
         lo, hi = sorted(map(float, xs))
         g = (math.sqrt(5) - 1) / 2
         x1, x2 = hi - g * (hi - lo), lo + g * (hi - lo)

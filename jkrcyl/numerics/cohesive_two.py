@@ -27,9 +27,13 @@ the two-patch states at full contact, not a family of its own there.  :func:`sol
 zone at each edge.
 
 Node count: the zone's traction jump sits a zone length d = c - eps off the arc: Chebyshev converges like the
-Bernstein ellipse through it, n ~ NODES_PER_ZONE sqrt(eps/d) per arc (jkrcyl.numerics.cohesive_contact); with the
-near-touching arcs' count of jkrcyl.numerics.two_arcs, at most NODES_MAX_TWO per arc (thin zones: lambda up to
-~100 at M ~ 0.5; beyond, ValueError naming sigma0).  alpha* = 0 only here (the pairs of the JKR-limit checks).
+Bernstein ellipse through it, n ~ NODES_PER_ZONE sqrt(eps/d) per arc (jkrcyl.numerics.cohesive_contact), with the
+near-touching arcs' count of jkrcyl.numerics.two_arcs.  Where that exceeds NODES_LAYER_TWO the end layer of each
+zone is subtracted in closed form (jkrcyl.numerics.cohesive_two_layer; the unknown is then v less the layers) and
+NODES_LAYER_TWO nodes (or the near-touching count) resolve any lambda up to the law's LAMBDA_MAX: measured along
+the whole branch at M = 0.2 (lambda = 20, 50), 64 nodes per arc are within 1e-10 in P* of 128 (48: 1e-8, 2e-7),
+and a state at lambda = 50 within 3e-10 of the unlayered solve at 760 nodes.  alpha* = 0 only here (the pairs of
+the JKR-limit checks).
 Stability: jkrcyl.numerics.cohesive_two_stability (the energy of zone-end-held states).
 """
 import math
@@ -40,11 +44,12 @@ from scipy.linalg import lu_factor, lu_solve
 
 from . import arcs as _arcs
 from . import cohesive as _co
+from . import cohesive_two_layer as _layer
 from . import roots as _roots
 from . import two_arcs as _two
 
-NODES_MAX_TWO = 1000      # nodes per arc (a dense LU of 2000 unknowns: ~1 s)
-ZONE_TOL = 1e-12          # zone-end residuals |h - h0| below this (units of Delta) end the alternation
+NODES_MAX_TWO = 1000      # nodes per arc without the end layers (a dense LU of 2000 unknowns: ~1 s)
+NODES_LAYER_TWO = 64      # nodes per arc with the end layers subtracted, at least (module docstring)
 ZONE_SWEEPS = 40        # Newton steps at most
 
 TwoPatchCohesive = namedtuple("TwoPatchCohesive", [
@@ -57,26 +62,38 @@ cos(phi), int nu; k_bot, k_top: the edge coefficients (0 in equilibrium; k_top i
 per arc; fields: .gap(phi), .pressure(phi)."""
 
 
-def nodes(eps, eps_top, d, ar=0.0):
-    """Nodes per arc for arcs eps, eps_top whose nearest zone end is d away (module docstring)."""
-    n = _two.nodes(eps, eps_top, _two.N_NODES, ar)
+def nodes(eps, eps_top, d, ar=0.0, layered=False):
+    """Nodes per arc for arcs eps, eps_top whose nearest zone end is d away (module docstring); layered: with the
+    end layers subtracted (cohesive_two_layer), independent of d."""
+    n = max(_two.nodes(eps, eps_top, NODES_LAYER_TWO if layered else _two.N_NODES, ar),
+            _arcs.nodes_for(max(eps, eps_top), ar))
+    if layered:
+        return n
     need = _co.NODES_PER_ZONE * math.sqrt(max(eps, eps_top) / d) if d > 0 else 0.0
-    n = max(n, _arcs.nodes_for(max(eps, eps_top), ar), int(need))
+    n = max(n, int(need))
     if n > NODES_MAX_TWO:
-        raise ValueError(f"sigma0 is too large for the two-arc cohesive solver: its zones (~{d:.3g} rad) need "
-                         f"{n} > {NODES_MAX_TWO} nodes per arc (the JKR two-patch states are within "
-                         "O(lambda^-2) there)")
+        raise ValueError(f"sigma0 is too large for the two-arc cohesive solver without its end layers: its zones "
+                         f"(~{d:.3g} rad) need {n} > {NODES_MAX_TWO} nodes per arc")
     return n
 
 
+def needs_layers(eps, eps_top, d):
+    """Whether zones d away from the arcs need more nodes than the layered count (then the layers are subtracted:
+    a bounded node count for any lambda)."""
+    return d > 0 and _co.NODES_PER_ZONE * math.sqrt(max(eps, eps_top) / d) > NODES_LAYER_TWO
+
+
 def _wrap(phi):
-    return np.angle(np.exp(1j * np.asarray(phi, dtype=float)))
+    """phi wrapped to [-pi, pi], angles already there unchanged (not rounded: the gap at a thin zone's end moves
+    by ~1e-12 per ulp of the angle at lambda = 1000)."""
+    phi = np.asarray(phi, dtype=float)
+    return np.where(np.abs(phi) <= math.pi, phi, np.angle(np.exp(1j * phi)))
 
 
 class FixedArcs:
     """The two arcs with n nodes each: one LU, the clearance and approach solutions, and the zone solutions."""
 
-    def __init__(self, eps, eps_top, kernel, n):
+    def __init__(self, eps, eps_top, kernel, n, layered=False):
         if not (0 < eps < math.pi and 0 < eps_top < math.pi and eps + eps_top < math.pi):
             raise ValueError(f"eps, eps_top must be in (0, pi) with eps + eps_top < pi, got {eps!r}, {eps_top!r}")
         self.eps, self.eps_top, self.kernel = float(eps), float(eps_top), kernel
@@ -88,6 +105,7 @@ class FixedArcs:
         self.u0, self.u1 = U[:, 0], U[:, 1]
         self.points = _wrap(np.concatenate([c + e * sy._xt for c, e in zip(sy._ac, sy._ae)]))
         self.k0, self.k1 = sy.edge(self.u0), sy.edge(self.u1)
+        self.layers = _layer.Layers(self.eps, self.eps_top, kernel, self.points) if layered else None
 
     def factor(self):
         """LU of the collocation matrix (a subclass may precondition with a neighbour's instead)."""
@@ -97,15 +115,32 @@ class FixedArcs:
         """A^-1 rhs."""
         return lu_solve(self.lu, rhs)
 
+    def ends(self, zones):
+        """(c, c_top) whose end layers are subtracted (cohesive_two_layer), or None."""
+        return None if self.layers is None else _layer.zone_ends(zones)
+
     def zone_unit(self, zones):
-        """The solution of a unit zone traction (s0 = 1) on the zone set: rhs -Z_C at the collocation points."""
-        return self.solve(-_co.zone_displacement(self.points, zones, self.kernel))
+        """The solution of a unit zone traction (s0 = 1) on the zone set: rhs -Z_C at the collocation points, plus
+        the end layers' potential where they are subtracted (the solution is then w, v less the layers)."""
+        rhs = -_co.zone_displacement(self.points, zones, self.kernel)
+        ends = self.ends(zones)
+        return self.solve(rhs if ends is None else rhs + self.layers.rhs(*ends))
+
+    def zone_totals(self, zones):
+        """(int, int cos) -> (load, width) a unit zone traction adds to p, B beyond u's moments: -(the zones') plus
+        the end layers'."""
+        load, width = _co.zone_load(zones)
+        ends = self.ends(zones)
+        lp, lb = (0.0, 0.0) if ends is None else self.layers.loads(*ends)
+        return lp - load, lb - width
 
     def gap(self, phi, dn, u, zones, s0):
         """h/Delta at exterior angles phi."""
         phi = _wrap(np.atleast_1d(phi))
-        return (1 - np.cos(phi) - dn * np.cos(phi) + self.sys.apply(np.zeros_like(phi), phi, u)
-                + s0 * _co.zone_displacement(phi, zones, self.kernel))
+        h = (1 - np.cos(phi) - dn * np.cos(phi) + self.sys.apply(np.zeros_like(phi), phi, u)
+             + s0 * _co.zone_displacement(phi, zones, self.kernel))
+        ends = self.ends(zones)
+        return h if ends is None else h - s0 * self.layers.at(phi, *ends)
 
     def at_zones(self, zones, s0):
         """(delta/Delta, u, k) at the zone set with k_bot = 0."""
@@ -137,19 +172,21 @@ class _Fields:
         for lo, hi in self.zones:
             out[(phi > lo) & (phi < hi)] = -self.s0
         U, C = lin.split(self.u)
+        ends = self.fa.ends(self.zones)
+        layer = 0.0 if ends is None else self.s0 * self.fa.layers.traction(phi, *ends)
         for i, (c, e) in enumerate(lin.arcs):
             x = _wrap(phi - c) / e
             inside = np.abs(x) < 1
             val = np.cos(np.outer(np.arccos(x[inside]), np.arange(lin.n))) @ (lin.D @ U[i])
             out[inside] = val / (e * np.sqrt(1 - x[inside] ** 2)) - self.s0
-        return out
+        return out + layer
 
 
 class _Law:
     """m, s0, h0, the kernel and the fixed arcs met so far (one LU per pair of arcs and node count)."""
 
-    def __init__(self, m, s0, kernel):
-        self.m, self.s0, self.kernel, self.h0 = m, s0, kernel, m * m / s0
+    def __init__(self, m, s0, kernel, layered=False):
+        self.m, self.s0, self.kernel, self.h0, self.layered = m, s0, kernel, m * m / s0, bool(layered)
         self._arcs = {}
 
     def arcs(self, eps, eps_top, n):
@@ -157,7 +194,7 @@ class _Law:
         if key not in self._arcs:
             if len(self._arcs) > 8:
                 self._arcs.clear()
-            self._arcs[key] = FixedArcs(eps, eps_top, self.kernel, n)
+            self._arcs[key] = FixedArcs(eps, eps_top, self.kernel, n, self.layered)
         return self._arcs[key]
 
     def pieces(self, eps, eps_top, zones, n):
@@ -180,19 +217,20 @@ def state(law, eps, eps_top, c, c_top, n):
     """The two-arc state with the zone ends c, c_top (c = pi: zones 'all') at k_bot = 0 (k_top reported)."""
     zones = _co.zones_of(c, c_top)
     fa, dn, u, k = law.pieces(eps, eps_top, zones, n)
-    load, width = _co.zone_load(zones)
-    p = fa.sys.moments(u, np.cos) - law.s0 * load
-    B = fa.sys.moments(u, np.ones_like) - law.s0 * width
+    load, width = fa.zone_totals(zones)
+    p = fa.sys.moments(u, np.cos) + law.s0 * load
+    B = fa.sys.moments(u, np.ones_like) + law.s0 * width
     kind = "all" if zones.shape[0] == 1 else "both"
     return TwoPatchCohesive(eps, eps_top, math.pi if kind == "all" else c, 0.0 if kind == "all" else c_top, kind,
                             p, dn, B, k[0], k[1], law.m, law.s0, law.h0, n, _Fields(fa, dn, u, zones, law.s0))
 
 
-def solve(eps_top, m, s0, theta, gb, ar, guess, n=None, tol=1e-11):
+def solve(eps_top, m, s0, theta, gb, ar, guess, n=None, tol=1e-11, layered=None):
     """The two-arc equilibrium with the top arc eps_top (k = 0 at both contact edges, h = h0 at both zone ends):
     Newton in (eps, log d_bot, log d_top) from eps = guess (e.g. JKR's two-patch state there, the limit
     lambda -> inf) and the Dugdale zone length (finite differences: one more LU per step for eps; the step
-    halved while the residual grows).  ValueError naming guess if it does not converge."""
+    halved while the residual grows).  layered: subtract the end layers (None: where the zones need more nodes
+    than NODES_LAYER_TWO, :func:`needs_layers`).  ValueError naming guess if it does not converge."""
     m, s0, kernel = _co._law(m, s0, theta, gb, ar)
     eps_top = _co.finite_scalar("eps_top", eps_top, low=0.0, high=math.pi, low_open=True)
     guess = _co.finite_scalar("guess", guess, low=0.0, high=math.pi - eps_top, low_open=True)
@@ -200,9 +238,12 @@ def solve(eps_top, m, s0, theta, gb, ar, guess, n=None, tol=1e-11):
         raise ValueError(f"m must be > 0 and ar = 0 for the two-arc cohesive solver, got m = {m!r}, ar = {ar!r}")
     if guess + eps_top >= math.pi:
         raise ValueError(f"guess must be < pi - eps_top = {math.pi - eps_top!r}, got {guess!r}")
-    law = _Law(m, s0, kernel)
     d0 = min(_co.dugdale_zone(m, s0), 0.25 * (math.pi - guess - eps_top))
-    n = nodes(guess, eps_top, d0, ar) if n is None else _co.count("n", n, 8, NODES_MAX_TWO)
+    layered = needs_layers(guess, eps_top, d0) if layered is None else bool(layered)
+    if layered:
+        _layer.check_lambda(m, s0)
+    law = _Law(m, s0, kernel, layered)
+    n = nodes(guess, eps_top, d0, ar, layered) if n is None else _co.count("n", n, 8, NODES_MAX_TWO)
     x = newton(lambda y: law.residual(y, eps_top, n), np.array([guess, math.log(d0), math.log(d0)]),
                (1e-7 * guess, 1e-6, 1e-6), np.array([max(1.0, m), max(1.0, law.h0), max(1.0, law.h0)]), tol,
                np.array([0.2 * guess, 2.0, 2.0]))
@@ -214,15 +255,10 @@ def solve(eps_top, m, s0, theta, gb, ar, guess, n=None, tol=1e-11):
 
 def newton(f, x, steps, scale, tol, largest):
     """Newton on f(x) = 0 (f: a vector, None outside its domain) with a forward-difference Jacobian (steps), each
-    step cut to |dx_i| <= largest_i and halved while |f/scale| grows; x where |f_i| < tol scale_i, else None (no
-    convergence in ZONE_SWEEPS steps, a singular Jacobian, or the domain left).  A few unknowns of fixed-arc
-    solves (jkrcyl.numerics.roots has the scalar methods)."""
-    r = f(x)
-    for _ in range(ZONE_SWEEPS):
-        if r is None:
-            return None
-        if np.all(np.abs(r) < tol * scale):
-            return x
+    step cut to |dx_i| <= largest_i and halved while |f/scale| grows (jkrcyl.numerics.roots.damped_newton); x
+    where |f_i| < tol scale_i, else None (no convergence in ZONE_SWEEPS steps, a singular Jacobian, or the domain
+    left).  A few unknowns of fixed-arc solves."""
+    def jacobian(x, r):
         J = np.empty((x.size, x.size))
         for i in range(x.size):
             xi = x.copy()
@@ -231,19 +267,10 @@ def newton(f, x, steps, scale, tol, largest):
             if ri is None:
                 return None
             J[:, i] = (ri - r) / steps[i]
-        if not np.linalg.cond(J) < 1e14:
-            return None
-        dx = np.linalg.solve(J, -r)
-        dx *= min(1.0, float(np.min(largest / np.maximum(np.abs(dx), 1e-300))))
-        for _ in range(12):
-            rt = f(x + dx)
-            if rt is not None and np.linalg.norm(rt / scale) < np.linalg.norm(r / scale):
-                break
-            dx /= 2
-        else:
-            return None
-        x, r = x + dx, rt
-    return None
+        return J if np.linalg.cond(J) < 1e14 else None
+
+    got = _roots.damped_newton(f, x, jacobian, scale, tol, largest, ZONE_SWEEPS, 12)
+    return None if got is None else got[0]
 
 
 def potential(st):

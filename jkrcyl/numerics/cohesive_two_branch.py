@@ -5,10 +5,12 @@ A state (:func:`solve_at`): one half-angle held, Newton in z = (the other, log d
 [k_top, h(c) - h0, h(pi - c_top) - h0] (k_bot = 0 fixes delta at given arcs and zones).  The zone columns of the
 Jacobian are differences at the same arcs (back-substitutions: only the zone right-hand side changes), the arc
 column a secant update along the iterates, started from the neighbour's: one new fixed-arc system per step.
-Profile of the cold cohesive_two.solve (lambda = 50, M = 0.2): 7 LUs of 2 x 760 unknowns, 0.2 s each, were the
-whole cost, and the assembly of a system costs about as much as its LU.  Here a new system near a factorised one
-(REUSE_SPAN) is solved by iterative refinement with that LU (:class:`BranchLaw`, :class:`Refined`: O(n^2), to the
-LU's own residual), so a state costs about one LU plus its assemblies.
+A new system near a factorised one (REUSE_SPAN) is solved by iterative refinement with that LU (:class:`BranchLaw`,
+:class:`Refined`: O(n^2), to the LU's own residual).  The Newton is jkrcyl.numerics.roots.damped_newton; where
+thin zones leave the residuals a rounding floor above tol (lambda ~ 1000) it ends at RESIDUAL_FLOOR.  Measured at
+M = 0.2 (benchmarks/bench_cohesive_two.py): the whole branch (16 states and their flags) in ~0.8 s CPU at every
+lambda from 20 to 1000 with the end layers (64 nodes per arc), where without them it took 2.6 / 29 s at lambda =
+20 / 50 (225 / 564 nodes per arc: 216 assemblies of 0.09 s at 50).
 
 The branch (:func:`trace`): JKR's (jkrcyl.analysis.tracing; the limit lambda -> inf, O(lambda^-2) away) is the
 scaffold.  At each scaffold point the half-angle that varies most along it is held at JKR's value and the other
@@ -16,9 +18,10 @@ solved, from JKR's value plus the previous state's offset (then the other way ro
 the trace starts where both arcs are largest (the zones thinnest relative to them) and walks to both ends,
 stopping where a state is not found (e.g. both arcs small against the zones), an end at an axis followed down to
 an arc END_ARC.  One node count for the whole problem (states are one discretisation, so a state solved alone at
-that count equals the traced one): ZONE_NODES sqrt(eps_max/d), d the Dugdale zone length m^2/(4 s0^2) --
-measured at M = 0.2, lambda = 50 (bottom arc 2.61): P* moves by 8.7e-6, 1.4e-8, < 1e-11 from 300, 450, 760 nodes
-per arc to the next.
+that count equals the traced one), with the zones' end layers subtracted (cohesive_two_layer): the count of
+JKR's near-touching arcs, at least cohesive_two.NODES_LAYER_TWO, whatever the zone length -- measured at M = 0.2
+along the whole branch, lambda = 20 / 50: 48 nodes per arc are 1.4e-8 / 1.7e-7 off 128 in P*, 64 nodes 2e-11 /
+3e-10 (without the layers the zones needed 8 sqrt(eps_max/d): 564 per arc at lambda = 50, 1.5 s per cold state).
 
 Stability under each control from one Jacobian (:func:`flags`): the zone-end-held energy of
 jkrcyl.numerics.cohesive_two_stability has the Hessian 2 s0 G, G = dg/dc at k = 0 and the held quantity
@@ -36,13 +39,17 @@ from threadpoolctl import ThreadpoolController
 
 from . import cohesive as _co
 from . import cohesive_two as _two
-from . import two_arcs as _ta
+from . import cohesive_two_layer as _layer
+from . import cohesive_two_stability as _stab
+from . import roots as _roots
 
 ZONE_MAX = 0.02           # the largest Dugdale zone estimate followed [rad] (lambda >~ 8 at M = 0.2)
-ZONE_NODES = 8.0          # nodes per arc per sqrt(eps_max/d) (module docstring)
 ARC_STEP = 1e-6           # central differences of the half-angles in flags, relative
 ZONE_STEP = 1e-5          # ... of the zone ends and the approach, relative to the zone length
 SECANT_STEPS = 12         # Newton steps at most (a warm start takes 2-4)
+RESIDUAL_FLOOR = 1e-8     # Newton ends where its steps stop reducing residuals below this (the rounding floor,
+                          # above tol at thin zones: k_top ~2e-11, h(c) - h0 ~3e-12 at lambda = 1000 -- terms of
+                          # size s0 ~ 85 cancel -- and k_top ~1e-10 at a top arc of 3.5e-4)
 END_ARC = 1e-4            # a branch end at an axis: the smaller arc followed down to this [rad]
 END_FACTOR = 0.1          # ... shrinking by this factor per state
 REUSE_SPAN = 0.05         # arcs within this (in log half-angle) of a factorised pair reuse its LU
@@ -62,9 +69,9 @@ class Refined(_two.FixedArcs):
     collocation matrix moves smoothly with the arcs): O(n^2) per solve instead of an O(n^3) LU; a fresh LU where
     the refinement does not reach the LU's own residual -- the answers are those of a direct solve to rounding."""
 
-    def __init__(self, eps, eps_top, kernel, n, ref):
+    def __init__(self, eps, eps_top, kernel, n, ref, layered=False):
         self.ref = ref
-        super().__init__(eps, eps_top, kernel, n)
+        super().__init__(eps, eps_top, kernel, n, layered)
 
     def factor(self):
         self.norm = float(np.max(np.sum(np.abs(self.sys.A), axis=1)))
@@ -91,8 +98,8 @@ class BranchLaw(_two._Law):
     """cohesive_two's law whose fixed arcs reuse the LU of a nearby factorised pair (:class:`Refined`): a
     Newton step and the differences of :func:`jacobian` cost back-substitutions and products, not a new LU."""
 
-    def __init__(self, m, s0, kernel):
-        super().__init__(m, s0, kernel)
+    def __init__(self, m, s0, kernel, layered=False):
+        super().__init__(m, s0, kernel, layered)
         self.ref = None
         self.factorisations = 0
 
@@ -107,11 +114,11 @@ class BranchLaw(_two._Law):
         if ref is not None and ref.sys.n == n and max(abs(math.log(eps / ref.eps)),
                                                       abs(math.log(eps_top / ref.eps_top))) < REUSE_SPAN:
             try:
-                fa = Refined(eps, eps_top, self.kernel, n, ref)
+                fa = Refined(eps, eps_top, self.kernel, n, ref, self.layered)
             except NotConverged:
                 fa = None
         if fa is None:
-            fa = self.ref = _two.FixedArcs(eps, eps_top, self.kernel, n)
+            fa = self.ref = _two.FixedArcs(eps, eps_top, self.kernel, n, self.layered)
             self.factorisations += 1
         self._arcs[key] = fa
         return fa
@@ -133,21 +140,17 @@ def require_alpha_zero(ar):
 
 
 def branch_nodes(points, m, s0, ar=0.0):
-    """Nodes per arc for the states near the scaffold points (k, 2) (module docstring); ValueError naming sigma0
-    beyond cohesive_two.NODES_MAX_TWO, or where the zones are not small (d > ZONE_MAX: low lambda, where JKR's
-    branch is no guide to the law's)."""
+    """Nodes per arc for the states near the scaffold points (k, 2), with the end layers subtracted (module
+    docstring: a count independent of lambda); ValueError naming sigma0 where the zones are not small
+    (d > ZONE_MAX: low lambda, where JKR's branch is no guide to the law's) or too thin (lambda beyond
+    cohesive_two_layer.LAMBDA_MAX)."""
     d = _co.dugdale_zone(m, s0)
     if d > ZONE_MAX:
         raise ValueError(f"sigma0: the two-patch branches are followed from JKR's where the Dugdale zones are "
                          f"small (~{d:.3g} rad > {ZONE_MAX} here: the transition parameter lambda = "
                          f"{4 * s0 / m ** (2 / 3):.3g} is too small for it)")
-    eps_max = float(np.max(points))
-    n = max(max(_ta.nodes(e, et, _ta.N_NODES, ar) for e, et in points), int(ZONE_NODES * math.sqrt(eps_max / d)))
-    if n > _two.NODES_MAX_TWO:
-        raise ValueError(f"sigma0 is too large for the two-arc cohesive solver: its zones (~{d:.3g} rad) need "
-                         f"{n} > {_two.NODES_MAX_TWO} nodes per arc (lambda up to ~70 at M ~ 0.2; the JKR "
-                         "two-patch states are within O(lambda^-2) there)")
-    return n
+    _layer.check_lambda(m, s0)
+    return max(_two.nodes(e, et, d, ar, layered=True) for e, et in points)
 
 
 def residual(law, held, value, z, n):
@@ -171,39 +174,33 @@ def solve_at(law, held, value, guess, d0, n, jx=None, tol=1e-11):
     f = lambda z: residual(law, held, value, z, n)
     scale = np.array([max(1.0, law.m), max(1.0, law.h0), max(1.0, law.h0)])
     z = np.array([guess, *np.log(d0)], dtype=float)
-    r = f(z)
-    for _ in range(SECANT_STEPS):
-        if r is None:
-            raise NotFound
-        if np.all(np.abs(r) < tol * scale):
-            break
+    col = [jx]                                           # the x-column, secant-updated along the iterates
+
+    def jacobian(z, r):
         J = np.empty((3, 3))
         for j in (1, 2):
             rj = f(z + 1e-6 * np.eye(3)[j])
             if rj is None:
-                raise NotFound
+                return None
             J[:, j] = (rj - r) / 1e-6
-        if jx is None:
+        if col[0] is None:
             h = 1e-7 * z[0]
             rj = f(z + h * np.eye(3)[0])
             if rj is None:
-                raise NotFound
-            jx = (rj - r) / h
-        J[:, 0] = jx
-        dz = np.linalg.solve(J, -r)
-        dz *= min(1.0, 0.2 * z[0] / max(abs(dz[0]), 1e-300), 2.0 / max(np.max(np.abs(dz[1:])), 1e-300))
-        for _ in range(6):
-            rt = f(z + dz)
-            if rt is not None and np.linalg.norm(rt / scale) < np.linalg.norm(r / scale):
-                break
-            dz /= 2
-        else:
-            raise NotFound
+                return None
+            col[0] = (rj - r) / h
+        J[:, 0] = col[0]
+        return J
+
+    def secant(z, dz, r, rt, J):
         if dz[0] != 0:
-            jx = (rt - r - J[:, 1:] @ dz[1:]) / dz[0]
-        z, r = z + dz, rt
-    else:
+            col[0] = (rt - r - J[:, 1:] @ dz[1:]) / dz[0]
+
+    got = _roots.damped_newton(f, z, jacobian, scale, tol, np.array([0.2 * z[0], 2.0, 2.0]), SECANT_STEPS, 6,
+                               RESIDUAL_FLOOR * scale, secant)
+    if got is None:
         raise NotFound
+    z, jx = got[0], col[0]
     d = np.exp(z[1:])
     eps, eps_top = (z[0], value) if held == 1 else (value, z[0])
     return _two.state(law, eps, eps_top, eps + d[0], eps_top + d[1], n), jx
@@ -217,7 +214,7 @@ def pieces(law, x, n):
     zones = _co.zones_of(c, c_top)
     u = fa.u0 + dn * fa.u1 + law.s0 * fa.zone_unit(zones)
     g = fa.gap(np.array([c, math.pi - c_top]), dn, u, zones, law.s0) - law.h0
-    p = fa.sys.moments(u, np.cos) - law.s0 * _co.zone_load(zones)[0]
+    p = fa.sys.moments(u, np.cos) + law.s0 * fa.zone_totals(zones)[0]
     return np.concatenate([fa.sys.edge(u), g, [p]])
 
 
@@ -251,7 +248,7 @@ def flags(J, work_shift):
     out = []
     for a, b in ((0.0, 1.0), (1.0, 0.0), (1.0, work_shift)):
         G = zone_matrix(J, a, b)
-        out.append(bool(np.all(np.linalg.eigvalsh(0.5 * (G + G.T)) > 0)))
+        out.append(_stab.positive_definite(G))
     return tuple(out)
 
 

@@ -203,3 +203,44 @@ def secant(f, x0, x1, lo, hi, tol=1e-13, maxit=40):
     else:
         raise ValueError(f"secant: no convergence near {x1!r}")
     return x1, f1
+
+
+def damped_newton(f, x, jacobian, scale, tol, largest, max_steps, halvings, floor=None, after_step=None):
+    """Newton on a small system f(x) = 0 (f: a vector, or None outside its domain) with the Jacobian
+    ``jacobian(x, r)`` (None: singular or not computable), each step scaled down to |dx_i| <= largest_i and halved
+    while |f/scale| does not decrease (at most ``halvings`` times).  Converged where |f_i| < tol scale_i; or, with
+    floor given, where the steps stop reducing f (the line search fails, or max_steps run out) at |f_i| < floor_i:
+    f's rounding floor reached above tol (the best point is returned).  ``after_step(x, dx, r, r_new, J)`` sees
+    each accepted step (e.g. a secant update of a column).  Returns (x, f(x)), or None (no convergence, the domain
+    left, no Jacobian)."""
+    r = f(x)
+    best = (x, r)
+
+    def at_floor():
+        return floor is not None and best[1] is not None and np.all(np.abs(best[1]) < floor)
+
+    for _ in range(max_steps):
+        if r is None:
+            return None
+        if np.all(np.abs(r) < tol * scale):
+            return x, r
+        J = jacobian(x, r)
+        if J is None:
+            return None
+        dx = np.linalg.solve(J, -r)
+        dx *= min(1.0, float(np.min(largest / np.maximum(np.abs(dx), 1e-300))))
+        for _ in range(halvings):
+            rt = f(x + dx)
+            if rt is not None and np.linalg.norm(rt / scale) < np.linalg.norm(r / scale):
+                break
+            dx /= 2
+        else:
+            return best if at_floor() else None
+        if after_step is not None:
+            after_step(x, dx, r, rt, J)
+        x, r = x + dx, rt
+        if np.linalg.norm(r / scale) < np.linalg.norm(best[1] / scale):
+            best = (x, r)
+    if r is not None and np.all(np.abs(r) < tol * scale):
+        return x, r
+    return best if at_floor() else None
