@@ -108,12 +108,14 @@ def test_layer_loads_against_quadrature():
 @pytest.mark.parametrize("lam", [20.0, 50.0])
 def test_layered_state_is_the_unlayered_one(lam):
     """The same state solved without the layers (8 sqrt(eps/d)-type node counts: 300 at lambda = 20, 760 at 50)
-    and with them at 64 nodes per arc: eps, P*, delta/Delta, zone lengths to 1e-9 (measured 2e-11 ... 3e-10)."""
+    and with them at 64 nodes per arc (or the near-touching count, 71 at lambda 50): eps, P*, delta/Delta, zone
+    lengths to 3e-9 (measured 2e-11 ... 1.3e-9: the zone-end gaps' rounding, ~1e-12, amplified ~1e4 by the
+    equations, module docstring of cohesive_two_layer)."""
     plain = cold(lam, layered=False, n=300 if lam == 20.0 else 760)
     got = cold(lam)
-    assert got.fields.fa.layers is not None and got.n == ct.NODES_LAYER_TWO
+    assert got.fields.fa.layers is not None and got.n >= ct.NODES_LAYER_TWO    # or the near-touching count
     for key in ("eps", "p", "delta_over_Delta", "c", "c_top", "B"):
-        assert abs(getattr(got, key) - getattr(plain, key)) < 1e-9, key
+        assert abs(getattr(got, key) - getattr(plain, key)) < 3e-9, key    # the layered solve's rounding floor
 
 
 def test_jkr_limit_from_lambda_50_to_1000():
@@ -149,7 +151,7 @@ def test_the_law_holds_along_the_branch_at_lambda_1000(branch1000):
     every zone end (the Newton's rounding floor: 1e-8 of h0 = 4.7e-4 Delta here), the gap >= 0, the mirror
     symmetry P* -> -P*, delta -> -2 - delta (not imposed), every state unstable as JKR's at M = 0.2."""
     fam, b = branch1000
-    assert fam.n == ct.NODES_LAYER_TWO and b.ends == ("single", "mirror") and len(b.eps) >= 12
+    assert fam.n >= ct.NODES_LAYER_TWO and b.ends == ("single", "mirror") and len(b.eps) >= 12
     assert np.max(np.abs(b.G_bot - 1)) < 1e-4 and np.max(np.abs(b.G_top - 1)) < 1e-4
     assert b.feasible.all() and np.all(b.gap_min > 0)
     assert abs(b.P_star[0] + b.P_star[-1]) < 1e-6 and abs(b.delta_over_Delta[0] + b.delta_over_Delta[-1] + 2) < 1e-6

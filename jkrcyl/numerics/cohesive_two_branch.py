@@ -269,7 +269,7 @@ def _step(law, target, prev, prev_at, free, n, slope, depth=2):
     for f, jx in ((free, slope), (free, None), (1 - free, None))[0 if slope is not None else 1:]:
         try:
             st, jx = solve_at(law, 1 - f, target[1 - f], target[f] + offset[f], d0, n, jx)
-            return st, (jx if np.all(np.isfinite(jx)) else None), f
+            return st, (jx if jx is not None and np.all(np.isfinite(jx)) else None), f
         except NotFound:
             continue
     mid = np.sqrt(target * prev_at)                      # halfway in log half-angles

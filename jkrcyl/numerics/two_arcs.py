@@ -2,9 +2,12 @@
 numerics.arcs.Linear with the engine's node policy, for jkrcyl.model.two_patch.
 
 Near-touching arcs: the density varies on the scale of the gap g = pi - eps - eps_top between them, so Chebyshev
-needs ~ sqrt(eps/g) times more nodes (Bernstein ellipse through the gap); 8 sqrt(eps/g) keeps the residual F of
-jkrcyl.model.two_patch to ~1e-11 (measured against 96 nodes down to g = 0.02).  alpha* != 0: the algebraic end
-terms need about twice as many, at least 32, in multiples of 8 (one enrichment table per node count).
+needs ~ sqrt(eps/g) times more nodes (Bernstein ellipse through the gap).  At alpha* = 0, 20 + 15 sqrt(eps/g) (the
+single arc's rule, numerics.arcs.nodes_for, with the gap between the arcs) puts the STATE within ~1e-11 of 200
+nodes (M 0.2, vartheta 1: eps_top 0.3633, g 0.166: 80 nodes, 7e-12 in eps; eps_top 0.1, g 0.52: 53, 3e-13); the
+earlier 8 sqrt(eps/g) kept the residual small but left the state 7e-5 off in eps (2.4e-4 in P*) at g 0.166.
+alpha* != 0: the algebraic end terms need about twice as many, at least 32, in multiples of 8 (one enrichment
+table per node count), from 8 sqrt(eps/g).
 """
 import functools
 import math
@@ -12,7 +15,10 @@ import math
 from . import arcs as _arcs
 
 N_NODES = 24            # nodes per arc at alpha* = 0 (spectral: 1e-12 at moderate arcs)
-NODES_PER_GAP = 8
+NODES_PER_GAP = 18      # alpha* = 0: GAP_BASE + NODES_PER_GAP sqrt(eps/g) nodes per arc (module docstring), at most NODES_MAX
+GAP_BASE = 0
+NODES_MAX = 400
+AR_PER_GAP = 8          # alpha* != 0: AR_NODES_FACTOR * 8 sqrt(eps/g)
 N_NODES_ALPHA = 32      # alpha* != 0: at least this many (1e-12 at moderate arcs against 128 nodes)
 AR_NODES_FACTOR = 2     # alpha* != 0 near-touching arcs: 16 sqrt(eps/g) nodes (7e-10 at g = 0.24, eps = 2)
 
@@ -22,7 +28,8 @@ def nodes(eps, eps_top, n, ar):
     g = math.pi - eps - eps_top
     need = NODES_PER_GAP * math.sqrt(max(eps, eps_top) / g) if g > 0 else 0.0
     if ar == 0.0:
-        return max(n, int(need))
+        return max(n, int(min(GAP_BASE + need, NODES_MAX)))
+    need = AR_PER_GAP * math.sqrt(max(eps, eps_top) / g) if g > 0 else 0.0
     return min(8 * math.ceil(max(n, N_NODES_ALPHA, AR_NODES_FACTOR * need) / 8), 256)
 
 
