@@ -165,7 +165,7 @@ def trace(law):
         eps = np.geomspace(law.eps_lo, law.eps_hi, ALL_POINTS)
         return np.column_stack([np.log(eps), np.zeros(eps.size)]), "all", ""
     x0 = np.array([math.log(law.eps_lo), math.log(start.c - law.eps_lo)])
-    got = _fo.follow(law, x0, lambda x: _inside(law, x))
+    got = _fo.follow(law, x0, lambda x: _inside(law, x), margin=lambda x: _margin(law, x))
     return got.points, "zone", got.reason
 
 
@@ -184,6 +184,19 @@ def _inside(law, x):
         return False
     aff = affine(law, eps, eps + d)
     return _at(aff[1], -aff[0][0] / aff[0][1]) < law.p_cap
+
+
+def _margin(law, x):
+    """How far x lies beyond :func:`_inside`'s load cap (< 0 below it): 1 - p_cap/p, linear in the arclength
+    next to the pole of p (the receding limit), where the branch meets the cap, and on through it (p < 0 past it,
+    eps >= eps_hi: > 1); -inf where p <= 0 short of it.  NaN where x lies outside another bound of the domain
+    and not beyond the cap (cohesive_follow then cuts the step as before: the branch's other ends)."""
+    eps, d = math.exp(x[0]), math.exp(x[1])
+    aff = affine(law, eps, eps + d)
+    p = _at(aff[1], -aff[0][0] / aff[0][1])
+    load = 1 - law.p_cap / p if p > 0 or (p < 0 and eps >= law.eps_hi) else -math.inf
+    other = not (law.eps_lo * 0.999 <= eps < law.eps_hi and eps + d < math.pi * (1 - 1e-9))
+    return np.array([math.nan if other and load <= 0 else load])
 
 
 def arclength(x):
