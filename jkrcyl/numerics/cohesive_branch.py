@@ -230,14 +230,21 @@ def project(law, x_pred, normal, scale):
     return None if d is None else np.array([x_pred[0], math.log(d)])
 
 
-def state_values(law, eps, c):
-    """(p, delta/Delta, h(pi)/Delta) of the equilibrium (eps, c) (k = 0), without slopes."""
+def load_approach(law, eps, c):
+    """(p, delta/Delta) of the equilibrium (eps, c) (k = 0): :func:`state_values` without h(pi) (which costs a
+    solve for the zone and the gap: a search for a held load or approach needs neither)."""
     aff = affine(law, eps, c)
     delta = -aff[0][0] / aff[0][1]
+    return _at(aff[1], delta), delta
+
+
+def state_values(law, eps, c):
+    """(p, delta/Delta, h(pi)/Delta) of the equilibrium (eps, c) (k = 0), without slopes."""
+    p, delta = load_approach(law, eps, c)
     fc = law.fixed(eps)
     zones = _co.zones_of(min(c, math.pi))
     u = fc.fx[3] + delta * fc.fx[4] + law.s0 * fc.zone_unit(zones)
-    return _at(aff[1], delta), delta, fc.gap(math.pi, delta, u, zones, law.s0)[0]
+    return p, delta, fc.gap(math.pi, delta, u, zones, law.s0)[0]
 
 
 def slopes(law, eps, c, direction):

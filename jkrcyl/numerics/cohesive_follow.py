@@ -87,7 +87,7 @@ def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None, prev=
             exits = margin is not None and _turn_ok(law, y, t)         # the step stays on this branch
             last = _exit(law, x, t, side, h, y, inside, margin) if exits else None
             if last is not None:                 # the last point inside, within 64 H_MIN of the exit
-                return Followed(np.array(pts + ([last] if last is not x else [])), "")
+                return Followed(np.array(pts + _backed_off(law, x, t, side, *last)), "")
             h, edge = h / 4, True
             continue
         t_new, side_new = _tangent(law, y, t) if ok else (None, None)
@@ -131,19 +131,21 @@ def _exit(law, x, t, side, h, y_out, inside, margin):
     margin(y): one value per bound of the domain, each < 0 inside it; the exit is estimated as the first
     crossing of a bound, by inverse quadratic interpolation of that bound's margin through the bracket's ends
     and the trial before (regula falsi where that fails), each trial aimed EXIT_AIM H_MIN past the estimate
-    towards the end that did not move last, so both ends close in.  Returns x itself when the bracket closes on
-    it, the point (its tangent turning less than acos(TURN) from t), or None: a margin not a number, margins
+    towards the end that did not move last, so both ends close in.  Returns (x, 0, known) when the bracket
+    closes on x, (the point, its step, known) -- its tangent turning less than acos(TURN) from t --, known the
+    branch points found on the way as (step, point), or None: a margin not a number, margins
     disagreeing with inside, a correction failed or EXIT_TRIALS were not enough (the caller then cuts the
     step)."""
     lo, hi, q_lo, q_hi = 0.0, h, np.asarray(margin(x), float), np.asarray(margin(y_out), float)
     y_lo, y_hi, last, older = x, y_out, 0, None   # last: +1 the low end moved last, -1 the high end
     stale = 0                                     # +1: the low end kept twice running, -1: the high end
+    known = [(0.0, x), (h, y_out)]                # the branch points found, by step
     for _ in range(EXIT_TRIALS):
         if np.isnan(q_lo).any() or np.isnan(q_hi).any() or not (np.all(q_lo < 0) and np.any(q_hi > 0)) or \
                 np.any((q_hi > 0) & np.isneginf(q_lo)):         # a bound's margin not defined at the low end
             return None
         if hi - lo <= 64 * H_MIN:
-            return y_lo if y_lo is x or _turn_ok(law, y_lo, t) else None
+            return (y_lo, lo, known) if y_lo is x or _turn_ok(law, y_lo, t) else None
         with np.errstate(invalid="ignore"):
             ql, qh = q_lo * (0.5 if stale > 0 else 1.0), q_hi * (0.5 if stale < 0 else 1.0)       # Illinois
         with np.errstate(invalid="ignore"):
@@ -161,6 +163,7 @@ def _exit(law, x, t, side, h, y_out, inside, margin):
         y = _correct(law, x, t, side, s, (y_lo, y_hi))
         if y is None:
             return None
+        known.append((s, y))
         q, now = np.asarray(margin(y), float), (1 if inside(y) else -1)
         if (now > 0) != bool(np.all(q < 0)):
             return None
@@ -172,6 +175,34 @@ def _exit(law, x, t, side, h, y_out, inside, margin):
             hi, q_hi, y_hi = s, q, y
         stale, last = (-now if now == last else 0), now
     return None
+
+
+BACK_OFF = (4, 16, 64)   # _backed_off: points this many times 64 H_MIN before the last one
+
+
+def _backed_off(law, x, t, side, y_end, s_end, known):
+    """The points of the step from x to its last point y_end (at the step s_end, next to the domain's edge)
+    about BACK_OFF times 64 H_MIN before it, then y_end: the table's last cells shrink towards the edge as the
+    plain cut-by-4 rule left them (a walk that starts from the table point nearest a state near the edge starts
+    inside the table, not on its last point).  Each is the branch's point at the eps interpolated (by step)
+    between the known branch points (step, point) either side of it (one LU: the zone end at a fixed contact),
+    kept if its zone length lies between theirs.  [] when y_end is x."""
+    if y_end is x:
+        return []
+    known = sorted(known, key=lambda k: k[0])
+    out = []
+    for k in sorted(BACK_OFF, reverse=True):
+        s = s_end - k * 64 * H_MIN
+        if s <= 0.5 * 64 * H_MIN:
+            continue
+        j = max(i for i, (sk, _) in enumerate(known) if sk <= s)
+        (sa, ya), (sb, yb) = known[j], known[min(j + 1, len(known) - 1)]
+        guess = ya + (yb - ya) * ((s - sa) / (sb - sa) if sb > sa else 0.0)
+        lo, hi = sorted((ya[1], yb[1]))
+        y = fixed_eps(law, guess, hi - lo + 1e-12)
+        if y is not None and lo <= y[1] <= hi and (not out or y[0] != out[-1][0]):
+            out.append(y)
+    return out + [y_end]
 
 
 def _stopped(why, x):
