@@ -78,6 +78,7 @@ class Law:
         self.p_cap = P_CAP * self.m ** (4 / 3)
         self.fixed = functools.lru_cache(maxsize=256)(self._fixed)
         self.residuals = {}          # the zone-end residual by (log eps, log(c - eps)): cohesive_follow.residual
+        self.loads = {}              # p at k = 0 by (log eps, log(c - eps)): the trace's domain checks
 
     def nodes(self, eps):
         """Nodes as a function of eps only (a smooth residual along the trace: jkrcyl.numerics.cohesive_pull_off)."""
@@ -165,7 +166,8 @@ def trace(law):
         eps = np.geomspace(law.eps_lo, law.eps_hi, ALL_POINTS)
         return np.column_stack([np.log(eps), np.zeros(eps.size)]), "all", ""
     x0 = np.array([math.log(law.eps_lo), math.log(start.c - law.eps_lo)])
-    got = _fo.follow(law, x0, lambda x: _inside(law, x), margin=lambda x: _margin(law, x))
+    got = _fo.follow(law, x0, lambda x: _inside(law, x), margin=lambda x: _margin(law, x),
+                     cheap=lambda x: _pushes(law, x))
     return got.points, "zone", got.reason
 
 
@@ -180,23 +182,33 @@ def opens_of(law):
 def _inside(law, x):
     """The domain of the traced zone branch: eps_lo <= eps < eps_hi, c < pi, p below the load cap."""
     eps, d = math.exp(x[0]), math.exp(x[1])
-    if not (law.eps_lo * 0.999 <= eps < law.eps_hi and eps + d < math.pi * (1 - 1e-9)):
-        return False
-    aff = affine(law, eps, eps + d)
-    return _at(aff[1], -aff[0][0] / aff[0][1]) < law.p_cap
+    return law.eps_lo * 0.999 <= eps < law.eps_hi and eps + d < math.pi * (1 - 1e-9) and _load(law, x) < law.p_cap
+
+
+def _load(law, x):
+    """p at k = 0 at x = (log eps, log(c - eps)), kept per law (for _inside, _margin, _pushes)."""
+    key = (float(x[0]), float(x[1]))
+    if key not in law.loads:
+        if len(law.loads) > _fo.MEMO_MAX:
+            law.loads.clear()
+        aff = affine(law, math.exp(x[0]), math.exp(x[0]) + math.exp(x[1]))
+        law.loads[key] = _at(aff[1], -aff[0][0] / aff[0][1])
+    return law.loads[key]
 
 
 def _margin(law, x):
-    """How far x lies beyond :func:`_inside`'s load cap (< 0 below it): 1 - p_cap/p, linear in the arclength
-    next to the pole of p (the receding limit), where the branch meets the cap, and on through it (p < 0 past it,
-    eps >= eps_hi: > 1); -inf where p <= 0 short of it.  NaN where x lies outside another bound of the domain
-    and not beyond the cap (cohesive_follow then cuts the step as before: the branch's other ends)."""
-    eps, d = math.exp(x[0]), math.exp(x[1])
-    aff = affine(law, eps, eps + d)
-    p = _at(aff[1], -aff[0][0] / aff[0][1])
+    """How far x lies beyond the load cap (< 0 below): 1 - p_cap/p, linear in the arclength next to the pole of
+    p (the receding limit) and on through it (p < 0 past it, eps >= eps_hi: > 1); -inf where p <= 0 short of
+    it; NaN outside another bound and not beyond the cap (cohesive_follow then cuts the step as before)."""
+    eps, d, p = math.exp(x[0]), math.exp(x[1]), _load(law, x)
     load = 1 - law.p_cap / p if p > 0 or (p < 0 and eps >= law.eps_hi) else -math.inf
     other = not (law.eps_lo * 0.999 <= eps < law.eps_hi and eps + d < math.pi * (1 - 1e-9))
     return np.array([math.nan if other and load <= 0 else load])
+
+
+def _pushes(law, x):
+    """p > 0: past the zero-load contact towards the load cap, no pull-off there (cohesive_follow's cheap)."""
+    return _load(law, x) > 0
 
 
 def arclength(x):

@@ -52,7 +52,8 @@ FIXED_EPS_SLOPE = 0.01  # follow: correct at fixed eps where the unit tangent ha
 FD_STEP = 1e-6          # follow: finite-difference step of the tangent in (log eps, log(c - eps))
 
 
-def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None, prev=(1.0, 0.0), margin=None):
+def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None, prev=(1.0, 0.0), margin=None,
+           cheap=None):
     """The branch k = 0, h(c) = h0 through x0 = (log eps, log(c - eps)) (on it), leaving it along prev (a
     direction in x: by default towards growing eps), up to
     where it leaves the domain inside(x): a Followed (the points (n, 2) and '' -- or the reason it stopped
@@ -79,8 +80,12 @@ def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None, prev=
     h, edge = h0, False
     for _ in range(max_steps):
         x = pts[-1]
-        y = _correct(law, x, t, side, h)
+        prefer = cheap is not None and h > CHEAP_MIN and abs(t[0]) >= CHEAP_SLOPE and cheap(x)
+        y = _correct(law, x, t, side, h, only_eps=prefer)
         ok = y is not None
+        if prefer and not ok:              # a shorter step on a line of fixed eps (one LU) before the others
+            h = h / 2
+            continue
         if ok and not inside(y):
             if h <= 64 * H_MIN or (done is not None and done(y) and _turn_ok(law, y, t)):
                 return Followed(np.array(pts), "")
@@ -102,7 +107,11 @@ def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None, prev=
     return Followed(np.array(pts), _stopped(f"{max_steps} steps taken", pts[-1]))
 
 
-def _correct(law, x, t, side, h, between=None):
+CHEAP_MIN = 1 / 64      # follow: where cheap(x), steps above this are halved rather than corrected off fixed eps
+CHEAP_SLOPE = 0.3       # follow: ... and where the branch runs this much along eps (a unit tangent)
+
+
+def _correct(law, x, t, side, h, between=None, only_eps=False):
     """The branch's point for the step h from x along t (module docstring: on the line of fixed eps, else of fixed
     zone length -- its secant started, where two branch points ``between`` bracket the predicted log(c - eps),
     at log eps interpolated between them --, else on the predictor's normal), within half a step of the
@@ -110,6 +119,8 @@ def _correct(law, x, t, side, h, between=None):
     pred = x + h * t
     near = lambda y: y is not None and abs(t[0] * (y[1] - pred[1]) - t[1] * (y[0] - pred[0])) <= 0.5 * h
     y = fixed_eps(law, pred, h) if abs(t[0]) >= FIXED_EPS_SLOPE else None
+    if only_eps:
+        return y if near(y) and _side(law, y) == side else None
     if not (near(y) and _side(law, y) == side):
         start = None
         if between is not None and (between[0][1] - pred[1]) * (between[1][1] - pred[1]) < 0:
