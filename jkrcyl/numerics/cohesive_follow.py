@@ -69,10 +69,14 @@ def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None, prev=
     than acos(TURN) (else it is halved; it grows by 1.5 up to h_max), as in jkrcyl.numerics.continuation.  A
     step that leaves the domain is cut by 4 (and not grown after the next step taken) down to 64 H_MIN: the
     last point lies that close to the edge -- unless done(y) says the trace may end at that exit (a step on the
-    same branch: its tangent turns less than acos(TURN)).  With margin(y) (< 0 inside, > 0 outside, smooth along
-    the branch, e.g. log(p/p_cap)) the exit is searched within the step that left the domain instead
-    (:func:`_exit`: ~4 corrections where cutting by 4 and regrowing took ~20 near a load cap).  (Pseudo-arclength with Newton, jkrcyl.numerics.continuation,
-    needs a new LU at every iterate and every finite difference in eps: 3-4 times the LUs.)"""
+    same branch: its tangent turns less than acos(TURN)).  With margin(y) (per bound of the domain, < 0 inside
+    it, smooth along the branch: for a load cap 1 - p_cap/p) the exit is searched within the step that left the
+    domain instead (:func:`_exit`; 2-4 corrections where cutting by 4 and regrowing took ~20 near the cap) and
+    the table's last cells are filled in as that rule left them (:func:`_backed_off`).  Where cheap(x) (say,
+    no state of interest lies ahead: the trace towards a load cap), a step that finds no point on its line of
+    fixed eps is halved (down to CHEAP_MIN) before the costlier correctors are tried (one LU each iterate).
+    (Pseudo-arclength with Newton, jkrcyl.numerics.continuation, needs a new LU at every iterate and every
+    finite difference in eps: 3-4 times the LUs.)"""
     pts = [np.asarray(x0, dtype=float)]
     t, side = _tangent(law, pts[0], np.asarray(prev, dtype=float))
     if t is None:
@@ -141,8 +145,9 @@ def _exit(law, x, t, side, h, y_out, inside, margin):
     step s in (0, h) bracketed until the bracket is at most 64 H_MIN wide (the plain cut-by-4 rule's end).
     margin(y): one value per bound of the domain, each < 0 inside it; the exit is estimated as the first
     crossing of a bound, by inverse quadratic interpolation of that bound's margin through the bracket's ends
-    and the trial before (regula falsi where that fails), each trial aimed EXIT_AIM H_MIN past the estimate
-    towards the end that did not move last, so both ends close in.  Returns (x, 0, known) when the bracket
+    and the end they replaced (regula falsi where that fails or an end was kept twice running: Illinois), each
+    trial aimed EXIT_AIM H_MIN past the estimate towards the end that did not move last (or to within 60 H_MIN
+    of the one that did: closing the bracket), so both ends close in.  Returns (x, 0, known) when the bracket
     closes on x, (the point, its step, known) -- its tangent turning less than acos(TURN) from t --, known the
     branch points found on the way as (step, point), or None: a margin not a number, margins
     disagreeing with inside, a correction failed or EXIT_TRIALS were not enough (the caller then cuts the
@@ -157,9 +162,8 @@ def _exit(law, x, t, side, h, y_out, inside, margin):
             return None
         if hi - lo <= 64 * H_MIN:
             return (y_lo, lo, known) if y_lo is x or _turn_ok(law, y_lo, t) else None
-        with np.errstate(invalid="ignore"):
-            ql, qh = q_lo * (0.5 if stale > 0 else 1.0), q_hi * (0.5 if stale < 0 else 1.0)       # Illinois
-        with np.errstate(invalid="ignore"):
+        ql, qh = q_lo * (0.5 if stale > 0 else 1.0), q_hi * (0.5 if stale < 0 else 1.0)       # Illinois
+        with np.errstate(invalid="ignore"):                              # -inf - -inf: a bound met at neither end
             f = np.where(qh > 0, ql / np.where(qh > 0, ql - qh, -1.0), 1.0)
         i = int(np.argmin(f))                       # the bound met first
         r = lo + (hi - lo) * float(f[i])
