@@ -64,7 +64,7 @@ class Cohesive(SinglePatch):
         self.problem = problem
         self.law = _cb.Law(problem.m, problem.edge.s0, problem.theta, problem.gb, problem.alpha_ratio)
         self._cache = {}
-        self._values = {}            # (p, dn, h) at branch parameters off the table (root refinements)
+        self._values = {}            # (p, dn, h or (eps, c) till h is asked for) at branch parameters off the table
 
     # --- the traced branches ---------------------------------------------------------------------------
     @functools.cached_property
@@ -226,8 +226,11 @@ class Cohesive(SinglePatch):
                 got = st.p, st.delta_over_Delta, st.h_pi_over_Delta
             else:
                 eps, c, _ = self._where(a)
-                got = _cb.state_values(self.law, eps, c)
+                got = _cb.load_approach(self.law, eps, c) + ((eps, c),)     # h(pi): computed when asked
             p, dn, h = self._values.setdefault(a, got)
+        if field == "h" and isinstance(h, tuple):
+            h = _cb.state_values(self.law, *h)[2]
+            self._values[a] = (p, dn, h)
         return {"p": p, "dn": dn, "dw": dn + self.problem.work_shift * p, "h": h}[field]
 
     def root(self, field, lo, hi, flo, fhi, target=0.0):

@@ -78,6 +78,7 @@ class Law:
         self.p_cap = P_CAP * self.m ** (4 / 3)
         self.fixed = functools.lru_cache(maxsize=256)(self._fixed)
         self.residuals = {}          # the zone-end residual by (log eps, log(c - eps)): cohesive_follow.residual
+        self.loads = {}              # p at k = 0 by (log eps, log(c - eps)): the trace's domain checks
 
     def nodes(self, eps):
         """Nodes as a function of eps only (a smooth residual along the trace: jkrcyl.numerics.cohesive_pull_off)."""
@@ -165,7 +166,8 @@ def trace(law):
         eps = np.geomspace(law.eps_lo, law.eps_hi, ALL_POINTS)
         return np.column_stack([np.log(eps), np.zeros(eps.size)]), "all", ""
     x0 = np.array([math.log(law.eps_lo), math.log(start.c - law.eps_lo)])
-    got = _fo.follow(law, x0, lambda x: _inside(law, x))
+    got = _fo.follow(law, x0, lambda x: _inside(law, x), margin=lambda x: _margin(law, x),
+                     cheap=lambda x: _pushes(law, x))
     return got.points, "zone", got.reason
 
 
@@ -180,10 +182,33 @@ def opens_of(law):
 def _inside(law, x):
     """The domain of the traced zone branch: eps_lo <= eps < eps_hi, c < pi, p below the load cap."""
     eps, d = math.exp(x[0]), math.exp(x[1])
-    if not (law.eps_lo * 0.999 <= eps < law.eps_hi and eps + d < math.pi * (1 - 1e-9)):
-        return False
-    aff = affine(law, eps, eps + d)
-    return _at(aff[1], -aff[0][0] / aff[0][1]) < law.p_cap
+    return law.eps_lo * 0.999 <= eps < law.eps_hi and eps + d < math.pi * (1 - 1e-9) and _load(law, x) < law.p_cap
+
+
+def _load(law, x):
+    """p at k = 0 at x = (log eps, log(c - eps)), kept per law (for _inside, _margin, _pushes)."""
+    key = (float(x[0]), float(x[1]))
+    if key not in law.loads:
+        if len(law.loads) > _fo.MEMO_MAX:
+            law.loads.clear()
+        aff = affine(law, math.exp(x[0]), math.exp(x[0]) + math.exp(x[1]))
+        law.loads[key] = _at(aff[1], -aff[0][0] / aff[0][1])
+    return law.loads[key]
+
+
+def _margin(law, x):
+    """How far x lies beyond the load cap (< 0 below): 1 - p_cap/p, linear in the arclength next to the pole of
+    p (the receding limit) and on through it (p < 0 past it, eps >= eps_hi: > 1); -inf where p <= 0 short of
+    it; NaN outside another bound and not beyond the cap (cohesive_follow then cuts the step as before)."""
+    eps, d, p = math.exp(x[0]), math.exp(x[1]), _load(law, x)
+    load = 1 - law.p_cap / p if p > 0 or (p < 0 and eps >= law.eps_hi) else -math.inf
+    other = not (law.eps_lo * 0.999 <= eps < law.eps_hi and eps + d < math.pi * (1 - 1e-9))
+    return np.array([math.nan if other and load <= 0 else load])
+
+
+def _pushes(law, x):
+    """p > 0: past the zero-load contact towards the load cap, no pull-off there (cohesive_follow's cheap)."""
+    return _load(law, x) > 0
 
 
 def arclength(x):
@@ -217,14 +242,21 @@ def project(law, x_pred, normal, scale):
     return None if d is None else np.array([x_pred[0], math.log(d)])
 
 
-def state_values(law, eps, c):
-    """(p, delta/Delta, h(pi)/Delta) of the equilibrium (eps, c) (k = 0), without slopes."""
+def load_approach(law, eps, c):
+    """(p, delta/Delta) of the equilibrium (eps, c) (k = 0): :func:`state_values` without h(pi) (which costs a
+    solve for the zone and the gap: a search for a held load or approach needs neither)."""
     aff = affine(law, eps, c)
     delta = -aff[0][0] / aff[0][1]
+    return _at(aff[1], delta), delta
+
+
+def state_values(law, eps, c):
+    """(p, delta/Delta, h(pi)/Delta) of the equilibrium (eps, c) (k = 0), without slopes."""
+    p, delta = load_approach(law, eps, c)
     fc = law.fixed(eps)
     zones = _co.zones_of(min(c, math.pi))
     u = fc.fx[3] + delta * fc.fx[4] + law.s0 * fc.zone_unit(zones)
-    return _at(aff[1], delta), delta, fc.gap(math.pi, delta, u, zones, law.s0)[0]
+    return p, delta, fc.gap(math.pi, delta, u, zones, law.s0)[0]
 
 
 def slopes(law, eps, c, direction):
