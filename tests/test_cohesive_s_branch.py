@@ -318,6 +318,12 @@ def _zone_end_alone(eps, law, c_near, span):
 # (the first root's pair is born at eps 1.38, apart) up to the receding limit 6e-4 past the opening; refused
 # before ("no zone end near the top"): near_top traces it in (eps, pi - c)
 @example(E=math.inf, nu=0.0, E_I=math.inf, nu_I=0.0, h0=1.5, lam=1.625)
+# found by a fuzz run: a zone end running back from the opening (eps 0.127) to the least contact eps_lo, no turn
+# inside the domain (the test looked for one); and an S whose fold (eps 0.058, pi - c 0.16) the continuation in
+# (log eps, log(c - eps)) turned back at, retracing the root near the top ("the step fell below H_MIN"): near_top
+# now traces past the fold
+@example(E=1e6, nu=0.296875, E_I=8720162.0, nu_I=0.0, h0=1.828125, lam=0.265625)
+@example(E=1e6, nu=0.3125, E_I=17440246.0, nu_I=0.0, h0=1.828125, lam=0.265625)
 def test_s_branches_over_material_pairs(E, nu, E_I, nu_I, h0, lam):
     """Random pairs, rigid bodies included, where the branch is S-shaped (narrow or not): traced whole; between
     the turn (the fold in eps between the two zone-end families) and the round zone's opening, the two states
@@ -336,6 +342,9 @@ def test_s_branches_over_material_pairs(E, nu, E_I, nu_I, h0, lam):
     turn = zone[np.argmin(s.eps[zone])]                       # the fold in eps between the two families
     if turn == zone[0]:          # no turn: the zone end leaves the top forward in eps (one family next to it)
         eps = 0.5 * (s.eps[zone[0]] + s.eps[zone[:8]].max())
+        count = 1
+    elif turn == zone[-1]:       # no turn inside the domain: the zone end runs back to the least contact
+        eps = 0.5 * (s.eps[zone[0]] + s.eps[zone[-1]])
         count = 1
     else:
         eps = 0.5 * (s.eps[turn] + min(s.eps[zone[0]], s.eps[zone].max()))

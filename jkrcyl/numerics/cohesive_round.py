@@ -46,6 +46,8 @@ TOP_PAST = 1e-3           # ... within this of the opening in eps (relative): th
 TOP_MAX = 1.0             # ... within pi - c < TOP_MAX
 TOP_EDGE = 1e-3 * TOP_STEP   # ... the step below which a point outside the domain ends the branch there
 TOP_STEPS = 400           # ... at most this many points
+TOP_GROW = 1000           # ... the largest step, where the branch runs along eps: TOP_GROW steps along x
+TOP_TURN = 0.9            # ... the least cosine between a step and the tangent before it
 START_DC = 1e-4            # the zone part starts at c = pi - START_DC [rad] (its eps is then within ~1e-9 of the
                            # opening: pi - c grows as the square root of the distance in eps)
 
@@ -133,40 +135,47 @@ def _root_near(f, guess, width, lo, hi):
 
 def near_top(law, eps_open, inside=lambda y: True):
     """The zone part next to the top: the branch k = 0, h(c) = h0 from the opening (eps_open, c = pi) traced in
-    s = ((eps/eps_open - 1)/TOP_PAST, log x), x = pi - c, by arclength (a secant predictor, steps of
-    log(TOP_FACTOR), halved where the corrected point lies farther than half a step from the predictor: another
-    family's root) and corrected on the line of fixed x where the branch runs along x (a new contact per
-    iterate), else of fixed eps (one contact) -- so that neither eps(x) nor x(eps) need be single-valued: an S
-    (eps falls from the opening to a fold, then rises), a zone end leaving the top forward in eps, one turning
-    back in c.  The residual is :func:`_gap_at_rest` (no pole).  Ends where the branch leaves the window
-    |eps/eps_open - 1| <= TOP_PAST, x < TOP_MAX (the continuation goes on from there) or its domain inside(y)
-    (y = (log eps, log(c - eps)); the last point within a step of TOP_EDGE of the edge); each fold in eps met on
-    the way is refined (Brent's extremum in log x to 1e-12) and kept as a point.  Returns (points (n, 2) in
-    (log eps, log(c - eps)), why ('' when traced), ended: the branch left its domain)."""
-    to_s = lambda e, lx: np.array([(e / eps_open - 1) / TOP_PAST, lx])
+    s = (log(eps/eps_open)/TOP_PAST, log x), x = pi - c, by arclength: a secant predictor; corrected on the line
+    of fixed x where the branch runs along x (a new contact per iterate; steps up to log(TOP_FACTOR)), else of
+    fixed eps (one contact; steps up to TOP_GROW times that); a step halved where the corrected point lies farther
+    than half a step from the predictor (another family's root) or turns by more than acos(TOP_TURN), grown by 1.5
+    after each point -- so that neither eps(x) nor x(eps) need be single-valued: an S (eps falls from the opening
+    to a fold, then rises; the continuation in (log eps, log(c - eps)) turned back at a fold 0.16 rad below the
+    top), a zone end leaving the top forward in eps, one running back to the least contact, one turning back in c.
+    The residual is :func:`_gap_at_rest` (no pole).  Ends where the branch rises in eps past TOP_PAST beyond the
+    opening, or past a fold and along eps, or reaches x = TOP_MAX (the continuation goes on from there), or
+    leaves its domain inside(y) (y = (log eps, log(c - eps)); the last point within a step of TOP_EDGE of the
+    edge); each fold in eps met on the way is refined (Brent's extremum in log x to 1e-12) and kept as a point.
+    Returns (points (n, 2) in (log eps, log(c - eps)), why ('' when traced), ended: the branch left its domain)."""
+    to_s = lambda e, lx: np.array([math.log(e / eps_open) / TOP_PAST, lx])
     pts = []
     for lx in (math.log(TOP_FIRST), math.log(TOP_FIRST * TOP_FACTOR)):
         e = _eps_at(law, lx, pts[-1][0] if pts else eps_open, 1e-12 * eps_open)
         if e is None:
             return None, _no_zone_end(eps_open, math.exp(lx)), False
         pts.append((e, lx))
-    h, ended = TOP_STEP, False
+    h, ended, folded = TOP_STEP, False, False
     while len(pts) < TOP_STEPS:
         e, lx = pts[-1]
-        if abs(e / eps_open - 1) > TOP_PAST or lx > math.log(TOP_MAX):
-            break
         t = to_s(*pts[-1]) - to_s(*pts[-2])
         t /= np.hypot(*t)
+        along_x = abs(t[1]) >= abs(t[0])
+        rising = e > pts[-2][0]
+        folded = folded or (rising and len(pts) > 2 and pts[-2][0] < pts[-3][0])
+        if (rising and (e > eps_open * (1 + TOP_PAST) or (folded and not along_x))) or lx > math.log(TOP_MAX):
+            break                        # past the opening, or past the fold and along eps: the continuation
+        h = min(h, TOP_STEP if along_x else TOP_STEP * TOP_GROW)
         pred = to_s(*pts[-1]) + h * t
-        pe = eps_open * (1 + TOP_PAST * pred[0])
-        if abs(t[1]) >= abs(t[0]):       # along x: eps at the predicted x
-            y = _eps_at(law, pred[1], pe, max(0.25 * h * abs(t[0]) * TOP_PAST * eps_open, 1e-13 * eps_open))
+        pe = eps_open * math.exp(TOP_PAST * pred[0])
+        if along_x:                      # along x: eps at the predicted x
+            y = _eps_at(law, pred[1], pe, max(0.25 * h * abs(t[0]) * TOP_PAST * pe, 1e-13 * eps_open))
             y = None if y is None else (y, pred[1])
         else:                            # along eps: x at the predicted contact (one LU)
             f = lambda v: _gap_at_rest(law, pe, math.exp(v))
             y = _root_near(f, pred[1], 0.25 * h * abs(t[1]) + 1e-9, -700.0, math.log(math.pi - pe))
             y = None if y is None else (pe, y)
-        if y is None or np.hypot(*(to_s(*y) - pred)) > 0.5 * h:
+        step = None if y is None else to_s(*y) - to_s(*pts[-1])
+        if y is None or np.hypot(*(to_s(*y) - pred)) > 0.5 * h or step @ t < TOP_TURN * np.hypot(*step):
             h /= 2
             if h < TOP_STEP * 1e-4:
                 return None, _no_zone_end(eps_open, math.exp(lx), e), False
@@ -178,7 +187,7 @@ def near_top(law, eps_open, inside=lambda y: True):
             h /= 4
             continue
         pts.append(y)
-        h = min(1.5 * h, TOP_STEP)
+        h *= 1.5
     else:
         return None, (f"the cohesive branch next to the round zone's opening at eps = {eps_open:.6g} rad took "
                       f"{TOP_STEPS} steps"), False
