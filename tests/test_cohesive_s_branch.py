@@ -324,6 +324,8 @@ def _zone_end_alone(eps, law, c_near, span):
 # now traces past the fold
 @example(E=1e6, nu=0.296875, E_I=8720162.0, nu_I=0.0, h0=1.828125, lam=0.265625)
 @example(E=1e6, nu=0.3125, E_I=17440246.0, nu_I=0.0, h0=1.828125, lam=0.265625)
+# the same (fold at eps 0.120, pi - c 0.141) for two rigid bodies, found by a fuzz run on 4bb6238
+@example(E=math.inf, nu=0.0, E_I=math.inf, nu_I=0.0, h0=1.859375, lam=0.3125)
 def test_s_branches_over_material_pairs(E, nu, E_I, nu_I, h0, lam):
     """Random pairs, rigid bodies included, where the branch is S-shaped (narrow or not): traced whole; between
     the turn (the fold in eps between the two zone-end families) and the round zone's opening, the two states
