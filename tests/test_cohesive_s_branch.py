@@ -314,6 +314,18 @@ def _zone_end_alone(eps, law, c_near, span):
 # found by hypothesis (two rigid bodies): an S whose fold lies 7e-4 below the opening, past the scan's jump (the
 # continuation's first step cut across it: one family at the mid contact); traced next to the top by pi - c
 @example(E=math.inf, nu=0.0, E_I=math.inf, nu_I=0.0, h0=1.5, lam=1.5625)
+# found by a fuzz run (two rigid bodies): called an S by the scan, but the zone end leaves the top forward in eps
+# (the first root's pair is born at eps 1.38, apart) up to the receding limit 6e-4 past the opening; refused
+# before ("no zone end near the top"): near_top traces it in (eps, pi - c)
+@example(E=math.inf, nu=0.0, E_I=math.inf, nu_I=0.0, h0=1.5, lam=1.625)
+# found by a fuzz run: a zone end running back from the opening (eps 0.127) to the least contact eps_lo, no turn
+# inside the domain (the test looked for one); and an S whose fold (eps 0.058, pi - c 0.16) the continuation in
+# (log eps, log(c - eps)) turned back at, retracing the root near the top ("the step fell below H_MIN"): near_top
+# now traces past the fold
+@example(E=1e6, nu=0.296875, E_I=8720162.0, nu_I=0.0, h0=1.828125, lam=0.265625)
+@example(E=1e6, nu=0.3125, E_I=17440246.0, nu_I=0.0, h0=1.828125, lam=0.265625)
+# the same (fold at eps 0.120, pi - c 0.141) for two rigid bodies, found by a fuzz run on 4bb6238
+@example(E=math.inf, nu=0.0, E_I=math.inf, nu_I=0.0, h0=1.859375, lam=0.3125)
 def test_s_branches_over_material_pairs(E, nu, E_I, nu_I, h0, lam):
     """Random pairs, rigid bodies included, where the branch is S-shaped (narrow or not): traced whole; between
     the turn (the fold in eps between the two zone-end families) and the round zone's opening, the two states
@@ -330,12 +342,22 @@ def test_s_branches_over_material_pairs(E, nu, E_I, nu_I, h0, lam):
     zone = np.nonzero(s.c < math.pi)[0]
     assume(zone.size > 0)        # else the round zone stays within the range up to the receding limit (one family)
     turn = zone[np.argmin(s.eps[zone])]                       # the fold in eps between the two families
-    eps = 0.5 * (s.eps[turn] + min(s.eps[zone[0]], s.eps[zone].max()))
+    if turn == zone[0]:          # no turn: the zone end leaves the top forward in eps (one family next to it)
+        eps = 0.5 * (s.eps[zone[0]] + s.eps[zone[:8]].max())
+        count = 1
+    elif turn == zone[-1]:       # no turn inside the domain: the zone end runs back to the least contact
+        eps = 0.5 * (s.eps[zone[0]] + s.eps[zone[-1]])
+        count = 1
+    else:
+        eps = 0.5 * (s.eps[turn] + min(s.eps[zone[0]], s.eps[zone].max()))
+        count = 2
     cells = [i for i in range(a.size - 1) if (s.eps[i] - eps) * (s.eps[i + 1] - eps) <= 0 and s.c[i + 1] < math.pi]
     found = [sv.point(roots.root(lambda x: sv._where(x)[0] - eps, a[i], a[i + 1], xtol=1e-14)) for i in cells]
-    assert len(found) == 2 and abs(found[0].c - found[1].c) > 1e-6      # the root near the top, the first root
+    assert len(found) == count, (count, [pt.c for pt in found])  # the root near the top (and the first root)
+    span = 0.5 * abs(found[0].c - found[1].c) if count == 2 else 0.5 * (math.pi - found[0].c)
+    assert span > 5e-7
     for pt in found:
-        c_alone, p_alone = _zone_end_alone(eps, law, pt.c, 0.5 * abs(found[0].c - found[1].c))
+        c_alone, p_alone = _zone_end_alone(eps, law, pt.c, span)
         assert abs(c_alone - pt.c) < 1e-8 and abs(p_alone - pt.p) < 1e-8 * max(1.0, abs(pt.p))
 
 

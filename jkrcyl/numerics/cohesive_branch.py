@@ -30,6 +30,7 @@ from . import roots as _roots
 from . import cohesive_kernels as _ck
 from . import cohesive_zones as _cz
 from . import cohesive_follow as _fo
+from . import cohesive_bordered as _bo
 from . import cohesive_round as _round
 from . import one_arc as _one
 
@@ -245,6 +246,9 @@ def project(law, x_pred, normal, scale):
 def load_approach(law, eps, c):
     """(p, delta/Delta) of the equilibrium (eps, c) (k = 0): :func:`state_values` without h(pi) (which costs a
     solve for the zone and the gap: a search for a held load or approach needs neither)."""
+    if _bo.applies(law, eps, c):                  # the zone all round: regular at the degenerate contact
+        p, delta, _ = _bo.round_values(law, eps)
+        return p, delta
     aff = affine(law, eps, c)
     delta = -aff[0][0] / aff[0][1]
     return _at(aff[1], delta), delta
@@ -252,6 +256,9 @@ def load_approach(law, eps, c):
 
 def state_values(law, eps, c):
     """(p, delta/Delta, h(pi)/Delta) of the equilibrium (eps, c) (k = 0), without slopes."""
+    if _bo.applies(law, eps, c):                  # the zone all round: regular at the degenerate contact
+        p, delta, u = _bo.round_values(law, eps)
+        return p, delta, law.fixed(eps).gap(math.pi, delta, u, _co.zones_of(math.pi), law.s0)[0]
     p, delta = load_approach(law, eps, c)
     fc = law.fixed(eps)
     zones = _co.zones_of(min(c, math.pi))
@@ -267,6 +274,8 @@ def slopes(law, eps, c, direction):
 
 def _slopes(law, eps, c, direction):
     """(delta/Delta, dp/dt, d(delta/Delta)/dt, D_p, D_dn) at an equilibrium (eps, c) (:func:`point`)."""
+    if _bo.applies(law, eps, c):                  # the zone all round (jkrcyl.numerics.cohesive_bordered)
+        return _bo.round_slopes(law, eps)
     aff = affine(law, eps, c)
     delta = -aff[0][0] / aff[0][1]
     k_d, p_d = aff[0][1], aff[1][1]
@@ -301,7 +310,10 @@ def point(law, eps, c, direction):
     delta, dp_dt, ddn_dt, D_p, D_dn = _slopes(law, eps, c, direction)
     fc = law.fixed(eps)
     zones = _co.zones_of(min(c, math.pi))
-    u = fc.fx[3] + delta * fc.fx[4] + law.s0 * fc.zone_unit(zones)
+    if _bo.applies(law, eps, c):
+        u = _bo.round_values(law, eps)[2]
+    else:
+        u = fc.fx[3] + delta * fc.fx[4] + law.s0 * fc.zone_unit(zones)
     st = _co._state(eps, c, fc, delta, u, zones, law.m, law.s0, law.kernel, law.gb, fc.sys.n)
     return Point(eps, st.c, delta, st.p, st.B, dp_dt, ddn_dt, D_p, D_dn, st.h_pi_over_Delta, st.zones, st.fields,
                  st)

@@ -13,28 +13,41 @@ larger contacts.  Two folds in eps, at eps_open and eps_jump: the branch is
 
 traced here as one polyline in x = (log eps, log(c - eps)): the round part at the constant x1 = log(pi - eps_open)
 (so its arclength is log eps, the parameter of a round-zone branch, and its last point is the opening), then the
-zone part by the continuation of jkrcyl.numerics.cohesive_follow from c = pi - START_DC at the opening, the
-tangent oriented towards a shorter zone.  Where the S is narrow (its fold within ~1e-3 of the opening in eps, the
-zone end there within ~1e-2 of pi: cohesive_branch.top_opens 'narrow S-shaped branch', and an S whose fold lies
-just past the scan's jump) that first step would cut across both turns, so wherever eps is single-valued in
-x = pi - c next to the top (falling from the opening along c2 to the fold, rising along c1 past the opening) the
-zone part there is traced by x instead (:func:`near_top`: points geometric in x from TOP_FIRST, the fold refined
-and kept as a point) and the continuation starts from its last point.  The round prefix's points have c = pi
+zone part next to the top by :func:`near_top` -- in the plane (eps, pi - c), by arclength, corrected along
+whichever of the two the branch runs along, so that neither eps(c) nor c(eps) need be single-valued: a narrow S
+(its fold within ~1e-3 of the opening in eps, where the continuation's first step from the opening would cut
+across both turns), a zone end leaving the top FORWARD in eps (the scan of top_opens calls it an S where the first
+root's pair is born apart from the top: a rigid pair, h0 1.5 Delta, lambda 1.625 -- its zone end runs forward up
+to the receding limit), one turning back in c -- the folds in eps refined and kept as points; then the
+continuation of jkrcyl.numerics.cohesive_follow from its last point (a wide S, and what near_top cannot follow:
+from c = pi - START_DC at the opening, the tangent towards a shorter zone).  The round prefix's points have c = pi
 (Traced reads n_round).
+
+Next to the receding contact eps_crit the zone-end residual of cohesive_follow (the approach eliminated by k = 0)
+has a pole (dk/d(delta) vanishes there at every zone end); near_top's residual is that one times dk/d(delta),
+smooth there.  (A branch with its zone end near the top crosses eps_crit with a finite approach where k at
+delta = 0 vanishes too -- the rigid pair above: pi - c = 0.0243, p = 0.6670 on both sides -- the sub-critical table
+ends at the receding limit as usual.)
 """
 import math
 
 import numpy as np
 
 from . import cohesive_follow as _fo
+from . import cohesive_kernels as _ck
 from . import roots as _roots
 
 ROUND_POINTS = 40          # round-zone points per unit of log eps (cohesive_branch.ALL_POINTS over its range)
 TOP_FIRST = 1e-6          # a narrow S: its first zone point has pi - c = TOP_FIRST [rad] (eps within ~1e-13 of
                           # the opening: eps_open - eps grows as (pi - c)^2)
 TOP_FACTOR = 10 ** 0.125  # ratio of successive pi - c next to the top
-TOP_PAST = 1e-3           # ... up to this far past the opening in eps (relative), back on the first root
+TOP_STEP = math.log(TOP_FACTOR)   # ... the largest step of near_top in its plane
+TOP_PAST = 1e-3           # ... within this of the opening in eps (relative): then the continuation
 TOP_MAX = 1.0             # ... within pi - c < TOP_MAX
+TOP_EDGE = 1e-3 * TOP_STEP   # ... the step below which a point outside the domain ends the branch there
+TOP_STEPS = 400           # ... at most this many points
+TOP_GROW = 1000           # ... the largest step, where the branch runs along eps: TOP_GROW steps along x
+TOP_TURN = 0.9            # ... the least cosine between a step and the tangent before it
 START_DC = 1e-4            # the zone part starts at c = pi - START_DC [rad] (its eps is then within ~1e-9 of the
                            # opening: pi - c grows as the square root of the distance in eps)
 
@@ -76,10 +89,12 @@ def trace(law, eps_jump, inside, top_gap):
     eps = np.geomspace(law.eps_lo, eps_open, n)
     eps[-1] = eps_open
     rounded = np.column_stack([np.log(eps), np.full(n, x1)])
-    # the zone part next to the top by pi - c where eps(pi - c) is single-valued through the fold (a narrow S, and
-    # any S whose fold lies within TOP_PAST of the opening: the continuation's first step would cut across it);
-    # else (a wide S, c turning along the root near the top) the continuation from c = pi - START_DC
-    near, why = near_top(law, eps_open)
+    # the zone part next to the top traced in (eps, pi - c) (near_top: any shape, the folds refined; the
+    # continuation's first step from the opening would cut across a narrow S's turns), then the continuation;
+    # where near_top finds nothing, the continuation from c = pi - START_DC towards smaller contacts (a wide S)
+    near, why, ended = near_top(law, eps_open, inside)
+    if ended:                            # the branch leaves its domain next to the top (the receding limit)
+        return np.vstack([rounded, near]), "zone", "", n
     if not why:
         y, prev = near[-1], near[-1] - near[-2]
         rounded = np.vstack([rounded, near[:-1]])
@@ -94,61 +109,121 @@ def trace(law, eps_jump, inside, top_gap):
     return np.vstack([rounded, got.points]), "zone", got.reason, n
 
 
-def _eps_at(law, c, guess, width):
-    """The contact eps nearest to guess whose zone-end residual vanishes at the zone end c (a bracket grown from
-    guess +- width by doubling, then Brent to 1e-15 relative), or None."""
-    f = lambda e: _fo.residual(law, np.array([math.log(e), math.log(c - e)]))
+def _gap_at_rest(law, eps, x):
+    """k1 g0 - k0 g1 at the contact eps and the zone end c = pi - x: the zone-end residual h(c) - h0 with k = 0
+    (cohesive_follow.residual, the approach eliminated by k) times dk/d(delta).  Smooth where that one has a pole:
+    dk/d(delta) vanishes on a line of fixed eps (the approach leaves k unchanged at that contact), crossed by the
+    branch where k0 vanishes too (the state's approach there fixed by g alone)."""
+    fc = law.fixed(eps)
+    v = _ck.affine(fc.fx, fc.ek, fc.ep, fc.eb, math.pi - x, law.s0, law.h0)
+    return v[1] * v[6] - v[0] * v[7]
+
+
+def _root_near(f, guess, width, lo, hi):
+    """The root of f nearest to guess within (lo, hi): a bracket grown from guess +- width by doubling, Brent to
+    1e-15 relative; None without a sign change."""
     f0 = f(guess)
     if f0 == 0.0:
         return guess
-    for w in width * 2.0 ** np.arange(24):
-        for e in (guess - w, guess + w):
-            fe = f(e) if 0 < e < c else math.nan
-            if math.isfinite(fe) and fe * f0 <= 0:
-                return _roots.root(f, *sorted((guess, e)), xtol=1e-15 * guess)
+    for w in width * 2.0 ** np.arange(30):
+        for y in (guess - w, guess + w):
+            fy = f(y) if lo < y < hi else math.nan
+            if math.isfinite(fy) and fy * f0 <= 0:
+                return _roots.root(f, *sorted((guess, y)), xtol=1e-15 * max(abs(guess), 1e-300))
     return None
 
 
-def near_top(law, eps_open):
-    """The narrow S's zone part next to the top: the contact eps(x) at the zone ends c = pi - x, x geometric from
-    TOP_FIRST (single-valued there: eps falls from the opening along the root near the top to the fold in eps,
-    where it meets the first root, and rises along that), up to TOP_PAST past the opening in eps; the fold refined
-    (the least eps, Brent's minimum in log x to 1e-12) and kept as a point.  Returns (points (n, 2) in (log eps,
-    log(c - eps)), '') or (None, why)."""
-    xs, es = [], []
-    x, guess = TOP_FIRST, eps_open
-    while x < TOP_MAX:
-        steps = np.abs(np.diff(es[-3:]))
-        width = max(steps.max(initial=0.0), 1e-12 * eps_open)
-        if len(es) >= 2:                 # x geometric: linear (quadratic) in the index from the last two (three)
-            guess = 2 * es[-1] - es[-2] + (es[-1] - 2 * es[-2] + es[-3] if len(es) >= 3 else 0.0)
-        e = _eps_at(law, math.pi - x, guess, width)
-        if e is not None and len(es) >= 3 and abs(e - guess) > 8 * width:     # another family's root: not this one
-            e = None
+def near_top(law, eps_open, inside=lambda y: True):
+    """The zone part next to the top: the branch k = 0, h(c) = h0 from the opening (eps_open, c = pi) traced in
+    s = (log(eps/eps_open)/TOP_PAST, log x), x = pi - c, by arclength: a secant predictor; corrected on the line
+    of fixed x where the branch runs along x (a new contact per iterate; steps up to log(TOP_FACTOR)), else of
+    fixed eps (one contact; steps up to TOP_GROW times that); a step halved where the corrected point lies farther
+    than half a step from the predictor (another family's root) or turns by more than acos(TOP_TURN), grown by 1.5
+    after each point -- so that neither eps(x) nor x(eps) need be single-valued: an S (eps falls from the opening
+    to a fold, then rises; the continuation in (log eps, log(c - eps)) turned back at a fold 0.16 rad below the
+    top), a zone end leaving the top forward in eps, one running back to the least contact, one turning back in c.
+    The residual is :func:`_gap_at_rest` (no pole).  Ends where the branch rises in eps past TOP_PAST beyond the
+    opening, or past a fold and along eps, or reaches x = TOP_MAX (the continuation goes on from there), or
+    leaves its domain inside(y) (y = (log eps, log(c - eps)); the last point within a step of TOP_EDGE of the
+    edge); each fold in eps met on the way is refined (Brent's extremum in log x to 1e-12) and kept as a point.
+    Returns (points (n, 2) in (log eps, log(c - eps)), why ('' when traced), ended: the branch left its domain)."""
+    to_s = lambda e, lx: np.array([math.log(e / eps_open) / TOP_PAST, lx])
+    pts = []
+    for lx in (math.log(TOP_FIRST), math.log(TOP_FIRST * TOP_FACTOR)):
+        e = _eps_at(law, lx, pts[-1][0] if pts else eps_open, 1e-12 * eps_open)
         if e is None:
-            return None, (f"the cohesive branch could not be followed beyond the round zone's opening at eps = "
-                          f"{eps_open:.6g} rad: no contact with its zone end at pi - {x:.3g} rad near eps = "
-                          f"{guess:.6g} rad")
-        xs.append(x)
-        es.append(e)
-        if e > eps_open * (1 + TOP_PAST) and es[-2] < e:
-            break
-        x *= TOP_FACTOR
+            return None, _no_zone_end(eps_open, math.exp(lx)), False
+        pts.append((e, lx))
+    h, ended, folded = TOP_STEP, False, False
+    while len(pts) < TOP_STEPS:
+        e, lx = pts[-1]
+        t = to_s(*pts[-1]) - to_s(*pts[-2])
+        t /= np.hypot(*t)
+        along_x = abs(t[1]) >= abs(t[0])
+        rising = e > pts[-2][0]
+        folded = folded or (rising and len(pts) > 2 and pts[-2][0] < pts[-3][0])
+        if (rising and (e > eps_open * (1 + TOP_PAST) or (folded and not along_x))) or lx > math.log(TOP_MAX):
+            break                        # past the opening, or past the fold and along eps: the continuation
+        h = min(h, TOP_STEP if along_x else TOP_STEP * TOP_GROW)
+        pred = to_s(*pts[-1]) + h * t
+        pe = eps_open * math.exp(TOP_PAST * pred[0])
+        if along_x:                      # along x: eps at the predicted x
+            y = _eps_at(law, pred[1], pe, max(0.25 * h * abs(t[0]) * TOP_PAST * pe, 1e-13 * eps_open))
+            y = None if y is None else (y, pred[1])
+        else:                            # along eps: x at the predicted contact (one LU)
+            f = lambda v: _gap_at_rest(law, pe, math.exp(v))
+            y = _root_near(f, pred[1], 0.25 * h * abs(t[1]) + 1e-9, -700.0, math.log(math.pi - pe))
+            y = None if y is None else (pe, y)
+        step = None if y is None else to_s(*y) - to_s(*pts[-1])
+        if y is None or np.hypot(*(to_s(*y) - pred)) > 0.5 * h or step @ t < TOP_TURN * np.hypot(*step):
+            h /= 2
+            if h < TOP_STEP * 1e-4:
+                return None, _no_zone_end(eps_open, math.exp(lx), e), False
+            continue
+        if not inside(np.array([math.log(y[0]), math.log(math.pi - math.exp(y[1]) - y[0])])):
+            if h <= TOP_EDGE:            # the branch leaves its domain (the receding limit, the load cap) here
+                ended = True
+                break
+            h /= 4
+            continue
+        pts.append(y)
+        h *= 1.5
     else:
-        return None, f"the narrow S-shaped branch does not return past its opening eps = {eps_open:.6g} rad"
-    j = int(np.argmin(es))
-    if not (0 < j and np.all(np.diff(es[:j + 1]) < 0) and np.all(np.diff(es[j:]) > 0)):  # one fold, else not an S
-        return None, (f"the narrow S-shaped branch next to its opening eps = {eps_open:.6g} rad does not turn "
-                      "back in eps once")
-    if 0 < j < len(es) - 1:              # the fold in eps between the root near the top and the first root
-        lx = [math.log(xs[j - 1]), math.log(xs[j]), math.log(xs[j + 1])]
-        at = lambda v: _eps_at(law, math.pi - math.exp(v), es[j], abs(es[j + 1] - es[j - 1]) + 1e-12)
-        v, e = _roots.minimum(lambda v: (lambda r: math.inf if r is None else r)(at(v)), *lx, 1e-12)
-        k = j if v < lx[1] else j + 1
-        xs.insert(k, math.exp(v))
-        es.insert(k, e)
-    xs, es = np.array(xs), np.array(es)
-    return np.column_stack([np.log(es), np.log(math.pi - xs - es)]), ""
+        return None, (f"the cohesive branch next to the round zone's opening at eps = {eps_open:.6g} rad took "
+                      f"{TOP_STEPS} steps"), False
+    pts = _folds_refined(law, pts)
+    es, lxs = np.array([p[0] for p in pts]), np.array([p[1] for p in pts])
+    return np.column_stack([np.log(es), np.log(math.pi - np.exp(lxs) - es)]), "", ended
+
+
+def _no_zone_end(eps_open, x, guess=None):
+    near = "" if guess is None else f" near eps = {guess:.6g} rad"
+    return (f"the cohesive branch could not be followed beyond the round zone's opening at eps = {eps_open:.6g} "
+            f"rad: no contact with its zone end at pi - {x:.3g} rad{near}")
+
+
+def _eps_at(law, lx, guess, width):
+    """The contact nearest to guess with a zone end at pi - exp(lx) (:func:`_root_near`), or None."""
+    x = math.exp(lx)
+    return _root_near(lambda e: _gap_at_rest(law, e, x), guess, width, 0.0, math.pi - x)
+
+
+def _folds_refined(law, pts):
+    """pts with each fold in eps between points traced along x (eps largest or least at an interior point, x
+    monotone through it) refined: Brent's extremum of eps in log x to 1e-12, inserted as a point."""
+    out = list(pts)
+    for j in range(len(pts) - 2, 0, -1):
+        (e0, l0), (e1, l1), (e2, l2) = pts[j - 1:j + 2]
+        if (e1 - e0) * (e2 - e1) >= 0 or (l1 - l0) * (l2 - l1) <= 0:
+            continue
+        sign = 1.0 if e1 < e0 else -1.0
+        width = abs(e2 - e0) + 1e-12 * e1
+        at = lambda v: (lambda r: math.inf if r is None else sign * r)(_eps_at(law, v, e1, width))
+        lo, hi = sorted((l0, l2))
+        v, e = _roots.minimum(at, lo, l1, hi, 1e-12)
+        k = j if (v - l1) * (l2 - l0) < 0 else j + 1
+        out.insert(k, (sign * e, v))
+    return out
 
 
 def _zone_start(law, eps_open):

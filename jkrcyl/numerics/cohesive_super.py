@@ -29,6 +29,7 @@ import math
 import numpy as np
 
 from . import cohesive as _co
+from . import cohesive_bordered as _bo
 from . import cohesive_branch as _cb
 from . import cohesive_follow as _fo
 from . import one_arc as _one
@@ -150,7 +151,10 @@ def join_points(law, x_end, eps_join):
 def round_state(law, eps):
     """The contact |phi| < eps with its zone all round (zones 'all': k = 0 alone), as a CohesiveState."""
     fc, zones = law.fixed(eps), _co.zones_of(math.pi)
-    dn, u = fc.solve(zones, law.s0)
+    if _bo.applies(law, eps, math.pi):       # regular at the degenerate contact (jkrcyl.numerics.cohesive_bordered)
+        dn, u = _bo.round_values(law, eps)[1:]
+    else:
+        dn, u = fc.solve(zones, law.s0)
     return _co._state(eps, math.pi, fc, dn, u, zones, law.m, law.s0, law.kernel, law.gb, fc.sys.n)
 
 
