@@ -115,7 +115,7 @@ class Contact(Analyses, CohesiveLaw, AtContactSize):
 
     @property
     def zeta(self):
-        """zeta* = sqrt(2 w R/A) of (3.6) (w: the law's edge work, jkrcyl.model.edge.EdgeLaw.edge_work)."""
+        """zeta* = sqrt(2 w R/A) of (3.6) (w: the law's edge work, jkrcyl.model.edge_law.EdgeLaw.edge_work)."""
         return math.sqrt(2 * self.law.edge_work(self.w) * self.R / self.A)
 
     @property

@@ -1,7 +1,7 @@
 """Edge laws: what holds the contact edge, the extension point of jkrcyl.
 
 ``jkrcyl.Contact(..., law=...)`` takes any law; every analysis reaches it only through the interface of
-jkrcyl.model.edge (:class:`EdgeLaw`, dimensional, and :class:`Edge`, normalised).
+jkrcyl.model.edge_law (:class:`EdgeLaw`, dimensional) and jkrcyl.model.edge (:class:`Edge`, normalised).
 
 * :class:`Griffith` -- JKR (the default): the edge a crack with critical energy release rate w (3.5)-(3.6);
 * :class:`Dugdale` -- the Maugis-Dugdale cohesive zone of strength sigma0 and range h0 = w/sigma0;
@@ -25,7 +25,8 @@ energy release rate is twice w:
 >>> round(a), abs(a / b - 1) < 1e-12                  # N/m: JKR's pull-off at 2w
 (-1555, True)
 """
-from ..model.edge import Edge, EdgeLaw
+from ..model.edge import Edge
+from ..model.edge_law import EdgeLaw
 from .dugdale import Dugdale, DugdaleEdge
 from .griffith import GRIFFITH_EDGE, Griffith, GriffithEdge
 from .kinetic import CrackKinetics, Kinetic, arrhenius_shift, wlf_shift

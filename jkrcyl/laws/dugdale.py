@@ -18,7 +18,8 @@ from dataclasses import dataclass
 
 from .._validate import HUGE, TINY, finite_scalar
 from ..model.cohesive import Cohesive
-from ..model.edge import Edge, EdgeLaw
+from ..model.edge import Edge
+from ..model.edge_law import EdgeLaw
 from .griffith import GRIFFITH_EDGE
 
 

@@ -12,7 +12,8 @@ from dataclasses import dataclass
 
 from ..model.closed_form import ClosedFormPhysical
 from ..model.collocation import CollocationPhysical
-from ..model.edge import Edge, EdgeLaw
+from ..model.edge import Edge
+from ..model.edge_law import EdgeLaw
 from ..model.griffith import GRIFFITH_EDGE, GriffithEdge, closed_form
 
 __all__ = ["GRIFFITH_EDGE", "Griffith", "GriffithEdge", "closed_form", "physical"]

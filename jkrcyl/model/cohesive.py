@@ -25,11 +25,10 @@ differences in eps and c at a fixed approach), never across table points.  Stabi
 jkrcyl.model.stability with the derivatives D_X of jkrcyl.numerics.cohesive_branch (the zone end's energy
 dE/dc = 2 (s0 h(c) - m^2); the contactless pin is a saddle under load, stable under grip where the opening at its
 zone end grows with the zone).  The total potential (elastic + Dugdale interface energy - w over the contact) has
-dE = p d(delta/Delta) along the branches.  A zone reaching round at the touch end that stops reaching round by
-a jump of its first zone-end root (jkrcyl.numerics.cohesive_branch.top_opens) is an S-shaped branch, narrow or
-not (the round zone, the root near the top back in eps to a fold, the first root), traced whole
-(jkrcyl.numerics.cohesive_round); a top bridge (a zone beside the top apart from the bottom one: h with a
-local minimum at pi, not met so far) is refused (:attr:`unmodelled`).  Full contact: the bonded pin of
+dE = p d(delta/Delta) along the branches.  A zone reaching round at the touch end that stops reaching round by a
+jump of its first zone-end root (jkrcyl.numerics.cohesive_branch.top_opens) is an S-shaped branch, narrow or not
+(the round zone, the root near the top back to a fold, the first root), traced whole (jkrcyl.numerics.cohesive_round);
+a top bridge (jkrcyl.numerics.cohesive_top_zone) is refused (:attr:`unmodelled`).  Full contact: the bonded pin of
 jkrcyl.model.full_contact (tension below s0); two patches: jkrcyl.analysis.cohesive_two_patch.
 """
 from __future__ import annotations
@@ -40,6 +39,7 @@ import math
 import numpy as np
 from ..numerics import cohesive as _co
 from ..numerics import cohesive_branch as _cb
+from ..numerics import cohesive_contactless as _cl
 from ..numerics import cohesive_pull_off as _cpo
 from ..numerics import cohesive_zones as _cz
 from ..numerics import one_arc as _one
@@ -100,7 +100,7 @@ class Cohesive(SinglePatch):
     @functools.cached_property
     def _contactless(self):
         """(c_lo, c_touch) of the zone-only branch, or None."""
-        c, touches = _cb.contactless_end(self.law)
+        c, touches = _cl.contactless_end(self.law)
         if not touches:
             return None
         return (0.0, c) if c < math.pi / 2 else (math.pi / 2 * (1 + 1e-6), c)
@@ -165,7 +165,7 @@ class Cohesive(SinglePatch):
         if a not in self._cache:
             if a <= 1:
                 lo, hi = self._contactless
-                pt = _cb.contactless_point(self.law, lo + a * (hi - lo))
+                pt = _cl.contactless_point(self.law, lo + a * (hi - lo))
             else:
                 eps, c, direction = self._where(a)
                 pt = _cb.point(self.law, eps, c, direction)
