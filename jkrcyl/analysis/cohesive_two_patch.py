@@ -259,6 +259,10 @@ def _branches(fam: CohesiveTwoPatch, n: int) -> tuple:
         points = np.column_stack([b.eps, b.eps_top])
         with _cb.one_blas_thread():
             t = _cb.trace(fam.law, points, b.ends, fam.n)
-        if t.states:
-            out.append(fam.curve(t.states, t.jacobians, t.ends))
+        if not t.states:            # never a silent drop: JKR's branch is there, the law's was not found from it
+            arc = float(np.max(np.min(points, axis=1)))
+            raise ValueError(f"sigma0: JKR's two-patch branch (its smaller arc at most {arc:.3g} rad) is not "
+                             f"followed under the law: no state found from it (Dugdale zones ~"
+                             f"{_co.dugdale_zone(fam.law.m, fam.law.s0):.3g} rad)")
+        out.append(fam.curve(t.states, t.jacobians, t.ends))
     return tuple(out)
