@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 from hypothesis import example, given, settings, HealthCheck, strategies as st
 
-from jkrcyl.analysis import cycle, forward, tracing
+from jkrcyl.analysis import cycle, forward, path, tracing
 from jkrcyl.analysis import two_patch_fold as fold2
 from jkrcyl.analysis.landing import dissipated
 from jkrcyl.analysis.two_patch_family import family
@@ -123,3 +123,16 @@ def test_every_jump_of_a_cycle_dissipates(M, theta, gb, control):
     for j in cy.jumps:
         assert j.before.held() == pytest.approx(j.after.held(), abs=1e-9)
         assert dissipated(pb, un, j.before, j.after) >= -1e-9 * max(1.0, abs(j.before.energy), abs(j.after.energy))
+
+
+def test_jkr_two_patch_walk_ends_on_equilibria():
+    """The walk on JKR's two patches to a target and to its fold ends on equilibria (G = w at both ends, Griffith)
+    at the held value: it solves them on the branch (interpolating the half-angles of the traced points, as it
+    did, missed the target by 8e-3 Delta at G_top/w = 0.995)."""
+    s = forward.two_patch_state(PB, UN, two.solve(PB, eps_top=1.028, guess=0.725), "grip")
+    _, event, e = path.walk_two_patch(PB, UN, s, -1.9, "grip")
+    assert event == "target" and e.delta_over_Delta == pytest.approx(-1.9, abs=1e-12)
+    _, event, f = path.walk_two_patch(PB, UN, e, 0.0, "grip")
+    assert event == "fold" and f.delta_over_Delta == pytest.approx(-0.07009519, abs=2e-8)
+    for x in (e, f):
+        assert x.extra["G_bot"] == pytest.approx(1.0, abs=1e-10) and x.extra["G_top"] == pytest.approx(1.0, abs=1e-10)
