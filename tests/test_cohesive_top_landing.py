@@ -19,7 +19,7 @@ import math
 import pytest
 
 import jkrcyl
-from jkrcyl.analysis import branches, confined, cycle, forward, landing, tracing
+from jkrcyl.analysis import branches, cycle, forward, landing, tracing
 from jkrcyl.analysis.two_patch_family import family
 from jkrcyl.laws.dugdale import edge_of_strength
 from jkrcyl.model.problem import Problem
@@ -74,7 +74,7 @@ def test_top_closing_lands_on_the_laws_two_patch_branch_as_jkr():
     pb = Problem(M, THETA, GB, 0.0, edge_of_strength(jkrcyl.equilibria.zone_strength(lam, M, THETA)))
     ref, got = grip_cycle(jkr), grip_cycle(pb)
     kinds = [j.kind for j in ref.jumps]
-    assert kinds == ["snap-in", "top-contact", "zip"] and [j.kind for j in got.jumps] == kinds
+    assert kinds == ["snap-in", "top-contact", "pull-off"] and [j.kind for j in got.jumps] == kinds
     top, top_ref = got.jumps[1], ref.jumps[1]
     assert top.before.branch == "sub-critical" and top.after.branch == top_ref.after.branch == "two-patch"
     h0 = pb.edge.range_over_Delta(pb.m)
@@ -90,11 +90,16 @@ def test_top_closing_lands_on_the_laws_two_patch_branch_as_jkr():
     assert top.after.delta == pytest.approx(top.before.delta, abs=1e-9)          # the held approach
     assert top.after.stable_grip and top.after.feasible
     assert dissipated(pb, top) > 0 and dissipated(jkr, top_ref) > 0
-    # the walk along the law's branch to its fold under grip, and the zip from there as JKR's (the zip onto full
-    # contact is not checked for energy: JKR's own landing there raises the total potential by ~9 kernel units --
-    # a question for the walker's zip rule under grip, not for the law)
-    zip_, zip_ref = got.jumps[2], ref.jumps[2]
-    assert (zip_.before.branch, zip_.after.branch) == (zip_ref.before.branch, zip_ref.after.branch)
+    # the walk along the law's branch to its fold under grip (JKR's refined: delta/Delta -0.0700952), where the top
+    # arc lets go onto the bottom patch as JKR's, the jump dissipating as JKR's (measured: fold 8e-7 in
+    # delta/Delta, dissipation 0.3156 vs 0.3161, 1.7e-3)
+    C = 5.0
+    off, off_ref = got.jumps[2], ref.jumps[2]
+    assert (off.before.branch, off.after.branch) == (off_ref.before.branch, off_ref.after.branch) == \
+        ("two-patch", "sub-critical")
+    assert abs(off.before.delta_over_Delta - off_ref.before.delta_over_Delta) < C / lam ** 2
+    assert dissipated(pb, off) > 0 and dissipated(jkr, off_ref) > 0
+    assert abs(dissipated(pb, off) / dissipated(jkr, off_ref) - 1) < 0.01
     alone = family(pb).state(eps=top.after.eps, guess=top.after.eps_top)
     assert alone.eps_top == pytest.approx(top.after.eps_top, rel=1e-9)
     assert alone.P_star == pytest.approx(top.after.P_star, abs=1e-9)     # P* ~ 0.006 here: 1e-9 of the load scale

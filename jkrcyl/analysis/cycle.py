@@ -8,7 +8,9 @@ again, following stable, feasible branches (jkrcyl.analysis.path.walk), and jump
   (mirrored single patch at the same P), under grip it hangs free (P = 0) until it touches the other side;
 * ``snap-in``: the free pin touches a side (delta = 0 or -2 Delta) and the contact jumps open;
 * ``zip``: a super-critical fold: a further pull lowers G, the contact grows (two patches, full contact);
-* ``top-contact``: the gap at phi = pi closes (h(pi) = 0): the next stable state at the same load/approach.
+* ``top-contact``: the gap at phi = pi closes (h(pi) = 0): the next stable state at the same load/approach;
+* a fold of two patches: where the edges relax past it (jkrcyl.analysis.landing: a ``pull-off`` where one arc
+  lets go, a ``zip`` onto full contact), on a state of lower total potential (every jump dissipates).
 
 The energy dissipated per cycle is the area of the closed steady loop, int P d(delta) [J/m] (a closed loop has the
 same area in delta and in delta_work = delta + c P): the sum over the loop's jumps of the energy each dissipates

@@ -17,6 +17,7 @@ from . import branches as _br
 from . import cohesive_two_patch as _cohesive
 from . import forward as _fw
 from . import tracing as _tr
+from . import two_patch_fold as _fold2
 from .two_patch_family import family as _family
 
 
@@ -104,6 +105,8 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
         if got is None:
             got = nearest([x for x in candidates(names) if x.side == s.side])
         return got, "pull-off"
+    if event == "fold" and s.branch == "two-patch":
+        return _leave_two_patch(pb, un, s, cands, control, target, up)
     if event == "fold":          # a super-critical fold: the contact grows (zips round), else pushed (the round-zone
         grow = [x for x in cands if x.size > s.size and x.side in (s.side, "both")]    # tail's largest load: the
         if grow or not up:       # bond at the top breaks) onto the nearest stable state on its side
@@ -209,6 +212,51 @@ def _land_on_top_contact(pb, s, cands, control, target, jkr=None):
     if not pool:
         return None
     return min(pool, key=lambda x: math.hypot(x.eps - end[0], x.eps_top - end[1]))
+
+
+def dissipated(pb: Problem, un: Units, a, b) -> float:
+    """The energy a jump from state a to state b at a held value dissipates, kernel scale (units 4 pi Delta^2/
+    beta*): the work of the held quantity's conjugate, (P*_a + P*_b)/2 (delta_b - delta_a) vartheta, less the change
+    of the total potential (Equilibrium.energy, dE = P d delta along every branch).  >= 0 for a jump that can
+    happen (a straight segment at fixed P, delta or delta_work: cycle.loop_energy)."""
+    work = pb.scale * 0.5 * (a.P_star + b.P_star) * (b.delta_over_Delta - a.delta_over_Delta)
+    return work - (b.energy - a.energy) / un.energy_scale
+
+
+def _leave_two_patch(pb, un, s, cands, control, target, up):
+    """A fold of the two-patch branch: (landing, kind).  The edges relax from the fold driven past it (JKR's
+    two_patch.escape: its descent along the fold's unstable direction; a law with thin zones asks JKR's own fold
+    next to it, its limit); the landing is the candidate where that ends -- full contact ('zip'), the patch on
+    one side (the other arc let go: 'pull-off') or the two-patch state nearest to the end point -- among the
+    candidates the jump dissipates energy to (a jump at a held value lowers the total potential)."""
+    sgn = 1 if up else -1
+    if pb.models("two-patch"):
+        outcome, end = _two.escape(pb, s.eps, s.eps_top, target, control, sgn)
+    else:
+        outcome, end = _jkr_escape(pb, un, s, control, target, sgn)
+    tol = 1e-9 * max(abs(s.energy / un.energy_scale), 1.0)
+    cands = [x for x in cands if dissipated(pb, un, s, x) >= -tol]
+    pools = {"full": [x for x in cands if x.branch == "full-contact"],
+             "transfer": [x for x in cands if x.side == "top"],
+             "single": [x for x in cands if x.side == "bottom"],
+             "two-patch": [x for x in cands if x.branch == "two-patch"]}
+    pool = pools[outcome] or cands
+    if not pool:
+        return None, "zip" if outcome == "full" else "pull-off"
+    to = min(pool, key=lambda x: math.hypot(min(x.eps, math.pi) - end[0], x.eps_top - end[1]))
+    grew = to.branch == "full-contact" or (to.branch == "two-patch" and to.size > s.size)
+    return to, ("zip" if grew else "pull-off")
+
+
+def _jkr_escape(pb, un, s, control, target, sgn):
+    """JKR's escape (outcome, end arcs) from its own fold next to a law's two-patch fold s (at the law's fold where
+    JKR's branch has none there)."""
+    jkr = Problem(pb.M, pb.theta, pb.gb)
+    key = CONTROLS[control].normalised
+    f = _fold2.fold_near(jkr, s.eps, s.eps_top, key, sgn)
+    value = target if f is None else _fold2.held(jkr, f, key)
+    f = s if f is None else f
+    return _two.escape(jkr, f.eps, f.eps_top, value, control, sgn)
 
 
 def first_contact(pb: Problem, un: Units, control: str):

@@ -26,6 +26,7 @@ from . import forward as _fw
 from . import landing as _land
 from . import tracing as _tr
 from . import tracks as _tracks
+from . import two_patch_fold as _fold2
 from .two_patch_family import family as _family
 
 
@@ -79,9 +80,10 @@ def _fold_in_cell(track, j: int, k: int, sgn: int):
 
 def walk_two_patch(pb: Problem, un: Units, s, target: float, control: str):
     """On a traced two-patch branch of the law (its family: jkrcyl.analysis.two_patch_family) from state s towards
-    target: (visited points, event, end state).  JKR: states between branch points by linear interpolation of
-    the half-angles, solved afresh, a fold at a branch point; a law whose branch is sampled coarsely (the
-    cohesive one): the target state by Brent and the fold by golden section between branch points."""
+    target: (visited points, event, end state).  JKR: the target state and the fold (the root of the held
+    quantity's slope) solved on the branch between its points (jkrcyl.analysis.two_patch_fold); a law whose branch
+    is sampled coarsely (the cohesive one): the target state by Brent and the fold by golden section between
+    branch points."""
     fam = _family(pb)
     exact = not pb.models("two-patch")
     bs = fam.branches() if exact else _tr.branches(pb)
@@ -109,20 +111,41 @@ def walk_two_patch(pb: Problem, un: Units, s, target: float, control: str):
         if sgn * (y[k] - target) >= 0:
             if exact:
                 return seen, "target", as_eq(fam._refine(b, min(j, k), ctl.normalised, goal, fam.n))
-            t = (target - y[j]) / (y[k] - y[j])
+            got = _fold2.at_target(pb, b, j, k, ctl.normalised, goal)
+            if got is not None:
+                return seen, "target", as_eq(got)
+            t = (target - y[j]) / (y[k] - y[j])          # no equilibrium solved on the chord: interpolated
             return seen, "target", state(float(b.eps[j] + t * (b.eps[k] - b.eps[j])),
                                          float(b.eps_top[j] + t * (b.eps_top[k] - b.eps_top[j])))
         if not stable[k] or not b.feasible[k] or sgn * (y[k] - y[j]) <= 0:
             if exact:                    # the fold in (j - step, k): the sampled branch may hide its extremum
                 f, event = fam.fold(b, j - step if j != i else j, k, ctl.normalised, sgn, goal)
                 return seen, event, as_eq(f)
-            return seen, "fold", state(float(b.eps[j]), float(b.eps_top[j]))
+            return seen, *_jkr_fold(pb, b, j - step if j != i else j, k, j, ctl.normalised, sgn, goal, as_eq)
         j = k
         seen.append((un.physical("load", b.P_star[j]), un.physical("grip", b.delta_over_Delta[j]), "two-patch", b.a[j]))
     if not exact:
-        return seen, "fold", state(float(b.eps[j]), float(b.eps_top[j]))
+        return seen, *_jkr_fold(pb, b, j - step, j, j, ctl.normalised, sgn, goal, as_eq)
     f, event = fam.fold(b, j - step, j, ctl.normalised, sgn, goal)
     return seen, event, as_eq(f)
+
+
+def _jkr_fold(pb, b, lo: int, hi: int, j: int, key: str, sgn: int, goal: float, as_eq):
+    """(event, state) of JKR's walk stopping between points lo and hi of branch b (j: its last stable, feasible
+    point): the fold refined on the branch (jkrcyl.analysis.two_patch_fold) where it is feasible and holds beyond
+    point j, or the target between j and it where it lies past the target; point j itself where no fold is
+    bracketed there (the walk stopped at a feasibility or stability bound, not at an extremum)."""
+    got = _fold2.fold(pb, b, lo, hi, key)
+    if got is not None:
+        f, x = got
+        v = _fold2.held(pb, f, key)
+        if f.gap_min >= -1e-9 and sgn * (v - float(getattr(b, key)[j])) >= 0:
+            if sgn * (v - goal) <= 0:
+                return "fold", as_eq(f)
+            t = _fold2.at_target(pb, b, lo, hi, key, goal, span=(_fold2.coordinate(b, lo, hi, j), x))
+            if t is not None:
+                return "target", as_eq(t)
+    return "fold", as_eq(_tr._two.equilibrium_state(pb, float(b.eps[j]), float(b.eps_top[j])))
 
 
 class PullPath(NamedTuple):

@@ -226,3 +226,44 @@ def descend(pb: Problem, value: float, eps: float, eps_top: float = DESCENT_STAR
         if not turned:
             h = min(2 * h, DESCENT_STEP)
     return "two-patch", tuple(x)
+
+
+ESCAPE_STEP = 1e-3      # the escape from a fold starts this far past it along its unstable direction [rad]
+ESCAPE_NUDGE = 1e-8     # and the held value this far past the fold's (relative, at least absolute)
+
+
+def reduced_hessian(pb: Problem, eps, eps_top, delta_over_Delta, control: str, lin=None):
+    """The 2x2 Hessian of the total potential in (eps, eps_top) under the control, the held quantity fixed and
+    the approach relaxed (as model.stability.two_patch_flags reads H: grip the eps block, load the Schur complement
+    of H + c g g^T, grip-work its restriction to d delta = -c dp)."""
+    H, _, g = hessian(pb, eps, eps_top, delta_over_Delta, lin=lin)
+    if control == "grip":
+        return H[:2, :2]
+    c = pb.work_shift * pb.scale
+    Ht = H + c * np.outer(g, g)
+    if control == "load":
+        return Ht[:2, :2] - np.outer(Ht[:2, 2], Ht[2, :2]) / Ht[2, 2]
+    T = np.vstack([np.eye(2), -c * g[:2] / (1.0 + c * g[2])])
+    return T.T @ Ht @ T
+
+
+def escape(pb: Problem, eps: float, eps_top: float, value: float, control: str = "load", sgn: int = 1):
+    """Where slow relaxation leads from a fold of a two-patch branch at the arcs (eps, eps_top), the held quantity
+    (P*, delta/Delta or delta_work/Delta) at value and driven past it in the direction sgn (+1: increasing).
+
+    At a fold the reduced Hessian (:func:`reduced_hessian`) has a null direction v, the branch's tangent; past
+    the fold the potential falls along +v or -v, the side on which the drive lowers dPi/dv (the change of the
+    descent direction with the held value).  :func:`descend` starts ESCAPE_STEP along it with the held value
+    nudged past the fold.  Returns descend's (outcome, (eps, eps_top))."""
+    lin = linear(pb, eps, eps_top)
+    R = reduced_hessian(pb, eps, eps_top, _held_delta(pb, lin, control, value), control, lin=lin)
+    v = np.linalg.eigh(0.5 * (R + R.T))[1][:, 0]
+    past = value + sgn * ESCAPE_NUDGE * max(1.0, abs(value))
+
+    def push(val):                             # descend's direction at the fold's arcs
+        k = lin.q0[2:4] + _held_delta(pb, lin, control, val) * lin.q1[2:4]
+        return -(math.pi ** 2 * k * np.abs(k) - pb.M ** 2)
+    v = v if v @ (push(past) - push(value)) >= 0 else -v
+    start = np.maximum(np.array([eps, eps_top]) + ESCAPE_STEP * v, DESCENT_START)
+    return descend(pb, past, float(start[0]), float(start[1]), control)
+
