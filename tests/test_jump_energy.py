@@ -136,3 +136,16 @@ def test_jkr_two_patch_walk_ends_on_equilibria():
     assert event == "fold" and f.delta_over_Delta == pytest.approx(-0.07009519, abs=2e-8)
     for x in (e, f):
         assert x.extra["G_bot"] == pytest.approx(1.0, abs=1e-10) and x.extra["G_top"] == pytest.approx(1.0, abs=1e-10)
+
+
+@pytest.mark.parametrize("M, theta, gb", [(0.40, 1.0, 0.0), (0.55, 0.5, 0.0), (0.486, 0.7, 1 / 2.8)])
+def test_a_top_closing_while_pushing_hard_never_raises_the_potential(M, theta, gb):
+    """Load cycles to P* = +-100 whose top closes while pushing (P* 49-74; helper-17's search): the landing on
+    full contact there raised the potential less the load's work by ~1300 kernel units (dissipation -1307, -1315,
+    -1450); every jump of the walk lowers it now, and where no candidate does the walk stops and says so."""
+    pb = Problem(M, theta, gb)
+    un = Units.normalised(pb, K_edge=1.0)
+    cy = cycle.cycle(pb, un, "load", 100.0, -100.0, 100, lambda P, d: d)
+    for j in cy.jumps:
+        assert dissipated(pb, un, j.before, j.after) >= -1e-9 * max(1.0, abs(j.before.energy), abs(j.after.energy))
+    assert all(j.kind != "top-contact" for j in cy.jumps) and "after the top-contact" in cy.note
