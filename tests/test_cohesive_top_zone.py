@@ -21,6 +21,7 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, example, given, settings, strategies as st
 from numpy.polynomial import chebyshev as C
 from scipy.integrate import quad
 
@@ -209,3 +210,27 @@ def test_at_lambda_20_the_family_reaches_the_touch_without_the_top_closing():
     assert diff[1] < 1e-4
     rate = math.log(diff[0] / diff[1]) / math.log(br.states[-2].eps / br.states[-1].eps)
     assert 1.6 < rate < 2.4, rate
+
+
+# --- two routes to the law's top onset ---------------------------------------------------------------------------
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(m=st.floats(0.5, 2.0), theta=st.floats(3.0, 20.0), gb=st.floats(0.0, 0.6), lam=st.floats(20.0, 200.0))
+@example(m=1.0, theta=10.0, gb=1 / 2.8, lam=50.0)          # the grip cycle's junction (tests/test_cohesive_top_landing)
+def test_the_walkers_top_onsets_are_the_junctions(m, theta, gb, lam):
+    """The model core's onsets where the top adheres (jkrcyl.analysis.confined._onsets: the roots of h(pi) = h0 on
+    the law's branch table, refined by the model's root finder -- what landing.top_onset and the confined
+    classification use) against :func:`cohesive_top_zone.junctions` (the numerics' trace, Brent on the state at a
+    contact): every junction is an onset, eps and delta/Delta to 1e-8, P* to 1e-8.  m = M vartheta of order 1 (the
+    top closes: JKR's confined regime)."""
+    M = m / theta
+    from jkrcyl.analysis import confined
+    from jkrcyl.laws.dugdale import edge_of_strength
+    from jkrcyl.model.problem import Problem
+    import jkrcyl
+    pb = Problem(M, theta, gb, 0.0, edge_of_strength(jkrcyl.equilibria.zone_strength(lam, M, theta)))
+    law = tz.law_of(pb.m, pb.edge.s0, theta, gb)
+    onsets = confined._onsets(pb)
+    for j, _ in tz.junctions(law):
+        eps, P, d, _ = min(onsets, key=lambda o: abs(o[0] - j.eps))
+        assert abs(eps - j.eps) < 1e-8 * j.eps and abs(d - j.delta_over_Delta) < 1e-8
+        assert abs(P - j.p / pb.scale) < 1e-8 * max(1.0, abs(P))
