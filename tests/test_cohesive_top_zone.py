@@ -21,7 +21,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, example, given, settings, strategies as st
+from hypothesis import HealthCheck, example, given, settings, strategies as hst
 from numpy.polynomial import chebyshev as C
 from scipy.integrate import quad
 
@@ -214,7 +214,7 @@ def test_at_lambda_20_the_family_reaches_the_touch_without_the_top_closing():
 
 # --- two routes to the law's top onset ---------------------------------------------------------------------------
 @settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(m=st.floats(0.5, 2.0), theta=st.floats(3.0, 20.0), gb=st.floats(0.0, 0.6), lam=st.floats(20.0, 200.0))
+@given(m=hst.floats(0.5, 2.0), theta=hst.floats(3.0, 20.0), gb=hst.floats(0.0, 0.6), lam=hst.floats(20.0, 200.0))
 @example(m=1.0, theta=10.0, gb=1 / 2.8, lam=50.0)          # the grip cycle's junction (tests/test_cohesive_top_landing)
 def test_the_walkers_top_onsets_are_the_junctions(m, theta, gb, lam):
     """The model core's onsets where the top adheres (jkrcyl.analysis.confined._onsets: the roots of h(pi) = h0 on
