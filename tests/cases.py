@@ -15,3 +15,14 @@ def cohesive_contact(E, nu, E_I, nu_I, h0, lam, R=1e-2, Delta=1e-5):
     m = (h0 * lam / 4) ** 0.75
     M = m if math.isinf(probe.problem.theta) else m / probe.problem.theta
     return jkrcyl.Contact.with_lambda(R, Delta, (M / probe.M) ** 2, mat, lam)
+
+
+def two_patch_dE_ddelta(fam, s, x, h):
+    """(Richardson's dE/d(delta), the raw central quotient) of a two-patch family at its state s, from states solved
+    alone at the top arc x +- h, x +- 2h (the same node count): what a test holds against p (dE = p d(delta))."""
+    E, D = {}, {}
+    for k in (-2, -1, 1, 2):
+        t = fam.at(1, x + k * h, s.eps, fam.n)
+        E[k], D[k] = fam.potential(t), t.delta_over_Delta
+    d1, d2 = (E[1] - E[-1]) / (D[1] - D[-1]), (E[2] - E[-2]) / (D[2] - D[-2])
+    return (4 * d1 - d2) / 3, d1

@@ -27,6 +27,7 @@ from jkrcyl.model import two_patch as tp
 from jkrcyl.numerics import cohesive_two as ct
 from jkrcyl.numerics import cohesive_two_branch as cb
 from jkrcyl.numerics import cohesive_two_stability as cs
+from cases import two_patch_dE_ddelta
 
 EQ = jkrcyl.equilibria
 THETA, GB = 1.0, 1 / 2.8                      # identical bodies, nu = 0.3
@@ -121,13 +122,8 @@ def test_energy_changes_by_p_d_delta_along_the_branch(branch20, x, h):
     quotient is 4e-6, 4e-8 off (the check can fail)."""
     fam, _ = branch20
     s = fam.at(1, x, jkr_at(0.2, 2.6, x).eps, fam.n)
-    E, D = {}, {}
-    for k in (-2, -1, 1, 2):
-        t = fam.at(1, x + k * h, s.eps, fam.n)
-        E[k], D[k] = fam.potential(t), t.delta_over_Delta
     p = s.P_star * THETA
-    d1, d2 = (E[1] - E[-1]) / (D[1] - D[-1]), (E[2] - E[-2]) / (D[2] - D[-2])
-    extrapolated = (4 * d1 - d2) / 3
+    extrapolated, d1 = two_patch_dE_ddelta(fam, s, x, h)
     assert abs(extrapolated - p) < 1e-8 and abs(d1 - p) > 10 * abs(extrapolated - p)
 
 
