@@ -112,16 +112,26 @@ def _eps_root(law, c_top, eps0, d_near):
     return None
 
 
-def junction(law, lo, hi):
-    """The single-patch state where h(pi) = h0 between the contacts lo and hi (h(pi) - h0 changes sign there;
-    the zone end the first root above the Dugdale estimate, as jkrcyl.numerics.cohesive.cohesive_state)."""
+def junction(law, lo, hi, zones=None):
+    """The single-patch state where h(pi) = h0 between the contacts lo and hi (h(pi) - h0 changes sign there).
+    The zone end: the first root above the Dugdale estimate (as jkrcyl.numerics.cohesive.cohesive_state), or,
+    with zones = (c at lo, c at hi) from a traced branch, the root nearest the branch's (log-interpolated): past a
+    turn of the branch the first root is another branch's (m 1.5, vartheta 15, gb 0, lambda 20)."""
+    def state(eps):
+        if zones is None:
+            return law.state(eps)
+        t = (eps - lo) / (hi - lo)
+        d = math.exp((1 - t) * math.log(zones[0] - lo) + t * math.log(zones[1] - hi))
+        return fixed_state(law, eps, 0.0, d)
+
     def f(eps):
-        return law.state(eps).h_pi_over_Delta - law.h0
+        st = state(eps)
+        return math.nan if st is None else st.h_pi_over_Delta - law.h0
     flo, fhi = f(lo), f(hi)
-    if flo * fhi > 0:
+    if not flo * fhi <= 0:
         raise ValueError(f"lo, hi: h(pi) - h0 must change sign between the contacts {lo:g} and {hi:g}")
-    eps = _roots.brent(lambda x, _: f(x), lo, hi, (), flo, fhi, EPS_XTOL * hi)
-    return law.state(eps)
+    a, b, fa, fb = (lo, hi, flo, fhi) if lo < hi else (hi, lo, fhi, flo)
+    return state(_roots.brent(lambda x, _: f(x), a, b, (), fa, fb, EPS_XTOL * b))
 
 
 def junctions(law, points=None):
@@ -134,7 +144,7 @@ def junctions(law, points=None):
     h = np.array([_cb.state_values(law, e, c)[2] if c < math.pi else math.nan for e, c in points]) - law.h0
     out = []
     for i in _roots.sign_changes(h):
-        st = junction(law, points[i, 0], points[i + 1, 0])
+        st = junction(law, points[i, 0], points[i + 1, 0], (points[i, 1], points[i + 1, 1]))
         if st.fields.gap(math.pi * (1 - 1e-3))[0] > st.h_pi_over_Delta:
             out.append((st, 1 if h[i + 1] > h[i] else -1))
     return out
