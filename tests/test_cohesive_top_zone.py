@@ -219,19 +219,19 @@ def test_at_lambda_20_the_family_reaches_the_touch_without_the_top_closing():
 @example(m=1.0, theta=10.0, gb=1 / 2.8, lam=50.0)          # the grip cycle's junction (tests/test_cohesive_top_landing)
 @example(m=1.5, theta=15.0, gb=0.0, lam=20.0)              # past a turn: the first zone-end root is another branch's
 def test_the_walkers_top_onsets_are_the_junctions(m, theta, gb, lam):
-    """The model core's onsets where the top adheres (jkrcyl.analysis.confined._onsets: the roots of h(pi) = h0 on
+    """The model core's onsets where the top adheres (jkrcyl.analysis.landing.top_onsets: the roots of h(pi) = h0 on
     the law's branch table, refined by the model's root finder -- what landing.top_onset and the confined
     classification use) against :func:`cohesive_top_zone.junctions` (the numerics' trace, Brent on the state at a
     contact): every junction is an onset, eps and delta/Delta to 1e-8, P* to 1e-8.  m = M vartheta of order 1 (the
     top closes: JKR's confined regime)."""
     M = m / theta
-    from jkrcyl.analysis import confined
+    from jkrcyl.analysis import landing
     from jkrcyl.laws.dugdale import edge_of_strength
     from jkrcyl.model.problem import Problem
     import jkrcyl
     pb = Problem(M, theta, gb, 0.0, edge_of_strength(jkrcyl.equilibria.zone_strength(lam, M, theta)))
     law = tz.law_of(pb.m, pb.edge.s0, theta, gb)
-    onsets = confined._onsets(pb)
+    onsets = landing.top_onsets(pb)
     for j, _ in tz.junctions(law):
         eps, P, d, _ = min(onsets, key=lambda o: abs(o[0] - j.eps))
         assert abs(eps - j.eps) < 1e-8 * j.eps and abs(d - j.delta_over_Delta) < 1e-8

@@ -11,7 +11,7 @@ from scipy.optimize import minimize_scalar
 
 import jkrcyl
 from jkrcyl import equilibria as eq
-from jkrcyl.analysis import confined
+from jkrcyl.analysis import landing
 from jkrcyl.model import two_patch
 
 README_PIN = dict(R=10e-3, Delta=1e-6, w=0.05)
@@ -96,7 +96,7 @@ def test_7_gb_is_required_and_named():
 
 def test_8_after_a_sub_critical_onset_the_pin_zips_into_full_contact():
     pb = eq.problem(0.4, 1.0, 1 / 2.8)
-    (e_on, P_on, _, _), = [o for o in confined._onsets(pb) if math.tan(o[0] / 2) < eq.a_crit(1.0, 1 / 2.8)]
+    (e_on, P_on, _, _), = [o for o in landing.top_onsets(pb) if math.tan(o[0] / 2) < eq.a_crit(1.0, 1 / 2.8)]
     outcome, (e, et) = two_patch.descend(pb, P_on, e_on)
     assert outcome == "full" and e + et >= math.pi - 0.02
     bs = [b for b in eq.two_patch(0.4, 1.0, gb=1 / 2.8) if abs(b.eps[0] - e_on) < 1e-3]

@@ -184,11 +184,11 @@ class CohesiveTwoPatch:
 
     def fold(self, b, i, k, key: str, sgn: int, target: float = math.inf):
         """The fold of the field key on branch b between points i and k (a bracket of the largest sgn * key):
-        golden-section search in the held half-angle (:meth:`along`) to 1e-10 of the bracket; (state, 'fold'),
+        Brent's search (numerics.roots.minimum) in the held half-angle (:meth:`along`) to 1e-10 of the bracket; (state, 'fold'),
         or (state, 'target') where the fold lies past target (sgn * (key - target) > 0): the state at target
         between point i and the fold (Brent)."""
         state, xs = self.along(b, i, k)
-        x, f = self._golden(state, xs, key, sgn)
+        x, f = self._largest(state, xs, key, sgn)
         if sgn * (self._held_numeric(f, key) - target) <= 0:
             return self.result(f), "fold"
         x0 = float(xs[0])
@@ -196,22 +196,13 @@ class CohesiveTwoPatch:
                          xtol=1e-13 * max(x0, x))
         return self.result(state(r)), "target"
 
-    def _golden(self, state, xs, key, sgn):
-        f = lambda x: -sgn * self._held_numeric(state(x), key)
+    def _largest(self, state, xs, key, sgn):
+        """The largest sgn * key between the half-angles xs: the project's minimiser (numerics.roots.minimum,
+        Brent's parabolic search) on -sgn * key to 1e-10 of the bracket."""
         lo, hi = sorted(map(float, xs))
-        g = (math.sqrt(5) - 1) / 2
-        x1, x2 = hi - g * (hi - lo), lo + g * (hi - lo)
-        f1, f2 = f(x1), f(x2)
-        while hi - lo > 1e-10 * hi:
-            if f1 < f2:
-                hi, x2, f2 = x2, x1, f1
-                x1 = hi - g * (hi - lo)
-                f1 = f(x1)
-            else:
-                lo, x1, f1 = x1, x2, f2
-                x2 = lo + g * (hi - lo)
-                f2 = f(x2)
-        return 0.5 * (lo + hi), state(0.5 * (lo + hi))
+        x, _ = _roots.minimum(lambda x: -sgn * self._held_numeric(state(x), key), lo, 0.5 * (lo + hi), hi,
+                              1e-10 * hi)
+        return x, state(x)
 
     # --- the walker's landing ---------------------------------------------------------------------------------
     def land(self, control: str, value: float):

@@ -23,7 +23,6 @@ from ..model.problem import Problem
 from ..results import ConfinedEvents
 from . import branches as _br
 from ..units import Units
-from . import forward as _fw
 from . import landing as _land
 from . import path as _path
 from . import pull_off as _po
@@ -32,23 +31,6 @@ from .two_patch_family import family as _family
 
 _DESCENT = {"full": "snap-in-full", "transfer": "snap-in-transfer", "two-patch": "two-patch",
             "single": "two-patch"}
-
-
-def _onsets(pb: Problem):
-    """(eps, P*, delta/Delta, stable under load) of every single-patch state where the top adheres: h(pi) equal
-    to the law's range (JKR: h(pi) = 0; the cohesive law: h0, jkrcyl.analysis.landing.top_onset)."""
-    if not pb.models("two-patch"):     # a law's branch parameter is not tan(eps/2): its states at the roots of h
-        un = Units.normalised(pb, K_edge=1.0)
-        h0 = pb.edge.range_over_Delta(pb.m)
-        return tuple(sorted((s.eps, s.P_star, s.delta_over_Delta, s.stable_load) for r in _br.solver(pb).regimes()
-                            if r != _br.ZONE_ONLY for s in _fw.single_patch_states(
-                                pb, un, r, [a for a, _ in _br.roots(pb, r, "h", h0)], "load")))
-    out = []
-    for e in _tr.onset_angles(pb):
-        a = math.tan(e / 2)
-        c = _br.values_at(pb, _br.solver(pb).regime_of(a), a)
-        out.append((e, float(c.P_star[0]), float(c.delta_over_Delta[0]), bool(c.stable_load[0])))
-    return tuple(out)
 
 
 @functools.lru_cache(maxsize=32)
@@ -60,7 +42,7 @@ def confined_events(pb: Problem) -> ConfinedEvents:
     bs = _family(pb, "confined_events() is").branches() if law else _tr.branches(pb)
     grip = [a for r in _br.solver(pb).regimes() for a, kind in _br.stationary_roots(pb, "grip", r)
             if kind == "min" and bool(_br.values_at(pb, r, a).feasible[0])]
-    common = dict(onsets=_onsets(pb), grip_detachment=bool(grip),
+    common = dict(onsets=_land.top_onsets(pb), grip_detachment=bool(grip),
                   two_patch_stable_load=any(b.stable_load.any() for b in bs),
                   two_patch_stable_grip=any(b.stable_grip.any() for b in bs),
                   full_contact=any("full" in b.ends for b in bs), branches=bs, gb=pb.gb, alpha_ratio=pb.alpha_ratio)

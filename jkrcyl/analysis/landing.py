@@ -178,16 +178,29 @@ def _pull_off_landing(s, cands, control):
     return min(other, key=lambda x: x.size) if other else None
 
 
+def top_onsets(pb: Problem):
+    """(eps, P*, delta/Delta, stable under load) of every single-patch state where the top adheres: h(pi) equal
+    to the law's range (JKR: h(pi) = 0; the cohesive law: h0, top_onset)."""
+    if not pb.models("two-patch"):     # a law's branch parameter is not tan(eps/2): its states at the roots of h
+        un = Units.normalised(pb, K_edge=1.0)
+        h0 = pb.edge.range_over_Delta(pb.m)
+        return tuple(sorted((s.eps, s.P_star, s.delta_over_Delta, s.stable_load) for r in _br.solver(pb).regimes()
+                            if r != _br.ZONE_ONLY for s in _fw.single_patch_states(
+                                pb, un, r, [a for a, _ in _br.roots(pb, r, "h", h0)], "load")))
+    out = []
+    for e in _tr.onset_angles(pb):
+        a = math.tan(e / 2)
+        c = _br.values_at(pb, _br.solver(pb).regime_of(a), a)
+        out.append((e, float(c.P_star[0]), float(c.delta_over_Delta[0]), bool(c.stable_load[0])))
+    return tuple(out)
+
+
 def _jkr_onset(jkr: Problem, s, control: str) -> float:
-    """The held value (normalised: P*, delta/Delta, delta_work/Delta) of JKR's top onset (h(pi) = 0) nearest to
-    the contact of s: where JKR's descent predicts what follows a law's top onset (the law's top adheres at
-    h(pi) = h0, earlier than JKR's by ~h0 log(lambda): jkrcyl.numerics.cohesive_top_zone)."""
-    on = []
-    for e in _tr.onset_angles(jkr):
-        c = _br.values_at(jkr, solver(jkr).regime_of(math.tan(e / 2)), math.tan(e / 2))
-        on.append((abs(e - s.eps), float({"load": c.P_star, "grip": c.delta_over_Delta,
-                                          "grip-work": c.delta_work_over_Delta}[control][0])))
-    v = min(on)[1]
+    """The held value (normalised: P*, delta/Delta, delta_work/Delta) of JKR's top onset (h(pi) = 0,
+    :func:`top_onsets`) nearest to the contact of s: where JKR's descent predicts what follows a law's top onset
+    (the law's top adheres at h(pi) = h0, earlier than JKR's by ~h0 log(lambda): jkrcyl.numerics.cohesive_top_zone)."""
+    _, P, d, _ = min(top_onsets(jkr), key=lambda o: abs(o[0] - s.eps))
+    v = {"load": P, "grip": d, "grip-work": d + jkr.work_shift * jkr.scale * P}[control]
     return v if s.side != "top" else -v if control == "load" else -2.0 - v     # a walk at the top: its mirror
 
 

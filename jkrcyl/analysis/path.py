@@ -82,7 +82,7 @@ def walk_two_patch(pb: Problem, un: Units, s, target: float, control: str):
     """On a traced two-patch branch of the law (its family: jkrcyl.analysis.two_patch_family) from state s towards
     target: (visited points, event, end state).  JKR: the target state and the fold (the root of the held
     quantity's slope) solved on the branch between its points (jkrcyl.analysis.two_patch_fold); a law whose branch
-    is sampled coarsely (the cohesive one): the target state by Brent and the fold by golden section between
+    is sampled coarsely (the cohesive one): the target state by Brent and the fold by Brent's search between
     branch points."""
     fam = _family(pb)
     exact = not pb.models("two-patch")
