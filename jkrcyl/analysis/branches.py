@@ -98,12 +98,30 @@ def roots(pb: Problem, regime: str, field: str, target: float = 0.0, n=None):
     the dense table (:func:`table_values`), or n points (with the small contacts) when n is given."""
     name, scaled = CURVE_FIELD[field]
     if n is None:
-        a, values = table_values(pb, regime, field)
+        a, values = _with_folds(pb, regime, field)
     else:
         c = _curve(pb, regime, grid(pb, regime, n, small=SMALL_A_POINTS))
         a, values = c.a, np.asarray(getattr(c, name)) * (pb.scale if scaled else 1.0)
     sv = solver(pb)
     return _roots.roots_on_grid(values - target, a, lambda lo, hi, flo, fhi: sv.root(field, lo, hi, flo, fhi, target))
+
+
+@functools.lru_cache(maxsize=64)
+def _with_folds(pb: Problem, regime: str, field: str):
+    """The table's (a, values) of a held quantity with its stationary points inserted: a target between a fold's
+    value and its table neighbours' has two roots inside one table interval, no sign change on the table alone
+    (the cohesive super-critical top patch at P* -0.70, 0.02 past its fold: solve found none of its two states)."""
+    a, values = table_values(pb, regime, field)
+    slope = {c.field: c.field_slope for c in CONTROLS.values()}.get(field)
+    if slope is None:
+        return a, values
+    folds = [r for r, _ in roots(pb, regime, slope) if not np.any(a == r)]
+    if not folds:
+        return a, values
+    at = np.array(folds)
+    fv = np.array([solver(pb).value(field, r) for r in folds])
+    order = np.argsort(np.concatenate([a, at]), kind="stable")
+    return np.concatenate([a, at])[order], np.concatenate([np.asarray(values, dtype=float), fv])[order]
 
 
 def values_at(pb: Problem, regime: str, a) -> Curve:

@@ -125,7 +125,8 @@ def _short(pb, s) -> str:
 
 
 def _same(s1, s2, rel=1e-6):
-    return s1.branch == s2.branch and abs(s1.a - s2.a) <= rel * max(abs(s1.a), 1e-300) + 1e-12 and \
+    return s1.branch == s2.branch and (s1.a == s2.a or abs(s1.a - s2.a) <= rel * max(abs(s1.a), 1e-300) + 1e-12) \
+        and \
         abs(s1.P - s2.P) <= rel * max(abs(s1.P), 1e-300) + 1e-300
 
 

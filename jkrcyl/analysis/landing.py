@@ -109,9 +109,9 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
         return _leave_two_patch(pb, un, s, cands, control, target, up)
     if event == "fold":          # a super-critical fold: the contact grows (zips round), else pushed (the round-zone
         grow = [x for x in cands if x.size > s.size and x.side in (s.side, "both")]    # tail's largest load: the
-        if grow or not up:       # bond at the top breaks) onto the nearest stable state on its side
-            return (min(grow, key=lambda x: x.size), "zip") if grow else (None, "zip")
-        return nearest([x for x in cands if x.side == s.side]), "zip"
+        if grow:                 # bond at the top breaks) onto the nearest stable state on its side; a cohesive
+            return min(grow, key=lambda x: x.size), "zip"      # super-critical S met pulling: its other stable part
+        return nearest(_downhill(pb, un, s, [x for x in cands if x.side == s.side])), "zip"
     if not pb.models("two-patch"):       # the top closes: the law's traced two-patch branch, where it has one
         if not pb.models("two-patch-branches") or two_patch_refusal(pb):
             return None, "top-contact"

@@ -14,6 +14,9 @@ quantity (P, delta or delta_work) through stable, feasible states to
 """
 from __future__ import annotations
 
+import math
+
+from ..model import full_contact as _full
 from ..model.problem import Problem
 from ..model.single_patch import solver
 from ..results import PullOff
@@ -37,16 +40,14 @@ def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
     unmodelled = solver(pb).unmodelled
     if unmodelled and solver(pb).floats_onto() is None:
         return PullOff(control, None, None, None, None, unmodelled)
-    if not solver(pb).adheres:
+    if not solver(pb).adheres and not _bonded_at_touch(pb, un, control):
         return PullOff(control, None, None, None, None, solver(pb).no_adherence_reason)
     start, event, s, towards = _path.pull_path(pb, un, control)
     if event == "none":
         why = _reasons.no_first_contact_reason(pb, control)
         return PullOff(control, None, None, None, None, why + ": no path to follow")
     if event == "bonded":
-        return PullOff(control, None, None, None, start,
-                       "no stable zero-load contact (M above the largest M with one): at first touch the contact "
-                       "zips round into full contact, and a pin bonded all round does not detach")
+        return PullOff(control, None, None, None, start, _bonded_reason(pb, un))
     if event == "elsewhere":
         return PullOff(control, None, None, None, start, f"first contact lands on the {start.branch} branch")
     if event == "float":
@@ -75,6 +76,28 @@ def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
                        f"fold at P = {s.P:.6g} N/m on the {s.branch} branch: a further pull lowers G, the contact "
                        "grows round into full contact (no detachment)" + (f" -- {why}" if why else ""))
     return PullOff(control, s.P, s.contact_width, s.delta, s, "detachment: the contact shrinks away (G > w)")
+
+
+def _bonded_at_touch(pb: Problem, un: Units, control: str) -> bool:
+    """Whether first contact zips round into the bonded pin (a law whose single-patch states all push may still
+    hold the pin: the states that pull overlap the top, and at first touch it is drawn round into full contact)."""
+    return pb.models("full-contact") and _path.pull_path(pb, un, control)[1] == "bonded"
+
+
+def _bonded_reason(pb: Problem, un: Units) -> str:
+    """Why the bonded pin of first contact does not detach: JKR's bond holds at any load; a law of finite strength
+    (the cohesive one) holds it down to its bond limit, where it opens at the bottom and the contact recedes onto
+    the top of the hole (jkrcyl.model.full_contact.bond_limit; Contact.cycle follows it) -- the pin never lets go
+    of the hole."""
+    why = ("no stable zero-load contact (M above the largest M with one): at first touch the contact zips round "
+           "into full contact")
+    limit = _full.bond_limit(pb, -1.0)
+    if math.isinf(limit) or math.isnan(limit):
+        return why + ", and a pin bonded all round does not detach"
+    P = un.physical("load", limit)
+    return (why.replace("(M above the largest M with one)", "on one patch") +
+            f"; the bond holds down to P = {P:.6g} N/m (the tension at the bottom reaches the law's strength), "
+            "where it opens at the bottom and the contact recedes onto the top of the hole: the pin does not detach")
 
 
 def _detached(control, s):
