@@ -85,3 +85,30 @@ def test_the_laws_bonded_pin_cycle_closes_and_dissipates_the_loop_work():
     # 1e-5: the S's fold at P* 2.7248 is where the load of states solved near it scatters by 5e-6 (the walk's fold
     # 2.7248170 vs the stationary point's 2.7248121 at the same contact to 5e-7 rad; session 33, lead)
     assert cy.dissipated == pytest.approx(-loop, rel=1e-5)
+
+
+def test_a_law_whose_states_all_push_still_zips_round_under_grip_like_jkr():
+    """lambda 10.8, M 1, grip: no single-patch state pulls (the law's `adheres` is False), yet the path from first
+    contact reaches the super-critical fold where the contact grows round -- JKR's answer (its fold at P* 1.94057
+    from the closed form).  Was: 'two patches not modelled'.  The law's fold within 1e-3 (measured 4.8e-4:
+    lambda^2 x 0.056)."""
+    pb, un = _law(10.781)
+    r = po.pull_off(pb, un, "grip")
+    jkr_pb = Problem(1.0, 1.0, 1 / 2.8)
+    jkr = po.pull_off(jkr_pb, Units.normalised(jkr_pb), "grip")
+    assert "not modelled" not in r.reason and "grows round into full contact" in r.reason
+    P = float(re.search(r"fold at P = (\S+) N/m", r.reason).group(1))
+    P_jkr = float(re.search(r"fold at P = (\S+) N/m", jkr.reason).group(1))
+    assert P == pytest.approx(P_jkr, abs=1e-3) and P != P_jkr
+
+
+def test_a_round_zone_tail_pulled_closes_into_the_bonded_pin_at_its_bond_limit():
+    """lambda 3.875, M 0.6475, grip: the pull from first contact follows the super-critical round-zone tail until
+    its zone closes at the top, going on as the bonded pin without a jump ('round').  Reference: the closing is
+    where the bonded pin's tension at the top equals s0, P* = pi s0/vartheta - 1 (module docstring); measured
+    2.5e-7 relative off (the tail's end).  Was: ValueError from walking full contact as a single patch, and before
+    that 'two patches not modelled'."""
+    pb, un = _law(3.875, 0.6475)
+    r = po.pull_off(pb, un, "grip")
+    assert r.P is None and r.state.branch == "full-contact" and "without a jump" in r.reason
+    assert r.state.P_star == pytest.approx(math.pi * pb.edge.s0 / pb.theta - 1.0, rel=1e-6)

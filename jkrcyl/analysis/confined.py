@@ -53,6 +53,9 @@ def confined_events(pb: Problem) -> ConfinedEvents:
     if event == "bonded":
         return ConfinedEvents(pb.M, pb.theta, "bonded", (math.inf, nan), nan, nan, **common)
     begin = (float(start.a), float(start.P_star))
+    if event == "round":          # the cohesive round-zone tail closing into the bonded pin: no fold on the way
+        return ConfinedEvents(pb.M, pb.theta, "zip-full", begin, s.P_star, nan, fold_in_tension=_full.state(
+            pb, P_star=s.P_star).tension_everywhere, **common)
     if event in ("fold", "end"):
         zip_full = _po.grows_under_pull(pb, s.a, "load", towards)
         tension = _full.state(pb, P_star=s.P_star).tension_everywhere if zip_full else None

@@ -162,7 +162,8 @@ class PullPath(NamedTuple):
 def pull_path(pb: Problem, un: Units, control: str) -> PullPath:
     """The path of slow pulling from first contact: (start, event, state, towards).  start is the state first
     contact snaps into (None: no stable, feasible one); event: 'bonded' (start is full contact), 'elsewhere' (start
-    is not a bottom single patch), else the walk's event down the start's branch to -inf (fold, gap, end) and the
+    is not a bottom single patch), 'round' (the branch closes into the bonded pin without a jump: the cohesive
+    round-zone tail; state: the bonded pin), else the walk's event down the start's branch to -inf (fold, gap, end) and the
     state where it ends; 'let-go' where a branch ends on an unstable continuation under a pull (the cohesive
     contact at its touch end: the pin lets go there).  pull_off, confined_events and the confined figure all read
     this one path.  'float': a floating pin (cohesive range reaching round) went on onto the contact branch at
@@ -183,6 +184,8 @@ def pull_path(pb: Problem, un: Units, control: str) -> PullPath:
         nxt = _land.continuation(pb, un, state, control)
         if nxt is None:
             break                          # the branch just ends (JKR: the contact grows towards a_crit)
+        if nxt.branch == "full-contact" and nxt.stable and nxt.feasible:
+            return PullPath(start, "round", nxt)     # a cohesive round-zone tail closing into the bonded pin
         if not (nxt.stable and nxt.feasible):
             return PullPath(start, ("end" if state.P >= 0 else "let-go"), nxt)   # let-go: detaches at its end
         track = _tracks.track(pb, un, nxt.branch, "bottom", control)

@@ -40,7 +40,7 @@ def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
     unmodelled = solver(pb).unmodelled
     if unmodelled and solver(pb).floats_onto() is None:
         return PullOff(control, None, None, None, None, unmodelled)
-    if not solver(pb).adheres and not _bonded_at_touch(pb, un, control):
+    if not solver(pb).adheres and not _path_answers(pb, un, control):
         return PullOff(control, None, None, None, None, solver(pb).no_adherence_reason)
     start, event, s, towards = _path.pull_path(pb, un, control)
     if event == "none":
@@ -48,6 +48,9 @@ def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
         return PullOff(control, None, None, None, None, why + ": no path to follow")
     if event == "bonded":
         return PullOff(control, None, None, None, start, _bonded_reason(pb, un))
+    if event == "round":
+        return PullOff(control, None, None, None, s, f"the contact grows round into full contact without a jump "
+                       f"(its cohesive zone closes at the top at P = {s.P:.6g} N/m): the bonded pin, no detachment")
     if event == "elsewhere":
         return PullOff(control, None, None, None, start, f"first contact lands on the {start.branch} branch")
     if event == "float":
@@ -78,10 +81,15 @@ def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
     return PullOff(control, s.P, s.contact_width, s.delta, s, "detachment: the contact shrinks away (G > w)")
 
 
-def _bonded_at_touch(pb: Problem, un: Units, control: str) -> bool:
-    """Whether first contact zips round into the bonded pin (a law whose single-patch states all push may still
-    hold the pin: the states that pull overlap the top, and at first touch it is drawn round into full contact)."""
-    return pb.models("full-contact") and _path.pull_path(pb, un, control)[1] == "bonded"
+def _path_answers(pb: Problem, un: Units, control: str) -> bool:
+    """Whether the path from first contact says what happens where no single-patch state pulls: a law whose
+    single-patch states all push may still hold the pin -- drawn round into full contact at first touch (those
+    that pull overlap the top), onto the other side's patch (a range longer than half the clearance) or floating
+    onto a round zone -- or zipping round into full contact at a fold (JKR's answer too: under grip, lambda 10.8,
+    M 1, the super-critical fold at P = 1.940 N/m, JKR's 1.941)."""
+    _, event, s, towards = _path.pull_path(pb, un, control)
+    return event in ("bonded", "elsewhere", "float", "round") or (
+        event == "fold" and s.branch != "contactless" and grows_under_pull(pb, s.a, control, towards))
 
 
 def _bonded_reason(pb: Problem, un: Units) -> str:

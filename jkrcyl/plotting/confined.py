@@ -54,7 +54,7 @@ def _load_path(pb):
     walk of jkrcyl.analysis.path from first contact (as confined_events), the jump's landing state or None."""
     un = Units.normalised(pb, K_edge=1.0)
     start, event, end, _ = _path.pull_path(pb, un, "load")
-    if event in ("none", "bonded", "elsewhere"):
+    if event in ("none", "bonded", "elsewhere", "round"):
         return start, None, None, None
     to = None
     if event in ("fold", "end"):
