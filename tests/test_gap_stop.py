@@ -64,3 +64,29 @@ def test_walker_finds_the_fold_before_the_gap():
     got = c.pull_off("load")
     assert got.reason.startswith("detachment"), got.reason
     assert abs(c.units.normalise("load", got.P) * pb.scale / ref.p - 1) < 1e-8
+
+
+def test_cohesive_gap_stop_where_the_top_comes_within_range():
+    """The law's top adheres where h(pi) falls below its range h0 (not 0): a grip pull at vartheta 10, gb 0,
+    lambda 3.875, M 0.0737 stops next to table points whose only failed gap condition is h(pi) < h0 at the top
+    (h0 0.687, h(pi) 0.624 at the neighbour) -- 'confined' naming the range, not 'a second contact beside it, not
+    modelled' (as it said before, judging the top by JKR's h(pi) > 0).  Independent evidence: the neighbour solved
+    alone has its gap outside the zone smallest at phi = pi and below h0 there."""
+    from jkrcyl.analysis import branches, path, reasons
+    from jkrcyl.laws.dugdale import edge_of_strength
+    from jkrcyl.model.problem import Problem
+    from jkrcyl.numerics import cohesive_scales
+    from jkrcyl.units import Units
+    m_pb = Problem(0.0737, 10.0, 0.0)
+    pb = Problem(0.0737, 10.0, 0.0, 0.0, edge_of_strength(cohesive_scales.zone_strength(3.875, m_pb.m)))
+    start, event, s, _ = path.pull_path(pb, Units.normalised(pb), "grip")
+    assert event == "gap"
+    assert reasons.gap_stop(pb, s).startswith("confined: the top of the hole comes within the law's range first")
+    t = branches.table(pb, "sub-critical")
+    k = int(np.argmin(np.abs(np.asarray(t.a) - s.a))) - 1             # the infeasible neighbour (grip: smaller)
+    assert not t.feasible[k]
+    law = solver(pb).law
+    st = law.state(float(t.eps[k]))
+    grid = np.linspace(st.c * 1.001, math.pi, 4000)
+    gap = st.fields.gap(grid)
+    assert int(np.argmin(gap)) == grid.size - 1 and 0 < gap[-1] < law.h0

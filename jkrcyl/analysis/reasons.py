@@ -46,15 +46,18 @@ def gap_stop(pb: Problem, s) -> str:
     """Why the walk stopped at the feasible state s next to an infeasible table point ('gap'): the reason
     pull_off prints.  JKR's only gap condition is h(pi) >= 0 (derive/gap.py: the gap's minimum is min(0, h(pi))),
     so there the top closes; a law with more (the cohesive one: h >= 0 everywhere outside the contact, h <= h0 on
-    its zone) can fail beside the contact with the top still open (h(pi) > 0 at the infeasible neighbour)."""
+    its zone) can fail beside the contact with the top still open (h(pi) > h0 at the infeasible neighbour; below h0
+    the top adheres: jkrcyl.analysis.landing.top_onset)."""
     where = f"P = {s.P:.6g} N/m, delta = {s.delta:.4g} m"
     t = _br.table(pb, s.branch.replace("-top", ""))
     a, feasible, h = np.asarray(t.a), np.asarray(t.feasible), np.asarray(t.h_pi_over_Delta)
     i = int(np.argmin(np.abs(a - s.a)))
-    beside = [k for k in (i - 1, i + 1) if 0 <= k < a.size and not feasible[k] and h[k] > 0]
+    h0 = pb.edge.range_over_Delta(pb.m)      # the top adheres where h(pi) falls below the range (JKR: 0)
+    beside = [k for k in (i - 1, i + 1) if 0 <= k < a.size and not feasible[k] and h[k] > h0 * (1 + 1e-9)]
     if not beside:
-        return (f"confined: the gap at phi = pi closes first ({where}); the top contact forms before detachment "
-                "(see Contact.confined_events)")
+        top = "the gap at phi = pi closes first" if h0 == 0 else \
+            f"the top of the hole comes within the law's range first (h(pi) = h0 = {h0:.4g} Delta: it adheres)"
+        return f"confined: {top} ({where}); the top contact forms before detachment (see Contact.confined_events)"
     return (f"no detachment on one patch: beyond this state ({where}) the gap outside the contact closes beside it "
             f"with the top still open (h(pi) = {h[beside[0]]:.4g} Delta): the {pb.edge.name} law's pull there "
             "draws the surfaces into a second contact, which is not modelled")
