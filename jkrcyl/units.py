@@ -131,7 +131,9 @@ class Units:
 
     @classmethod
     def normalised(cls, problem, K_edge: float = 0.0) -> "Units":
-        """Units in which a 'physical' answer is the normalised one (P = P*, delta = delta/Delta)."""
+        """Units in which a 'physical' answer is the normalised one (P = P*, delta = delta/Delta); energies stay in
+        the kernel unit, vartheta P* delta/Delta (a jump's dissipation: jkrcyl.analysis.landing.dissipated; a
+        cycle's loop_energy in these units is vartheta times its loop work -- use a Contact's units for cycles)."""
         return cls(kernel=problem.scale, K_edge=K_edge)
 
     def per_normalised(self, control: str) -> float:

@@ -12,6 +12,7 @@ import pytest
 
 from jkrcyl.analysis import cycle
 from jkrcyl.analysis import forward as fw
+from jkrcyl.analysis import landing
 from jkrcyl.analysis import pull_off as po
 from jkrcyl.model import full_contact as full
 from jkrcyl.laws.dugdale import edge_of_strength
@@ -112,3 +113,34 @@ def test_a_round_zone_tail_pulled_closes_into_the_bonded_pin_at_its_bond_limit()
     r = po.pull_off(pb, un, "grip")
     assert r.P is None and r.state.branch == "full-contact" and "without a jump" in r.reason
     assert r.state.P_star == pytest.approx(math.pi * pb.edge.s0 / pb.theta - 1.0, rel=1e-6)
+
+
+def _branch_work(pb, x, y):
+    """int P* d(delta/Delta) along the single-patch branch of states x -> y (same branch, a trapezoid over 1001
+    states of the branch's own parametrisation: the mirror image on the top, P* d(delta) unchanged)."""
+    import numpy as np
+    from jkrcyl.analysis import branches
+    assert x.branch == y.branch
+    a = np.linspace(x.a, y.a, 1001)
+    cv = branches.values_at(pb, x.branch.replace("-top", ""), np.sort(a))
+    w = np.trapezoid(np.asarray(cv.P_star), np.asarray(cv.delta_over_Delta))
+    return w if y.a > x.a else -w
+
+
+def test_a_zip_round_past_the_bond_limit_lands_on_the_other_sides_contact():
+    """vartheta 10, gb 0, lambda 7.924, M 0.246: the bonded pin never holds near the super-critical fold (bond
+    limit P* -0.13412, fold -0.13488), so the zip from the bottom fold lands on the top's contact reaching round
+    (open at the bottom) -- before: 'no stable state to jump to after the zip'.  Reference: the loop work from the
+    jumps' P d(delta) plus the branch pieces between them, each a trapezoid over 1001 states (no energies), equals
+    the cycle's dissipation (the jumps' energy differences, in normalised units the kernel unit: vartheta times
+    the work; it summed P* d(delta/Delta) less kernel energies before, 1.35 for 18.1)."""
+    pb, un = _law(7.924, 0.246, 10.0, 0.0)
+    cy = cycle.cycle(pb, un, "load", 2.0, -3.0, 200, lambda P, d: d)
+    assert cy.note == "" and cy.closed_from_leg is not None
+    loop = [j for j in cy.jumps if j.leg in (cy.closed_from_leg, cy.closed_from_leg + 1)]
+    assert ("super-critical", "super-critical-top") in [(j.before.branch, j.after.branch) for j in loop]
+    for j in loop:
+        assert landing.dissipated(pb, un, j.before, j.after) > 0
+    work = sum(j.before.P_star * (j.after.delta_over_Delta - j.before.delta_over_Delta) for j in loop)
+    work += sum(_branch_work(pb, j.after, k.before) for j, k in zip(loop, loop[1:] + loop[:1]))
+    assert cy.dissipated / pb.scale == pytest.approx(work, rel=1e-5)

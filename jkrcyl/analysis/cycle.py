@@ -188,6 +188,8 @@ def loop_energy(run, first_leg: int) -> float:
     straight segment (fixed P, delta or delta_work) that takes the work (P_A + P_B)(delta_B - delta_A)/2.  Round
     the closed loop the branches give -sum over the jumps of (E_B - E_A), so the loop work is the energy the jumps
     dissipate: sum of [(P_A + P_B)(delta_B - delta_A)/2 - (E_B - E_A)], each >= 0.  No quadrature: exact to the
-    rounding of the states (tests compare a trapezoid over the dense path)."""
-    return float(sum(0.5 * (j.before.P + j.after.P) * (j.after.delta - j.before.delta)
-                     - (j.after.energy - j.before.energy) for j in run.jumps if j.leg in (first_leg, first_leg + 1)))
+    rounding of the states (tests compare a trapezoid over the dense path).  Each jump's by
+    jkrcyl.analysis.landing.dissipated (kernel units, times the energy unit: J/m for a Contact's units; in
+    Units.normalised the kernel unit, vartheta P* delta/Delta)."""
+    return float(sum(_land.dissipated(run.pb, run.un, j.before, j.after) for j in run.jumps
+                     if j.leg in (first_leg, first_leg + 1))) * run.un.energy_scale
