@@ -110,12 +110,12 @@ def trace(law, eps_jump, inside, top_gap):
     return np.vstack([rounded, got.points]), "zone", got.reason, n
 
 
-def _gap_at_rest(law, eps, x):
+def _gap_at_rest(law, eps, x, shift=None):
     """k1 g0 - k0 g1 at the contact eps and the zone end c = pi - x: the zone-end residual h(c) - h0 with k = 0
     (cohesive_follow.residual, the approach eliminated by k) times dk/d(delta).  Smooth where that one has a pole:
     dk/d(delta) vanishes on a line of fixed eps (the approach leaves k unchanged at that contact), crossed by the
     branch where k0 vanishes too (the state's approach there fixed by g alone)."""
-    fc = law.fixed(eps)
+    fc = law.fixed(eps) if shift is None else law.fixed_as(eps, shift)      # (of the system: a stencil's centre's)
     v = _ck.affine(fc.fx, fc.ek, fc.ep, fc.eb, math.pi - x, law.s0, law.h0)
     return v[1] * v[6] - v[0] * v[7]
 
@@ -229,7 +229,8 @@ def _gradient(law, e, lx):
     the tangent there and the next step's side checks read it)."""
     memo = law.__dict__.setdefault("_top_gradients", {})
     if (e, lx) not in memo:
-        f = lambda de, dl: _gap_at_rest(law, e * math.exp(de), math.exp(lx + dl))
+        shift = law.fixed(e).shift
+        f = lambda de, dl: _gap_at_rest(law, e * math.exp(de), math.exp(lx + dl), shift)
         memo[(e, lx)] = np.array([f(SIDE_STEP, 0.0) - f(-SIDE_STEP, 0.0),
                                   f(0.0, SIDE_STEP) - f(0.0, -SIDE_STEP)]) / (2 * SIDE_STEP)
     return memo[(e, lx)]
