@@ -28,6 +28,7 @@ import numpy as np
 from . import cohesive as _co
 from . import roots as _roots
 from . import cohesive_kernels as _ck
+from . import cohesive_contact as _cc
 from . import cohesive_follow as _fo
 from . import cohesive_bordered as _bo
 from . import cohesive_round as _round
@@ -38,15 +39,13 @@ EPS_MARGIN = 1e-3       # below the receding limit (the pair's pole)
 P_CAP = 200.0           # the branch is traced up to p = P_CAP m^(4/3) (200 times the adhesion load scale, ~100
                         # times the pull-off; beyond, solve warns: jkrcyl.BranchLimitWarning)
 FD_REL = 2e-4           # finite-difference steps: in eps at a fixed zone length, relative to eps; in c, to c - eps
-ZONE_FD = 5e-4          # ... in a shifted system (next to eps_s, Law.fixed), extrapolated from h and 2h
+ZONE_FD = 5e-4          # ... in a shifted system (next to eps_s), extrapolated from h and 2h
 GAP_POINTS = 96         # Gauss-Legendre points of int h over the zone (the interface energy)
 ALL_POINTS = 160        # eps samples of a branch whose zone reaches round at the touch end
 ROUND_SCAN = 10         # contacts scanned for a zone that stops reaching round (top_opens)
 ROUND_JUMP = 1e-2       # a zone end this far below pi just past the opening is a jump (a continuous one -> pi)
 TOP_PROBE = 1e-2        # top_opens: the gap this fraction of the exterior below pi against h(pi) (a bridge: larger)
 NARROW = 1e-6           # top_opens: a round zone within this of h0 at the jump has ended there (a narrow S)
-SHIFT_K = 20.0          # Law.fixed: a contact with |dk/d(delta)| >= SHIFT_K is next to the singular contact eps_s
-SHIFT = 2 / SHIFT_K     # ... and its system is shifted by this (|1 - SHIFT k(U1)| >= 1 there: regular)
 _XG, _WG = np.polynomial.legendre.leggauss(GAP_POINTS)
 
 _PointData = namedtuple("_PointData", "eps c delta p B dp_dt ddn_dt D_p D_dn h_pi zones fields state")
@@ -80,7 +79,8 @@ class Law:
         self.eps_hi = min(math.pi - 0.05, 2 * math.atan(_one.receding_contact(theta, gb, ar)) * (1 - EPS_MARGIN))
         self.p_cap = P_CAP * self.m ** (4 / 3)
         self.fixed = functools.lru_cache(maxsize=256)(self._fixed)
-        self._shifted = functools.lru_cache(maxsize=64)(self._fixed_shifted)
+        self._shifted = functools.lru_cache(maxsize=64)(
+            lambda eps, shift: _co.FixedContact(eps, self.kernel, *self.contact(eps), shift=shift))
         self.residuals = {}          # the zone-end residual by (log eps, log(c - eps)): cohesive_follow.residual
         self.loads = {}              # p at k = 0 by (log eps, log(c - eps)): the trace's domain checks
 
@@ -101,30 +101,18 @@ class Law:
                                   layered=layered)
 
     def _fixed(self, eps):
-        """The fixed contact eps, its system shifted (jkrcyl.numerics.cohesive_contact.FixedContact: the same
-        equilibria) where |dk/d(delta)| >= SHIFT_K: next to the contact eps_s where the collocation matrix is
-        singular (its k(U1) has a pole there; O(1) elsewhere: 0.1 .. 3 over 1e-3 .. 3.09 for four kernels).  There
-        the affine route's states carried 5e-16/(eps - eps_s) relative error and a central difference at a held
-        approach across eps_s was wrong: dp/d(delta) along a branch off by 1.5e-4 at 1e-3 from eps_s, O(1) at
-        1e-5."""
-        fc = _co.FixedContact(eps, self.kernel, *self.contact(eps))
-        return self._shifted(eps, SHIFT) if abs(fc.fx[6]) >= SHIFT_K else fc
-
-    def _fixed_shifted(self, eps, shift):
-        return _co.FixedContact(eps, self.kernel, *self.contact(eps), shift=shift)
+        """The fixed contact eps (its system shifted next to eps_s: jkrcyl.numerics.cohesive_contact.regular)."""
+        return _cc.regular(eps, self.kernel, *self.contact(eps), shifted=self._shifted)
 
     def fixed_as(self, eps, shift):
-        """The fixed contact eps with the given shift (that of a difference stencil's centre: the coefficients at a
-        held approach of one system)."""
+        """The fixed contact eps with the shift of a difference stencil's centre (one system's coefficients)."""
         fc = self.fixed(eps)
-        return fc if fc.shift == shift else (self._shifted(eps, shift) if shift else
-                                              _co.FixedContact(eps, self.kernel, *self.contact(eps)))
+        return fc if fc.shift == shift else self._shifted(eps, shift)
 
 
 def affine(law, eps, c, shift=None):
     """[k, p, B, g] at the contact eps, zone end c (c >= pi: zones 'all'), each (value at delta = 0, d/d delta);
-    g = h(c) - h0 (None for 'all'): jkrcyl.numerics.cohesive_kernels.affine.  shift: of the system (Law.fixed_as;
-    by default Law.fixed's): k and the coefficients at a held approach depend on it, the equilibria do not."""
+    g = h(c) - h0 (None for 'all'): jkrcyl.numerics.cohesive_kernels.affine; shift: the system's (Law.fixed_as)."""
     fc = law.fixed(eps) if shift is None else law.fixed_as(eps, shift)
     v = _ck.affine(fc.fx, fc.ek, fc.ep, fc.eb, float(c), law.s0, law.h0)
     return [(v[0], v[1]), (v[2], v[3]), (v[4], v[5]), (v[6], v[7]) if c < math.pi else None]
@@ -305,9 +293,8 @@ def _slopes(law, eps, c, direction):
     if c < math.pi:
         # d/d eps at fixed c = d/d eps at fixed zone length d = c - eps (a step on the scale of eps: the states
         # are smooth there, however thin the zone) less d/dc (a step on the scale of d, on the same LU): central
-        # differences (dp/d(delta) along the branch to ~5e-7, the step's square); next to eps_s (the shifted
-        # system) extrapolated from h and 2h (Richardson: ~3e-9; everywhere it would cost 13-40 % more LUs per
-        # cold pull-off)
+        # differences (dp/d(delta) to ~5e-7), extrapolated from h and 2h next to eps_s (~3e-9; everywhere: +13-40 %
+        # LUs per cold pull-off)
         fd = ZONE_FD if shift else FD_REL
         he, hc = fd * min(eps, math.pi - c), fd * min(c - eps, math.pi - c)
         along_e = lambda h: [affine(law, eps + s * h, c + s * h, shift) for s in (1, -1)]

@@ -58,7 +58,7 @@ class FixedContact:
     affine coefficients in the approach belong to the shifted system -- k' = k/(1 - shift k(U1)) at a held
     approach (Sherman-Morrison).  A is singular at one contact eps_s of a kernel (where k(U1) has a pole: see
     jkrcyl.numerics.cohesive_bordered); the shifted system is not, so the states next to eps_s are regular
-    (jkrcyl.numerics.cohesive_branch.Law.fixed shifts where |k(U1)| >= SHIFT_K).
+    (:func:`regular` shifts where |k(U1)| >= SHIFT_K).
     """
 
     def __init__(self, eps, kernel, n, layered=False, shift=0.0):
@@ -162,6 +162,23 @@ class FixedContact:
         d = _cr.zone_end(self.fx, self.eps, float(s0), float(h0), float(d_start), SCAN_FACTOR, SCAN_STEP,
                          float(c_top))
         return None if d < 0 else d
+
+
+SHIFT_K = 20.0          # regular: a contact with |dk/d(delta)| >= SHIFT_K is next to the singular contact eps_s
+SHIFT = 2 / SHIFT_K     # ... and its system is shifted by this (|1 - SHIFT k(U1)| >= 1 there: regular)
+
+
+def regular(eps, kernel, n, layered=False, shifted=None):
+    """The fixed contact eps, its system shifted (FixedContact: the same equilibria) where |dk/d(delta)| >= SHIFT_K:
+    next to the contact eps_s where the collocation matrix is singular (k(U1) has a pole there; it is 0.1 .. 3
+    over eps = 1e-3 .. 3.09 for four kernels away from it).  There the affine route's states carried
+    5e-16/(eps - eps_s) relative error and a central difference at a held approach across eps_s was wrong:
+    dp/d(delta) along a branch off by 1.5e-4 at 1e-3 from eps_s, O(1) at 1e-5.  shifted(eps, shift): a cache of
+    shifted contacts."""
+    fc = FixedContact(eps, kernel, n, layered)
+    if abs(fc.fx[6]) < SHIFT_K:
+        return fc
+    return shifted(eps, SHIFT) if shifted is not None else FixedContact(eps, kernel, n, layered, shift=SHIFT)
 
 
 def nodes_for(eps, zone, ar=0.0):
