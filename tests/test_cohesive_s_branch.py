@@ -338,11 +338,16 @@ def _zone_end_alone(eps, law, c_near, span):
 # finds four zone-end roots (pi - c 0.022, 0.115, 1.20, 1.39), each the traced state to 1e-8 (c, p), dE = p
 # d(delta) along each to 5e-12 (fourth-order differences, converging as h^4): the test assumed two
 @example(E=math.inf, nu=0.0, E_I=math.inf, nu_I=0.0, h0=1.0546875, lam=1.7578125)
+# found by a fuzz run (two rigid bodies): a narrow S (both arms within 3e-4 of the top at its mid contact 1.3993)
+# beside a pair of zone-end roots born apart at a fold near eps 1.385 (pi - c 1.05 and 1.58 there, 0.95 and 1.68
+# at 1.41): another family, not reached from the touch within the sub-critical range (the traced zone part keeps
+# pi - c <= 0.15): the count is of the roots within the zone part's span
+@example(E=math.inf, nu=0.0, E_I=math.inf, nu_I=0.0, h0=1.625, lam=1.5625)
 def test_s_branches_over_material_pairs(E, nu, E_I, nu_I, h0, lam):
     """Random pairs, rigid bodies included, where the branch is S-shaped (narrow or not): traced whole; between
     the turn (the least contact of the zone part, a fold in eps) and the round zone's opening, the branch passes
-    one contact as often as it has zone-end roots there (a sign scan at that fixed contact, :func:`_zone_end_roots`:
-    two on an S, four on a double S), each the state solved alone (:func:`_zone_end_alone`: the zone-end root
+    one contact as often as it has zone-end roots there within the zone part's span of pi - c (a sign scan at that
+    fixed contact, :func:`_zone_end_roots`: two on an S, four on a double S), each the state solved alone (:func:`_zone_end_alone`: the zone-end root
     nearest the traced one) to 1e-8; no pull from first contact.  Where the round zone stays within the range up to the
     receding limit the branch is that round zone alone (the zone-end pair joins it past a_crit)."""
     c = cohesive_contact(E, nu, E_I, nu_I, h0, lam)
@@ -362,8 +367,9 @@ def test_s_branches_over_material_pairs(E, nu, E_I, nu_I, h0, lam):
         eps = 0.5 * (s.eps[zone[0]] + s.eps[zone[-1]])
         count = 1
     else:                        # as many crossings as zone-end roots at that fixed contact (2 on an S, 4 on a
-        eps = 0.5 * (s.eps[turn] + min(s.eps[zone[0]], s.eps[zone].max()))      # double S), found alone
-        count = len(_zone_end_roots(law, eps))
+        eps = 0.5 * (s.eps[turn] + min(s.eps[zone[0]], s.eps[zone].max()))      # double S), found alone, within
+        x = math.pi - s.c[zone]                                                 # the zone part's span of pi - c
+        count = sum(x.min() <= v <= x.max() for v in _zone_end_roots(law, eps))
     cells = [i for i in range(a.size - 1) if (s.eps[i] - eps) * (s.eps[i + 1] - eps) <= 0 and s.c[i + 1] < math.pi]
     found = [sv.point(roots.root(lambda x: sv._where(x)[0] - eps, a[i], a[i + 1], xtol=1e-14)) for i in cells]
     assert len(found) == count, (count, [pt.c for pt in found])  # the root near the top (and the first root...)
