@@ -18,6 +18,8 @@ from cases import cohesive_contact
 from jkrcyl.numerics import cohesive as co
 from jkrcyl.numerics import cohesive_bordered as bo
 from jkrcyl.numerics import cohesive_branch as cb
+from jkrcyl.numerics import cohesive_contact as cc
+from jkrcyl.numerics import cohesive_kernels as ck
 from jkrcyl.numerics import roots
 
 CRADLE = (math.inf, 0.0, 1e9, 0.3, 1.0, 3.0)
@@ -34,9 +36,14 @@ def _pole(law, n):
     return roots.root(lambda e: 1 / co.FixedContact(e, law.kernel, n, False).fx[6], 2.86, 2.87, xtol=1e-15)
 
 
+def _plain(law, eps):
+    return co.FixedContact(eps, law.kernel, *law.contact(eps))
+
+
 def _affine(law, eps):
-    """(p, delta/Delta) of the round-zone state by the affine route (FixedContact.solve: delta from k = 0)."""
-    fc = law.fixed(eps)
+    """(p, delta/Delta) of the round-zone state by the affine route (FixedContact.solve: delta from k = 0) of the
+    plain collocation system (Law.fixed shifts it next to eps_s)."""
+    fc = _plain(law, eps)
     zones = co.zones_of(math.pi)
     dn, u = fc.solve(zones, law.s0)
     return fc.load_width(u, zones, law.s0)[0], dn
@@ -77,7 +84,7 @@ def test_stability_derivatives_are_finite_through_it(law):
     (1/k(U1), p(U1)/k(U1)) at 1e-3 from eps_s to 1e-9, and vanish / stay finite at eps_s (|D_dn| < 1e-9)."""
     es = _pole(law, law.contact(2.868)[0])
     for e in (es - 1e-3, es + 1e-3):
-        fc = law.fixed(e)
+        fc = _plain(law, e)
         b = bo.of(law, e)
         assert abs(b.inv_k_delta - 1 / fc.fx[6]) < 1e-9 * abs(1 / fc.fx[6])
         assert abs(b.p_per_k - (fc.ep @ fc.fx[4]) / fc.fx[6]) < 1e-9 * abs(b.p_per_k)
@@ -101,3 +108,99 @@ def test_the_grip_pull_off_reads_the_fold_of_the_round_zone():
     p_fold = np.polyval(np.polyfit(xs, [_affine(law, e_min + x)[0] for x in xs], 5), 0.0)
     p_walk = po.state.P / c.load_scale * pb.scale
     assert abs(p_walk / p_fold - 1) < 1e-6, (p_walk, p_fold)
+
+
+# --- a zone end crossing eps_s: the super-critical branch at lambda = 10 --------------------------------------
+SUPER = (math.inf, 0.0, 1e9, 0.3, 1.0, 10.0)
+# its two arms through eps_s (pi - c there ~0.21 going up in eps, ~0.024 coming back: read off the traced branch)
+ARMS = (math.pi - 0.21, math.pi - 0.024)
+DISTANCES = (1e-3, -1e-3, 1e-5, 1e-7, -1e-7, 1e-9, -1e-9)
+
+
+def _alone(law, eps, c_near):
+    """(c, p, delta/Delta) of the zone-end state nearest c_near at the contact eps solved alone by the bordered
+    system [[A, -cos], [k, 0]] (regular at eps_s; jkrcyl.numerics.cohesive_bordered.Bordered, its own fixed
+    contact, the zone traction as a right-hand side) with the zone end by Brent on h(c) - h0 (41-point scan)."""
+    fc = co.FixedContact(eps, law.kernel, *law.contact(eps))
+    b = bo.Bordered(fc)
+
+    def solved(c):
+        zones = co.zones_of(c)
+        x = b._solve(b.clearance + law.s0 * ck.zone_rhs(fc.fx, zones), 0.0)
+        return x[:-1], float(x[-1]), zones
+
+    def g(c):
+        u, delta, zones = solved(c)
+        return fc.gap(c, delta, u, zones, law.s0)[0] - law.h0
+    grid = np.linspace(0.97 * c_near, min(1.03 * c_near, math.pi - 1e-9), 41)
+    v = [g(x) for x in grid]
+    lo, hi = min([(grid[i], grid[i + 1]) for i in range(40) if v[i] * v[i + 1] <= 0],
+                 key=lambda br: abs(br[0] + br[1] - 2 * c_near))
+    c = roots.root(g, lo, hi, xtol=1e-15)
+    u, delta, zones = solved(c)
+    return c, fc.load_width(u, zones, law.s0)[0], delta
+
+
+def _richardson(law, eps, c, h=1e-4):
+    """dp/d(delta) along the branch at the contact eps from the states solved alone at eps +- h, +- 2h
+    (Richardson of two central quotients: the quotients differ by ~1e-6, the extrapolated one converged to
+    ~1e-9 between h = 2e-4 and 2.5e-5)."""
+    s = {k: _alone(law, eps + k * h, c) for k in (-2, -1, 1, 2)}
+    q1 = (s[1][1] - s[-1][1]) / (s[1][2] - s[-1][2])
+    q2 = (s[2][1] - s[-2][1]) / (s[2][2] - s[-2][2])
+    return (4 * q1 - q2) / 3
+
+
+@pytest.fixture(scope="module")
+def super_law():
+    pb = cohesive_contact(*SUPER).problem
+    return cb.Law(pb.m, pb.edge.s0, pb.theta, pb.gb, pb.alpha_ratio)
+
+
+def test_a_zone_end_branch_is_regular_through_eps_s(super_law):
+    """The super-critical branch at lambda 10 (rigid cradle, elastic pin) crosses eps_s twice with its zone end
+    short of the top.  At 1e-3 .. 1e-9 from eps_s on each arm the branch's state (its zone end at the fixed
+    contact, jkrcyl.numerics.cohesive_branch.Law.fixed: the shifted system there) is the bordered one solved alone
+    (c and p to 1e-10; measured <= 7e-12), and its dp/d(delta) (cohesive_branch.point: dp/dt over d(delta)/dt)
+    is the Richardson quotient of states solved alone to 1e-8 (measured <= 3e-9; before, through the
+    unshifted system: 1.5e-4 at 1e-3, O(1) at 1e-5, 700 at 1e-9).  The unshifted fixed contact's zone end
+    misses the bordered one by more than 1e-9 at 1e-9 from eps_s (measured 1e-7 .. 5e-7): the check can fail."""
+    law = super_law
+    es = _pole(law, law.contact(2.868)[0])
+    for arm in ARMS:
+        for dist in DISTANCES:
+            eps = es + dist
+            c, p, _ = _alone(law, eps, arm)
+            fc = law.fixed(eps)
+            assert fc.shift != 0.0
+            c_branch = eps + fc.zone_end_near(law.s0, law.h0, c - eps)
+            pt = cb.point(law, eps, c_branch, (1.0, 0.0))
+            assert abs(c_branch - c) < 1e-10 and abs(pt.p - p) < 1e-10 * max(1.0, abs(p)), (arm, dist)
+            ref = _richardson(law, eps, c)
+            assert abs(pt.dp_dt / pt.ddn_dt / ref - 1) < 1e-8, (arm, dist, pt.dp_dt / pt.ddn_dt, ref)
+        plain = _plain(law, es + 1e-9)
+        c, _, _ = _alone(law, es + 1e-9, arm)
+        assert abs(es + 1e-9 + plain.zone_end_near(law.s0, law.h0, c - es - 1e-9) - c) > 1e-9
+
+
+def test_the_shifted_system_has_the_same_equilibria(super_law):
+    """Away from eps_s (2e-2: both systems regular) the shifted fixed contact's zone end, approach and load equal
+    the plain one's to 1e-12, while its approach coefficient k(U1) is the Sherman-Morrison one, k/(1 - shift k)
+    (1e-12): the same states, another affine representation."""
+    law = super_law
+    es = _pole(law, law.contact(2.868)[0])
+    for eps in (es - 2e-2, es + 2e-2):
+        n, layered = law.contact(eps)
+        plain = co.FixedContact(eps, law.kernel, n, layered)
+        shifted = co.FixedContact(eps, law.kernel, n, layered, shift=cc.SHIFT)
+        for arm in ARMS:
+            d0 = plain.zone_end_near(law.s0, law.h0, arm - eps)
+            d1 = shifted.zone_end_near(law.s0, law.h0, d0)
+            assert abs(d1 - d0) < 1e-12
+            zones = co.zones_of(eps + d0)
+            (a0, u0), (a1, u1) = plain.solve(zones, law.s0), shifted.solve(zones, law.s0)
+            assert abs(a1 - a0) < 1e-12
+            p0, p1 = plain.load_width(u0, zones, law.s0)[0], shifted.load_width(u1, zones, law.s0)[0]
+            assert abs(p1 - p0) < 1e-12 * max(1.0, abs(p0))
+        k = plain.fx[6]
+        assert abs(shifted.fx[6] / (k / (1 - cc.SHIFT * k)) - 1) < 1e-12

@@ -28,6 +28,7 @@ import numpy as np
 from . import cohesive as _co
 from . import roots as _roots
 from . import cohesive_kernels as _ck
+from . import cohesive_contact as _cc
 from . import cohesive_follow as _fo
 from . import cohesive_bordered as _bo
 from . import cohesive_round as _round
@@ -38,6 +39,7 @@ EPS_MARGIN = 1e-3       # below the receding limit (the pair's pole)
 P_CAP = 200.0           # the branch is traced up to p = P_CAP m^(4/3) (200 times the adhesion load scale, ~100
                         # times the pull-off; beyond, solve warns: jkrcyl.BranchLimitWarning)
 FD_REL = 2e-4           # finite-difference steps: in eps at a fixed zone length, relative to eps; in c, to c - eps
+ZONE_FD = 5e-4          # ... in a shifted system (next to eps_s), extrapolated from h and 2h
 GAP_POINTS = 96         # Gauss-Legendre points of int h over the zone (the interface energy)
 ALL_POINTS = 160        # eps samples of a branch whose zone reaches round at the touch end
 ROUND_SCAN = 10         # contacts scanned for a zone that stops reaching round (top_opens)
@@ -77,6 +79,8 @@ class Law:
         self.eps_hi = min(math.pi - 0.05, 2 * math.atan(_one.receding_contact(theta, gb, ar)) * (1 - EPS_MARGIN))
         self.p_cap = P_CAP * self.m ** (4 / 3)
         self.fixed = functools.lru_cache(maxsize=256)(self._fixed)
+        self._shifted = functools.lru_cache(maxsize=64)(
+            lambda eps, shift: _co.FixedContact(eps, self.kernel, *self.contact(eps), shift=shift))
         self.residuals = {}          # the zone-end residual by (log eps, log(c - eps)): cohesive_follow.residual
         self.loads = {}              # p at k = 0 by (log eps, log(c - eps)): the trace's domain checks
 
@@ -97,13 +101,19 @@ class Law:
                                   layered=layered)
 
     def _fixed(self, eps):
-        return _co.FixedContact(eps, self.kernel, *self.contact(eps))
+        """The fixed contact eps (its system shifted next to eps_s: jkrcyl.numerics.cohesive_contact.regular)."""
+        return _cc.regular(eps, self.kernel, *self.contact(eps), shifted=self._shifted)
+
+    def fixed_as(self, eps, shift):
+        """The fixed contact eps with the shift of a difference stencil's centre (one system's coefficients)."""
+        fc = self.fixed(eps)
+        return fc if fc.shift == shift else self._shifted(eps, shift)
 
 
-def affine(law, eps, c):
+def affine(law, eps, c, shift=None):
     """[k, p, B, g] at the contact eps, zone end c (c >= pi: zones 'all'), each (value at delta = 0, d/d delta);
-    g = h(c) - h0 (None for 'all'): jkrcyl.numerics.cohesive_kernels.affine."""
-    fc = law.fixed(eps)
+    g = h(c) - h0 (None for 'all'): jkrcyl.numerics.cohesive_kernels.affine; shift: the system's (Law.fixed_as)."""
+    fc = law.fixed(eps) if shift is None else law.fixed_as(eps, shift)
     v = _ck.affine(fc.fx, fc.ek, fc.ep, fc.eb, float(c), law.s0, law.h0)
     return [(v[0], v[1]), (v[2], v[3]), (v[4], v[5]), (v[6], v[7]) if c < math.pi else None]
 
@@ -275,18 +285,24 @@ def _slopes(law, eps, c, direction):
     """(delta/Delta, dp/dt, d(delta/Delta)/dt, D_p, D_dn) at an equilibrium (eps, c) (:func:`point`)."""
     if _bo.applies(law, eps, c):                  # the zone all round (jkrcyl.numerics.cohesive_bordered)
         return _bo.round_slopes(law, eps)
+    shift = law.fixed(eps).shift                  # the stencil's contacts in the centre's system
     aff = affine(law, eps, c)
     delta = -aff[0][0] / aff[0][1]
     k_d, p_d = aff[0][1], aff[1][1]
     dv = lambda i, pair, h: (_at(pair[0][i], delta) - _at(pair[1][i], delta)) / (2 * h)
     if c < math.pi:
         # d/d eps at fixed c = d/d eps at fixed zone length d = c - eps (a step on the scale of eps: the states
-        # are smooth there, however thin the zone) less d/dc (a step on the scale of d, on the same LU)
-        he, hc = FD_REL * min(eps, math.pi - c), FD_REL * min(c - eps, math.pi - c)
-        de = [affine(law, eps + s * he, c + s * he) for s in (1, -1)]
-        dc = [affine(law, eps, c + s * hc) for s in (1, -1)]
-        k_c, p_c, g_c = dv(0, dc, hc), dv(1, dc, hc), dv(3, dc, hc)
-        k_e, p_e, g_e = dv(0, de, he) - k_c, dv(1, de, he) - p_c, dv(3, de, he) - g_c
+        # are smooth there, however thin the zone) less d/dc (a step on the scale of d, on the same LU): central
+        # differences (dp/d(delta) to ~5e-7), extrapolated from h and 2h next to eps_s (~3e-9; everywhere: +13-40 %
+        # LUs per cold pull-off)
+        fd = ZONE_FD if shift else FD_REL
+        he, hc = fd * min(eps, math.pi - c), fd * min(c - eps, math.pi - c)
+        along_e = lambda h: [affine(law, eps + s * h, c + s * h, shift) for s in (1, -1)]
+        along_c = lambda h: [affine(law, eps, c + s * h, shift) for s in (1, -1)]
+        rich = lambda f, h: [(4 * dv(i, f(h), h) - dv(i, f(2 * h), 2 * h)) / 3 if shift else dv(i, f(h), h)
+                             for i in (0, 1, 3)]
+        k_c, p_c, g_c = rich(along_c, hc)
+        k_e, p_e, g_e = np.array(rich(along_e, he)) - (k_c, p_c, g_c)
         g_d = aff[3][1]
         T = np.cross([k_e, k_d, k_c], [g_e, g_d, g_c])          # (d eps, d delta, d c)
         sigma = 1.0 if T[0] * direction[0] + T[2] * direction[1] >= 0 else -1.0
@@ -295,7 +311,7 @@ def _slopes(law, eps, c, direction):
         dp_dt, ddn_dt = sigma * (p_e * T[0] + p_d * T[1] + p_c * T[2]) / rate, sigma * T[1] / rate
     else:
         he = FD_REL * eps
-        de = [affine(law, eps + s * he, c) for s in (1, -1)]
+        de = [affine(law, eps + s * he, c, shift) for s in (1, -1)]
         k_e, p_e = dv(0, de, he), dv(1, de, he)
         D_p, D_dn = p_d / k_d, 1.0 / k_d
         ddn_deps = -k_e / k_d                                    # t = log eps

@@ -51,9 +51,17 @@ class FixedContact:
     Unknown vector u of jkrcyl.numerics.arcs (node values, then the alpha* enrichment), in nu units, for v; with
     layered=True the bottom zone's end layer is subtracted (jkrcyl.numerics.cohesive_layer): u is then v less
     the layer, whose load, gap and traction the methods below add (a thin zone with a JKR-like node count).
+
+    With shift != 0 the system factored is A - shift cos(phi) k^T (k^T u: the edge coefficient) instead of the
+    collocation matrix A: it has the same solutions with k = 0 (there A u and the shifted product agree), so every
+    equilibrium (the zone end's residual, the state, its load) is unchanged, while the unit solutions and the
+    affine coefficients in the approach belong to the shifted system -- k' = k/(1 - shift k(U1)) at a held
+    approach (Sherman-Morrison).  A is singular at one contact eps_s of a kernel (where k(U1) has a pole: see
+    jkrcyl.numerics.cohesive_bordered); the shifted system is not, so the states next to eps_s are regular
+    (:func:`regular` shifts where |k(U1)| >= SHIFT_K).
     """
 
-    def __init__(self, eps, kernel, n, layered=False):
+    def __init__(self, eps, kernel, n, layered=False, shift=0.0):
         eps = float(eps)
         if not 0.0 < eps < math.pi:                   # NaN too: arcs.Arcs would drop the arc (an empty system)
             raise ValueError(f"eps must be in (0, pi), got {eps!r}")
@@ -66,12 +74,13 @@ class FixedContact:
             raise ValueError(f"eps = {eps!r}, n = {n!r}: the collocation system is not square and finite "
                              f"(shape {sy.A.shape}, {npt} points)")
         phin = self.eps * sy._xt                      # collocation angles
-        lu, perm = _factor(sy.A)
         nn, mm = sy.n, sy.m
         ek = np.empty(nn + mm)                        # u -> k (arcs.Arcs.edge)
         ek[:nn] = -sy.D.sum(axis=0)
         ek[nn:] = -_en.G_END[:mm]
         self.ek = ek / math.sqrt(2 * self.eps)
+        self.shift = float(shift)
+        lu, perm = _factor(sy.A - self.shift * np.outer(np.cos(phin), self.ek) if self.shift else sy.A)
         U0, U1, kadj, k_0, k_1 = _ck.unit_solutions(lu, perm, phin, self.ek)
         sf, gf = _arcs._fine_grid()
         if self.layered:                              # the layer's trig coefficients and smooth-moment table
@@ -153,6 +162,23 @@ class FixedContact:
         d = _cr.zone_end(self.fx, self.eps, float(s0), float(h0), float(d_start), SCAN_FACTOR, SCAN_STEP,
                          float(c_top))
         return None if d < 0 else d
+
+
+SHIFT_K = 20.0          # regular: a contact with |dk/d(delta)| >= SHIFT_K is next to the singular contact eps_s
+SHIFT = 2 / SHIFT_K     # ... and its system is shifted by this (|1 - SHIFT k(U1)| >= 1 there: regular)
+
+
+def regular(eps, kernel, n, layered=False, shifted=None):
+    """The fixed contact eps, its system shifted (FixedContact: the same equilibria) where |dk/d(delta)| >= SHIFT_K:
+    next to the contact eps_s where the collocation matrix is singular (k(U1) has a pole there; it is 0.1 .. 3
+    over eps = 1e-3 .. 3.09 for four kernels away from it).  There the affine route's states carried
+    5e-16/(eps - eps_s) relative error and a central difference at a held approach across eps_s was wrong:
+    dp/d(delta) along a branch off by 1.5e-4 at 1e-3 from eps_s, O(1) at 1e-5.  shifted(eps, shift): a cache of
+    shifted contacts."""
+    fc = FixedContact(eps, kernel, n, layered)
+    if abs(fc.fx[6]) < SHIFT_K:
+        return fc
+    return shifted(eps, SHIFT) if shifted is not None else FixedContact(eps, kernel, n, layered, shift=SHIFT)
 
 
 def nodes_for(eps, zone, ar=0.0):

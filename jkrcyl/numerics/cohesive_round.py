@@ -43,6 +43,7 @@ TOP_FIRST = 1e-6          # a narrow S: its first zone point has pi - c = TOP_FI
 TOP_FACTOR = 10 ** 0.125  # ratio of successive pi - c next to the top
 TOP_STEP = math.log(TOP_FACTOR)   # ... the largest step of near_top in its plane
 TOP_PAST = 1e-3           # ... within this of the opening in eps (relative): then the continuation
+TOP_SCALE = 0.5           # ... its plane's eps scale: log(eps/eps_open) over max(TOP_PAST, TOP_SCALE |that|)
 TOP_MAX = 1.0             # ... within pi - c < TOP_MAX
 TOP_EDGE = 1e-3 * TOP_STEP   # ... the step below which a point outside the domain ends the branch there
 TOP_STEPS = 400           # ... at most this many points
@@ -109,12 +110,12 @@ def trace(law, eps_jump, inside, top_gap):
     return np.vstack([rounded, got.points]), "zone", got.reason, n
 
 
-def _gap_at_rest(law, eps, x):
+def _gap_at_rest(law, eps, x, shift=None):
     """k1 g0 - k0 g1 at the contact eps and the zone end c = pi - x: the zone-end residual h(c) - h0 with k = 0
     (cohesive_follow.residual, the approach eliminated by k) times dk/d(delta).  Smooth where that one has a pole:
     dk/d(delta) vanishes on a line of fixed eps (the approach leaves k unchanged at that contact), crossed by the
     branch where k0 vanishes too (the state's approach there fixed by g alone)."""
-    fc = law.fixed(eps)
+    fc = law.fixed(eps) if shift is None else law.fixed_as(eps, shift)      # (of the system: a stencil's centre's)
     v = _ck.affine(fc.fx, fc.ek, fc.ep, fc.eb, math.pi - x, law.s0, law.h0)
     return v[1] * v[6] - v[0] * v[7]
 
@@ -135,19 +136,23 @@ def _root_near(f, guess, width, lo, hi):
 
 def near_top(law, eps_open, inside=lambda y: True):
     """The zone part next to the top: the branch k = 0, h(c) = h0 from the opening (eps_open, c = pi) traced in
-    s = (log(eps/eps_open)/TOP_PAST, log x), x = pi - c, by arclength: a secant predictor; corrected on the line
-    of fixed x where the branch runs along x (a new contact per iterate; steps up to log(TOP_FACTOR)), else of
-    fixed eps (one contact; steps up to TOP_GROW times that); a step halved where the corrected point lies farther
-    than half a step from the predictor (another family's root) or turns by more than acos(TOP_TURN), grown by 1.5
-    after each point -- so that neither eps(x) nor x(eps) need be single-valued: an S (eps falls from the opening
-    to a fold, then rises; the continuation in (log eps, log(c - eps)) turned back at a fold 0.16 rad below the
-    top), a zone end leaving the top forward in eps, one running back to the least contact, one turning back in c.
+    s = (log(eps/eps_open)/sigma, log x), x = pi - c, sigma = max(TOP_PAST, TOP_SCALE |log(eps/eps_open)|) at the
+    last point (a narrow S's turn 3e-4 wide in eps resolved; a wide S's fold far from the opening not a turn
+    1e-4 wide in log x), by arclength: the tangent normal to the residual's gradient (:func:`_tangent`);
+    corrected on the line of fixed x where the branch runs along x (a new contact per iterate; steps up to
+    log(TOP_FACTOR)), else of fixed eps (one contact; steps up to TOP_GROW TOP_PAST/sigma times that, at most
+    log(TOP_FACTOR) in log x), on the other line where that one finds no point, each point on its side of a
+    fold (:func:`_corrected`); a step halved where the corrected point lies farther than half a step from the
+    predictor (another family's root) or turns by more than acos(TOP_TURN), grown by 1.5 after each point -- so
+    that neither eps(x) nor x(eps) need be single-valued: an S (eps falls from the opening to a fold, then rises;
+    the continuation in (log eps, log(c - eps)) turned back at a fold 0.16 rad below the top, and cut across one
+    0.34 rad below it), a zone end leaving the top forward in eps, one running back to the least contact, one
+    turning back in c.
     The residual is :func:`_gap_at_rest` (no pole).  Ends where the branch rises in eps past TOP_PAST beyond the
     opening, or past a fold and along eps, or reaches x = TOP_MAX (the continuation goes on from there), or
     leaves its domain inside(y) (y = (log eps, log(c - eps)); the last point within a step of TOP_EDGE of the
     edge); each fold in eps met on the way is refined (Brent's extremum in log x to 1e-12) and kept as a point.
     Returns (points (n, 2) in (log eps, log(c - eps)), why ('' when traced), ended: the branch left its domain)."""
-    to_s = lambda e, lx: np.array([math.log(e / eps_open) / TOP_PAST, lx])
     pts = []
     for lx in (math.log(TOP_FIRST), math.log(TOP_FIRST * TOP_FACTOR)):
         e = _eps_at(law, lx, pts[-1][0] if pts else eps_open, 1e-12 * eps_open)
@@ -157,25 +162,18 @@ def near_top(law, eps_open, inside=lambda y: True):
     h, ended, folded = TOP_STEP, False, False
     while len(pts) < TOP_STEPS:
         e, lx = pts[-1]
-        t = to_s(*pts[-1]) - to_s(*pts[-2])
-        t /= np.hypot(*t)
+        sigma = max(TOP_PAST, TOP_SCALE * abs(math.log(e / eps_open)))
+        to_s = lambda e_, lx_: np.array([math.log(e_ / eps_open) / sigma, lx_])
+        t = _tangent(law, sigma, pts[-1], to_s(*pts[-1]) - to_s(*pts[-2]))
         along_x = abs(t[1]) >= abs(t[0])
         rising = e > pts[-2][0]
         folded = folded or (rising and len(pts) > 2 and pts[-2][0] < pts[-3][0])
         if (rising and (e > eps_open * (1 + TOP_PAST) or (folded and not along_x))) or lx > math.log(TOP_MAX):
             break                        # past the opening, or past the fold and along eps: the continuation
-        h = min(h, TOP_STEP if along_x else TOP_STEP * TOP_GROW)
+        h = min(h, TOP_STEP if along_x else min(TOP_STEP * TOP_GROW * TOP_PAST / sigma, TOP_STEP / abs(t[1])))
         pred = to_s(*pts[-1]) + h * t
-        pe = eps_open * math.exp(TOP_PAST * pred[0])
-        if along_x:                      # along x: eps at the predicted x
-            y = _eps_at(law, pred[1], pe, max(0.25 * h * abs(t[0]) * TOP_PAST * pe, 1e-13 * eps_open))
-            y = None if y is None else (y, pred[1])
-        else:                            # along eps: x at the predicted contact (one LU)
-            f = lambda v: _gap_at_rest(law, pe, math.exp(v))
-            y = _root_near(f, pred[1], 0.25 * h * abs(t[1]) + 1e-9, -700.0, math.log(math.pi - pe))
-            y = None if y is None else (pe, y)
-        step = None if y is None else to_s(*y) - to_s(*pts[-1])
-        if y is None or np.hypot(*(to_s(*y) - pred)) > 0.5 * h or step @ t < TOP_TURN * np.hypot(*step):
+        y = _corrected(law, eps_open, sigma, pred, h, t, along_x, to_s(*pts[-1]), _sides(law, *pts[-1]))
+        if y is None:
             h /= 2
             if h < TOP_STEP * 1e-4:
                 return None, _no_zone_end(eps_open, math.exp(lx), e), False
@@ -194,6 +192,67 @@ def near_top(law, eps_open, inside=lambda y: True):
     pts = _folds_refined(law, pts)
     es, lxs = np.array([p[0] for p in pts]), np.array([p[1] for p in pts])
     return np.column_stack([np.log(es), np.log(math.pi - np.exp(lxs) - es)]), "", ended
+
+
+def _corrected(law, eps_open, sigma, pred, h, t, along_x, last, sides):
+    """near_top's point for the step h along t from last (both in its plane s), pred = last + h t: on the line of
+    fixed x where the branch runs along x, else of fixed eps -- and on the other line where that one finds no
+    point (a fold in eps met along eps: the scaled plane keeps the tangent along eps up to a fold whose turn
+    is wide in x -- a rigid pair, h0 1.324 Delta, lambda 0.992: pi - c 0.34 at the fold -- so the line of fixed
+    eps past the fold crosses no branch); the point within half a step of pred, turning less than
+    acos(TOP_TURN) from t and on the same side of a fold as last (sides: :func:`_sides` at last; a line of fixed
+    eps near a fold in eps crosses both arms -- a step along eps landed past that fold, the rigid pair above --
+    and one of fixed x both arms of a fold in x), as (eps, log x), or None."""
+    pe = eps_open * math.exp(sigma * pred[0])
+    to_s = lambda e, lx: np.array([math.log(e / eps_open) / sigma, lx])
+    for fixed_x in ((True, False) if along_x else (False, True)):
+        if fixed_x:                      # eps at the predicted x
+            y = _eps_at(law, pred[1], pe, max(0.25 * h * abs(t[0]) * sigma * pe, 1e-13 * eps_open))
+            y = None if y is None else (y, pred[1])
+        else:                            # x at the predicted contact (one LU)
+            f = lambda v: _gap_at_rest(law, pe, math.exp(v))
+            y = _root_near(f, pred[1], 0.25 * h * abs(t[1]) + 1e-9, -700.0, math.log(math.pi - pe))
+            y = None if y is None else (pe, y)
+        if y is None or _sides(law, *y)[0 if fixed_x else 1] != sides[0 if fixed_x else 1]:
+            continue
+        step = to_s(*y) - last
+        if np.hypot(*(to_s(*y) - pred)) <= 0.5 * h and step @ t >= TOP_TURN * np.hypot(*step):
+            return y
+    return None
+
+
+SIDE_STEP = 1e-7          # _gradient: the relative step of the differences
+
+
+def _gradient(law, e, lx):
+    """(d/d(log eps), d/d(log x)) of :func:`_gap_at_rest` at (e, x = exp(lx)) by central differences (kept per law:
+    the tangent there and the next step's side checks read it)."""
+    memo = law.__dict__.setdefault("_top_gradients", {})
+    if (e, lx) not in memo:
+        shift = law.fixed(e).shift
+        f = lambda de, dl: _gap_at_rest(law, e * math.exp(de), math.exp(lx + dl), shift)
+        memo[(e, lx)] = np.array([f(SIDE_STEP, 0.0) - f(-SIDE_STEP, 0.0),
+                                  f(0.0, SIDE_STEP) - f(0.0, -SIDE_STEP)]) / (2 * SIDE_STEP)
+    return memo[(e, lx)]
+
+
+def _sides(law, e, lx):
+    """The signs of :func:`_gradient`: the first flips across a fold in x, the second across a fold in eps."""
+    return tuple(np.sign(_gradient(law, e, lx)))
+
+
+def _tangent(law, sigma, point, chord):
+    """The unit tangent of the branch at point = (eps, log x) in near_top's plane (eps scale sigma), normal to the
+    residual's gradient, oriented along chord (the step that reached it); the chord's direction where the
+    gradient is not finite or vanishes.  (The chord alone turned the wrong way at a fold in eps crossed by a step
+    at fixed x: eps falls along it, rises past the fold.)"""
+    g = _gradient(law, *point)
+    t = np.array([-g[1], g[0] * sigma])          # normal to (dF/ds_0, dF/ds_1) = (sigma g_0, g_1)
+    norm = np.hypot(*t)
+    if not (np.all(np.isfinite(t)) and norm > 0):
+        return chord / np.hypot(*chord)
+    t /= norm
+    return -t if t @ chord < 0 else t
 
 
 def _no_zone_end(eps_open, x, guess=None):
