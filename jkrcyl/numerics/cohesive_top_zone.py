@@ -49,6 +49,7 @@ EPS_STEP = 1e-7           # bracket search in eps: the first step relative to ep
 EPS_XTOL = 1e-15          # the eps root to this relative tolerance
 TOUCH = 1e-2              # the trace follows eps down to this times the law's smallest traced contact (the touch end)
 HOLD_STEP = 1e-4          # zone_matrix: central differences, relative to each zone length
+HELD = ("load", "grip", "grip-work")   # the controls of held_state
 
 TopZoneBranch = namedtuple("TopZoneBranch", ["junction", "states", "end", "onset"])
 TopZoneBranch.__doc__ = """A traced top-zone family (jkrcyl.numerics.cohesive.CohesiveState each, zones 'bottom+top').
@@ -238,12 +239,12 @@ def potential(st):
     return _cb.potential(st)
 
 
-def held_state(law, c, c_top, control, value, eps_guess):
+def held_state(law, c, c_top, control, value, eps_guess, work_shift=0.0):
     """The state with the zone ends c and c_top held, k = 0 at the contact edge and the control's quantity at value
-    ('grip': delta/Delta, 'load': p): a scalar root in eps near eps_guess (bracketed, Brent).  Returns (state,
-    [h(c) - h0, h(pi - c_top) - h0])."""
-    if control not in ("grip", "load"):
-        raise ValueError(f"control must be 'grip' or 'load', got {control!r}")
+    ('grip': delta/Delta, 'load': p, 'grip-work': delta_work/Delta = delta/Delta + work_shift p): a scalar root in
+    eps near eps_guess (bracketed, Brent).  Returns (state, [h(c) - h0, h(pi - c_top) - h0])."""
+    if control not in HELD:
+        raise ValueError(f"control must be one of {', '.join(HELD)}, got {control!r}")
     zones = _co.zones_of(c, c_top)
 
     def pieces(eps):
@@ -251,9 +252,9 @@ def held_state(law, c, c_top, control, value, eps_guess):
         ua = fc.fx[3] + law.s0 * fc.zone_unit(zones)
         if control == "grip":
             dn = value
-        else:
-            p_a = fc.load_width(ua, zones, law.s0)[0]
-            dn = (value - p_a) / (fc.ep @ fc.fx[4])
+        else:                                      # p = p_a + dn q, affine in the approach
+            p_a, q = fc.load_width(ua, zones, law.s0)[0], fc.ep @ fc.fx[4]
+            dn = (value - p_a) / q if control == "load" else (value - work_shift * p_a) / (1 + work_shift * q)
         u = ua + dn * fc.fx[4]
         return fc, dn, u, fc.ek @ u
 
@@ -271,22 +272,39 @@ def held_state(law, c, c_top, control, value, eps_guess):
     return st, st.fields.gap(np.array([c, math.pi - c_top])) - law.h0
 
 
-def zone_matrix(law, st, control):
+def _held_value(st, control, work_shift):
+    return {"grip": st.delta_over_Delta, "load": st.p, "grip-work": st.delta_over_Delta + work_shift * st.p}[control]
+
+
+def zone_matrix(law, st, control, work_shift=0.0):
     """G_ij = d(h(c_i) - h0)/dc_j at the held quantity of control (central differences of zone-end-held states,
     steps HOLD_STEP times each zone length, c - eps and c_top, or the contact eps if smaller: near the touch the
     held contact moves ~ (c step)/eps and vanishes under load a step ~ eps away), unsymmetrised."""
-    value = st.delta_over_Delta if control == "grip" else st.p
+    value = _held_value(st, control, work_shift)
     ends = np.array([st.c, st.c_top])
     steps = HOLD_STEP * np.minimum([st.c - st.eps, st.c_top], st.eps)
     G = np.empty((2, 2))
     for j in range(2):
-        g = [held_state(law, *(ends + sgn * steps[j] * np.eye(2)[j]), control, value, st.eps)[1] for sgn in (1, -1)]
+        g = [held_state(law, *(ends + sgn * steps[j] * np.eye(2)[j]), control, value, st.eps, work_shift)[1]
+             for sgn in (1, -1)]
         G[:, j] = (g[0] - g[1]) / (2 * steps[j])
     return G
 
 
-def stable(law, st, control, G=None):
-    """Whether the top-zone state st is stable under control ('grip' or 'load'): the held energy a minimum, G's
-    symmetric part positive definite."""
-    G = zone_matrix(law, st, control) if G is None else G
+def stable(law, st, control, G=None, work_shift=0.0):
+    """Whether the top-zone state st is stable under control ('grip', 'load' or 'grip-work'): the held energy a
+    minimum, G's symmetric part positive definite."""
+    G = zone_matrix(law, st, control, work_shift) if G is None else G
     return bool(np.all(np.linalg.eigvalsh(0.5 * (G + G.T)) > 0))
+
+
+def flags(law, st, work_shift=0.0):
+    """{control: stable} under 'load', 'grip' and 'grip-work' (work_shift >= 0).  A stiffer control only adds a
+    constraint (or a spring) to the energy's Hessian, so stable under load => under grip-work => under grip; where
+    the top zone grows at a held approach (G_22 < 0 under grip: every state met) all three are False from two held
+    states, else each by :func:`stable`."""
+    step = HOLD_STEP * min(st.c_top, st.eps)
+    g = [held_state(law, st.c, st.c_top + s * step, "grip", st.delta_over_Delta, st.eps)[1][1] for s in (1, -1)]
+    if (g[0] - g[1]) / (2 * step) < 0:
+        return dict.fromkeys(HELD, False)
+    return {ctl: stable(law, st, ctl, work_shift=work_shift) for ctl in HELD}
