@@ -76,25 +76,25 @@ def _c_top_near(law, c, guess):
     return None
 
 
+TOUCH_OFFSETS = np.concatenate([-np.geomspace(0.5, 1e-8, 17), [0.0], np.geomspace(1e-8, 0.5, 17)])
+
+
 def two_zone_touch(law, last):
     """The two-zone state that touches the bottom (h(0) = 0) next to ``last``, the top bridge's last state before
-    its contact vanishes (jkrcyl.numerics.cohesive_top_zone, end 'touch'): Brent in c on h(0) with c_top the root
-    next to last's; None when no sign change lies within a factor 2 of last.c."""
-    memo = {}
-
+    its contact vanishes (jkrcyl.numerics.cohesive_top_zone, end 'touch'): h(0) at c = last.c exp(TOUCH_OFFSETS)
+    (c_top the root next to last's; none where the top zone has vanished on one side), Brent on the sign change
+    nearest last.c; None where there is none."""
     def h_bottom(c, _=None):
-        ct = _c_top_near(law, c, memo.get("ct", last.c_top))
-        if ct is None:
-            return math.nan
-        memo["ct"], memo[c] = ct, ct
-        return two_zone_state(law, c, ct).fields.gap(0.0)[0]
-    for width in (0.05, 0.2, 0.5, 1.0):
-        lo, hi = last.c * math.exp(-width), last.c * math.exp(width)
-        flo, fhi = h_bottom(lo), h_bottom(hi)
-        if flo * fhi < 0:
-            c = _roots.brent(h_bottom, lo, hi, (), flo, fhi)
-            return two_zone_state(law, c, memo[c] if c in memo else _c_top_near(law, c, last.c_top))
-    return None
+        ct = _c_top_near(law, c, last.c_top)
+        return math.nan if ct is None else two_zone_state(law, c, ct).fields.gap(0.0)[0]
+    cs = last.c * np.exp(TOUCH_OFFSETS)
+    h = np.array([h_bottom(c) for c in cs])
+    pairs = [k for k in range(len(cs) - 1) if np.isfinite(h[k]) and np.isfinite(h[k + 1]) and h[k] * h[k + 1] <= 0]
+    if not pairs:
+        return None
+    k = min(pairs, key=lambda i: abs(TOUCH_OFFSETS[i] + TOUCH_OFFSETS[i + 1]))
+    c = cs[k] if h[k] == 0 else _roots.brent(h_bottom, cs[k], cs[k + 1], (), h[k], h[k + 1])
+    return two_zone_state(law, c, _c_top_near(law, c, last.c_top))
 
 
 def two_zone_trace(law, touch, ratio=TWO_ZONE_RATIO):
