@@ -37,7 +37,7 @@ def curve(pb: Problem, a=None) -> Curve:
     pb : jkrcyl.model.problem.Problem
         A problem with the Maugis-Dugdale edge (jkrcyl.laws.DugdaleEdge).
     a : None
-        The states are those traced (c_top geometric from 1e-9 by 1.6 per point to the family's end; past a touch
+        The states are those traced (c_top geometric from 1e-9 by 2 per point to the family's end; past a touch
         the bottom zone c by 0.95): a given parameter is refused.
 
     Returns

@@ -128,6 +128,27 @@ def test_continuous_with_the_single_patch_at_the_junction(cv):
         assert abs(c[0] - cv.c[i]) < 1e-6 and h[0] == pytest.approx(sv.law.h0, abs=1e-6)
 
 
+def test_slopes_are_differences_of_states_solved_alone(cv, law):
+    """The curve's per-point slopes d/da (a = j + c_top/pi; with contact by implicit differentiation at a fixed
+    contact, cohesive_top_zone.slopes) against central differences of states solved alone at c_top (1 +- 1e-3)
+    (with contact) or re-solved by the scan at c (1 +- 1e-4) (without): measured 1e-7..1e-5 relative (the
+    states' noise over the steps)."""
+    for i in rows(cv, True)[8::5]:
+        h = 1e-3 * cv.c_top[i]
+        g = [tz.state_at(law, cv.c_top[i] + s * h, cv.eps[i], cv.c[i] - cv.eps[i]) for s in (1, -1)]
+        assert cv.dP_star_da[i] == pytest.approx(math.pi * (g[0].p - g[1].p) / (2 * h) / THETA, rel=1e-4)
+        assert cv.ddelta_da[i] == pytest.approx(
+            math.pi * (g[0].delta_over_Delta - g[1].delta_over_Delta) / (2 * h), rel=1e-4)
+    for i in rows(cv, False)[1::6]:
+        h = 1e-4 * cv.c[i]
+        g = [min(cz.contactless_states(cv.c[i] + s * h, law.m, law.s0, THETA, GB),
+                 key=lambda st: abs(st.c_top - cv.c_top[i])) for s in (1, -1)]
+        da = (g[0].c_top - g[1].c_top) / math.pi
+        assert cv.dP_star_da[i] == pytest.approx((g[0].p - g[1].p) / da / THETA, rel=1e-5)
+        assert cv.ddelta_work_da[i] == pytest.approx((g[0].delta_work_over_Delta - g[1].delta_work_over_Delta) / da,
+                                                     rel=1e-5)
+
+
 def chebyshev_work(states):
     """int p d(delta/Delta) over states at the Chebyshev-Lobatto nodes of their parameter (16 nodes)."""
     n = len(states)

@@ -34,8 +34,7 @@ from ..numerics import cohesive_top_zone as _tz
 from .single_patch import solver
 
 TOP_BRIDGE = "top-bridge"
-RATIO = 1.6               # c_top grows by this factor per traced bridge state (from CT_START = 1e-9)
-SLOPE_STEP = 1e-4         # per-point slopes: central differences in c_top, relative
+RATIO = 2.0               # c_top grows by this factor per traced bridge state (from CT_START = 1e-9)
 
 Family = namedtuple("Family", ["junction", "states", "end", "n_contact"])
 Family.__doc__ = """One top-bridge family (jkrcyl.numerics.cohesive.CohesiveState each): junction, the single-patch
@@ -105,20 +104,10 @@ def trace(sv) -> tuple:
     return tuple(out)
 
 
-def _contact_slopes(law, st):
-    """d(p, delta/Delta)/dc_top along the family at a state with contact (central differences, the states solved
-    alone at c_top (1 +- SLOPE_STEP): jkrcyl.numerics.cohesive_top_zone.state_at)."""
-    h = SLOPE_STEP * st.c_top
-    got = [_tz.state_at(law, st.c_top + s * h, st.eps, st.c - st.eps) for s in (1, -1)]
-    if any(g is None for g in got):
-        return math.nan, math.nan
-    return (got[0].p - got[1].p) / (2 * h), (got[0].delta_over_Delta - got[1].delta_over_Delta) / (2 * h)
-
-
 def _row(law, st, contact, work_shift):
     """(dp/da, d(delta/Delta)/da, stable under load, grip, grip-work) at one state (a = j + c_top/pi)."""
     if contact:
-        dp, ddn = _contact_slopes(law, st)
+        dp, ddn, _ = _tz.slopes(law, st)
         f = _tz.flags(law, st, work_shift)
         return math.pi * dp, math.pi * ddn, f["load"], f["grip"], f["grip-work"]
     dp, ddn, dct = _cl.two_zone_slopes(law, st)

@@ -49,6 +49,8 @@ EPS_STEP = 1e-7           # bracket search in eps: the first step relative to ep
 EPS_XTOL = 1e-15          # the eps root to this relative tolerance
 TOUCH = 1e-2              # the trace follows eps down to this times the law's smallest traced contact (the touch end)
 HOLD_STEP = 1e-4          # zone_matrix: central differences, relative to each zone length
+SLOPE_STEP = 1e-3         # slopes: central differences, relative to eps and c_top (the states' ~1e-12 noise over
+                          # the step against its truncation: 1e-5 relative from c_top 1e-9, measured)
 HELD = ("load", "grip", "grip-work")   # the controls of held_state
 
 TopZoneBranch = namedtuple("TopZoneBranch", ["junction", "states", "end", "onset"])
@@ -83,10 +85,10 @@ def _top_gap(st):
     return st.fields.gap(math.pi - st.c_top)[0] - st.h0_over_Delta
 
 
-def _eps_root(law, c_top, eps0, d_near):
+def _eps_root(law, c_top, eps0, d_near, step=EPS_STEP):
     """The state with the top zone c_top whose eps solves h(pi - c_top) = h0 nearest to eps0: a bracket grown
-    geometrically on both sides of eps0 (the family can turn back in eps), then Brent (to EPS_XTOL relative);
-    None when none is found within a factor e^2."""
+    geometrically (from the relative step ``step``, doubled) on both sides of eps0 (the family can turn back in
+    eps), then Brent (to EPS_XTOL relative); None when none is found within a factor e^2."""
     memo = {}
 
     def f(eps):
@@ -100,7 +102,6 @@ def _eps_root(law, c_top, eps0, d_near):
         return None
     if f0 == 0.0:
         return memo[eps0][1]
-    step = EPS_STEP
     while step < 2.0:
         for x in (eps0 * math.exp(-step), eps0 * math.exp(step)):
             fx = f(x)
@@ -175,7 +176,8 @@ def trace(law, start, ct_start=CT_START, ratio=CT_RATIO):
     states, eps, d, step = [], start.eps, start.c - start.eps, ratio
     ct, end, onset = ct_start, "", None
     while len(states) < CT_MAX_POINTS:
-        st = _eps_root(law, ct, _predict(states, ct, eps), d)
+        guess = _predict(states, ct, eps)             # its error: a fraction of the step it predicts
+        st = _eps_root(law, ct, guess, d, max(EPS_STEP, 0.03 * abs(math.log(guess / eps))))
         if st is None:                                # refine the step before calling it an end
             if step - 1 > RATIO_MIN and states:
                 step = math.sqrt(step)
@@ -213,23 +215,45 @@ def _end_reason(law, eps, d, ct):
 
 
 def _onset(law, before, after):
-    """The state of the family between before (h(pi) > 0) and after (h(pi) <= 0) where h(pi) = 0."""
+    """The state of the family between before (h(pi) > 0) and after (h(pi) <= 0) where h(pi) = 0: Brent in c_top,
+    each eps root from the log-linear guess between the two (its bracket from 3 % of their distance in log eps)."""
     memo = {}
+    lo = max(before.c_top, CT_START * 1e-3)         # before solves h(pi - lo) = h0 already: its h(pi) is f(lo)
+    span = math.log(after.eps / before.eps)
+    step = max(EPS_STEP, 0.03 * abs(span))
+
+    def root(ct):
+        guess = before.eps * math.exp(span * math.log(ct / lo) / math.log(after.c_top / lo))
+        return _eps_root(law, ct, guess, before.c - before.eps, step)
 
     def f(ct):
-        st = _eps_root(law, ct, before.eps, before.c - before.eps)
-        memo[ct] = st
+        st = memo[ct] = root(ct)
         return math.nan if st is None else st.h_pi_over_Delta
-    lo = max(before.c_top, CT_START * 1e-3)         # before solves h(pi - lo) = h0 already: its h(pi) is f(lo)
     ct = _roots.brent(lambda x, _: f(x), lo, after.c_top, (), before.h_pi_over_Delta, after.h_pi_over_Delta,
                       1e-13 * after.c_top)
-    return memo.get(ct) or _eps_root(law, ct, before.eps, before.c - before.eps)
+    return memo.get(ct) or root(ct)
 
 
 def state_at(law, c_top, eps_guess, d_guess):
     """The top-zone state with the top zone c_top, solved alone: its eps the root nearest to eps_guess, the bottom
     zone end nearest to eps + d_guess (a check on the traced family)."""
     return _eps_root(law, c_top, eps_guess, d_guess)
+
+
+def slopes(law, st, rel=SLOPE_STEP):
+    """d(p, delta/Delta, eps)/dc_top along the family at st, by implicit differentiation of the top zone-end
+    condition F(eps, c_top) = h(pi - c_top) - h0 = 0 (the bottom zone end and k = 0 solved at each): deps/dc_top =
+    -F_ct/F_eps, then dX/dc_top = X_eps deps/dc_top + X_ct (X = p, delta/Delta), the partials by central differences
+    (steps rel times eps and c_top) of states at a fixed contact -- four, where solving states alone costs ~40."""
+    d_near, he, hc = st.c - st.eps, rel * st.eps, rel * st.c_top
+    at = [fixed_state(law, st.eps + he, st.c_top, d_near), fixed_state(law, st.eps - he, st.c_top, d_near),
+          fixed_state(law, st.eps, st.c_top + hc, d_near), fixed_state(law, st.eps, st.c_top - hc, d_near)]
+    if any(a is None for a in at):
+        return math.nan, math.nan, math.nan
+    part = lambda f, i, h: (f(at[i]) - f(at[i + 1])) / (2 * h)
+    deps = -part(_top_gap, 2, hc) / part(_top_gap, 0, he)
+    p_of, dn_of = (lambda s: s.p), (lambda s: s.delta_over_Delta)
+    return (part(p_of, 0, he) * deps + part(p_of, 2, hc), part(dn_of, 0, he) * deps + part(dn_of, 2, hc), deps)
 
 
 # --- energy and stability -------------------------------------------------------------------------------------
