@@ -4,7 +4,8 @@ Kernel scale and notation of jkrcyl.numerics.cohesive (p = P beta*/(4 pi Delta),
 |phi| < c at the bottom and |phi - pi| < c_top at the top, h0 = m^2/s0).  Where the single patch's gap has a local
 minimum at the top and falls to the range, h(pi) = h0 (a *junction*), a zone at the top forms, held by its own
 traction: the top bridge, one contact with its bottom zone and the top zone (jkrcyl.numerics.cohesive_top_zone).
-One family per junction on the sub-critical branch, traced in c_top from 0 (the junction, whose state is the
+One family per junction on the sub- or the super-critical branch (each on its side of the receding limit: the
+README's pin, identical bodies at M 0.33, has its junction past it, at eps 1.605), traced in c_top from 0 (the junction, whose state is the
 single patch's) until
 
 * the top closes (h(pi) = 0): there the law's two patches begin (the top contact forms under its zone, as
@@ -47,7 +48,8 @@ ENDS = {
     "top touches": "the contact vanished (touch) and the pin, held by zones at the bottom and the top, reaches "
                    "the top (h(pi) = 0): from there the mirror of the bridge (contact at the top)",
     "touch": "the contact vanishes (touch): its continuation without contact not found",
-    "receding limit": "the contact reaches the receding limit: not traced beyond",
+    "receding limit": "the contact reaches the receding limit (the pole of the load): not traced beyond",
+    "near full contact": "the contact reaches pi - 0.05 (the super-critical single patch's end): not traced beyond",
     "zones meet": "the bottom and the top zones meet: not traced beyond",
 }
 
@@ -78,15 +80,17 @@ def families_of(problem):
 
 def trace(sv) -> tuple:
     """Every top-bridge family of the cohesive solver sv (jkrcyl.model.cohesive.Cohesive): junctions on its traced
-    sub-critical branch (jkrcyl.numerics.cohesive_top_zone.junctions), each traced, and past a touch continued
-    without contact.  c_top strictly increasing along each (a family whose c_top turns back ends there)."""
-    law, br = sv.law, sv._sub
-    if br.kind != "zone":
-        return ()
-    eps = np.exp(br.x[:, 0])
-    c = np.where(np.arange(len(eps)) < br.n_round, math.pi, eps + np.exp(br.x[:, 1]))
-    out = []
-    for start, _ in _tz.junctions(law, np.column_stack([eps, c])):
+    sub- and super-critical branches (jkrcyl.numerics.cohesive_top_zone.junctions; the super-critical one is traced
+    for this), each traced on its side of the receding limit, and past a touch continued without contact.  c_top
+    strictly increasing along each (a family whose c_top turns back ends there)."""
+    law, out, starts = sv.law, [], []
+    for br in (sv._sub,) + ((sv._super,) if sv.has("super-critical") else ()):
+        if br.kind != "zone":
+            continue
+        eps = np.exp(br.x[:, 0])
+        c = np.where(np.arange(len(eps)) < br.n_round, math.pi, eps + np.exp(br.x[:, 1]))
+        starts += [st for st, _ in _tz.junctions(law, np.column_stack([eps, c]))]
+    for start in starts:
         got = _tz.trace(law, start, ratio=RATIO)
         states, end = list(got.states) + ([got.onset] if got.onset is not None else []), got.end
         n_contact = len(states)

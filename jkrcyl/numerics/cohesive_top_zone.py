@@ -47,10 +47,12 @@ CT_MAX_POINTS = 400
 RATIO_MIN = 1e-4          # trace: the step in c_top refined (square roots of the ratio) down to this before an end
 EPS_STEP = 1e-7           # bracket search in eps: the first step relative to eps, doubled
 EPS_XTOL = 1e-15          # the eps root to this relative tolerance
+SUPER_TOP = 0.05          # the super-critical side: contacts up to pi - SUPER_TOP (as its single patch)
 TOUCH = 1e-2              # the trace follows eps down to this times the law's smallest traced contact (the touch end)
 HOLD_STEP = 1e-4          # zone_matrix: central differences, relative to each zone length
-SLOPE_STEP = 1e-3         # slopes: central differences, relative to eps and c_top (the states' ~1e-12 noise over
-                          # the step against its truncation: 1e-5 relative from c_top 1e-9, measured)
+SLOPE_STEP = 1e-3         # slopes: central differences relative to c_top and eps (the states' ~1e-12 noise over
+SLOPE_STEP_EPS = 1e-5     # the step against its truncation, which is large in eps past the receding limit: 1e-5
+                          # relative at c_top 1e-9 .. 3e-3 on both sides, measured)
 HELD = ("load", "grip", "grip-work")   # the controls of held_state
 
 TopZoneBranch = namedtuple("TopZoneBranch", ["junction", "states", "end", "onset"])
@@ -59,7 +61,8 @@ TopZoneBranch.__doc__ = """A traced top-zone family (jkrcyl.numerics.cohesive.Co
 junction: the single-patch state where h(pi) = h0 (c_top = 0); states: the family in increasing c_top; end: why
 the trace ended -- 'top closes' (h(pi) reaches 0: onset is that state, the top contact's onset), 'touch' (eps
 below 0.1 of the law's smallest traced contact: the family goes on without contact, the states of
-jkrcyl.numerics.cohesive_zones.contactless_states), 'receding limit', 'zones meet' (c + c_top -> pi), 'no root'
+jkrcyl.numerics.cohesive_zones.contactless_states), 'receding limit' (the pole eps_crit, from either side), 'near full
+contact' (a super-critical family at eps = pi - SUPER_TOP), 'zones meet' (c + c_top -> pi), 'no root'
 (no eps root next to the last state: a fold in c_top) or 'points' (CT_MAX_POINTS states)."""
 
 
@@ -89,11 +92,11 @@ def _eps_root(law, c_top, eps0, d_near, step=EPS_STEP):
     """The state with the top zone c_top whose eps solves h(pi - c_top) = h0 nearest to eps0: a bracket grown
     geometrically (from the relative step ``step``, doubled) on both sides of eps0 (the family can turn back in
     eps), then Brent (to EPS_XTOL relative); None when none is found within a factor e^2."""
-    memo = {}
+    memo, (lo, hi) = {}, domain(law, eps0)
 
     def f(eps):
         if eps not in memo:
-            st = fixed_state(law, eps, c_top, d_near) if law.eps_lo * TOUCH < eps < law.eps_hi else None
+            st = fixed_state(law, eps, c_top, d_near) if lo < eps < hi else None
             memo[eps] = (math.nan, None) if st is None else (_top_gap(st), st)
         return memo[eps][0]
 
@@ -203,11 +206,25 @@ def _predict(states, ct, eps):
     return guess if 0.5 * b.eps < guess < 2 * b.eps else b.eps
 
 
+def domain(law, eps):
+    """(lo, hi): the contacts the family through eps may reach -- the sub-critical side of the receding limit
+    eps_crit (from TOUCH times the law's smallest traced contact to jkrcyl.numerics.cohesive_branch's eps_hi), or
+    the super-critical side (from eps_crit (1 + EPS_MARGIN) to pi - SUPER_TOP): a root is never bracketed
+    across the pole."""
+    crit = law.eps_hi / (1 - _cb.EPS_MARGIN)           # the receding contact (or above pi - 0.05: none below)
+    if eps < crit:
+        return law.eps_lo * TOUCH, law.eps_hi
+    return crit * (1 + _cb.EPS_MARGIN), math.pi - SUPER_TOP
+
+
 def _end_reason(law, eps, d, ct):
     """Why no state follows the last one (eps, d = c - eps) at the next c_top = ct."""
+    lo, hi = domain(law, eps)
     if eps < 0.1 * law.eps_lo:                     # below the single patch's own touch end: the contact vanishes
         return "touch"
-    if eps > law.eps_hi * (1 - 1e-3):
+    if eps > hi * (1 - 1e-3):
+        return "receding limit" if hi == law.eps_hi else "near full contact"
+    if eps < lo * (1 + 1e-3) and lo > law.eps_hi:
         return "receding limit"
     if eps + d + ct >= math.pi * (1 - 1e-6):
         return "zones meet"
@@ -240,12 +257,13 @@ def state_at(law, c_top, eps_guess, d_guess):
     return _eps_root(law, c_top, eps_guess, d_guess)
 
 
-def slopes(law, st, rel=SLOPE_STEP):
+def slopes(law, st, rel=SLOPE_STEP, rel_eps=SLOPE_STEP_EPS):
     """d(p, delta/Delta, eps)/dc_top along the family at st, by implicit differentiation of the top zone-end
     condition F(eps, c_top) = h(pi - c_top) - h0 = 0 (the bottom zone end and k = 0 solved at each): deps/dc_top =
     -F_ct/F_eps, then dX/dc_top = X_eps deps/dc_top + X_ct (X = p, delta/Delta), the partials by central differences
-    (steps rel times eps and c_top) of states at a fixed contact -- four, where solving states alone costs ~40."""
-    d_near, he, hc = st.c - st.eps, rel * st.eps, rel * st.c_top
+    (steps rel_eps times eps, rel times c_top) of states at a fixed contact -- four, where solving states alone
+    costs ~40."""
+    d_near, he, hc = st.c - st.eps, rel_eps * st.eps, rel * st.c_top
     at = [fixed_state(law, st.eps + he, st.c_top, d_near), fixed_state(law, st.eps - he, st.c_top, d_near),
           fixed_state(law, st.eps, st.c_top + hc, d_near), fixed_state(law, st.eps, st.c_top - hc, d_near)]
     if any(a is None for a in at):
