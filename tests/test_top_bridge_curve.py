@@ -135,9 +135,10 @@ def test_continuous_with_the_single_patch_at_the_junction(cv):
 
 def test_slopes_are_differences_of_states_solved_alone(cv, law):
     """The curve's per-point slopes d/da (a = j + c_top/pi; with contact by implicit differentiation at a fixed
-    contact, cohesive_top_zone.slopes) against central differences of states solved alone at c_top (1 +- 1e-3; 1e-4 from c_top 1e-4)
-    (with contact) or re-solved by the scan at c (1 +- 1e-4) (without): measured 1e-7..2e-5 relative (the
-    states' noise over the steps, which dominates below c_top ~ 1e-7: both routes scatter by 4e-4 at 2e-9)."""
+    contact, cohesive_top_zone.slopes) against central differences of states solved alone at c_top (1 +- 1e-3;
+    1e-4 from c_top 1e-4) (with contact) or re-solved by the scan at c (1 +- 1e-4) (without): measured 1e-7..2e-5
+    relative (the states' noise over the steps, which dominates below c_top ~ 1e-7: both routes scatter by 4e-4 at
+    c_top 2e-9)."""
     for i in [i for i in rows(cv, True)[::3] if cv.c_top[i] > 1e-7]:
         h = (1e-3 if cv.c_top[i] < 1e-4 else 1e-4) * cv.c_top[i]          # noise below, truncation above
         g = [tz.state_at(law, cv.c_top[i] + s * h, cv.eps[i], cv.c[i] - cv.eps[i]) for s in (1, -1)]

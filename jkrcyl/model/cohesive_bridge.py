@@ -5,8 +5,8 @@ Kernel scale and notation of jkrcyl.numerics.cohesive (p = P beta*/(4 pi Delta),
 minimum at the top and falls to the range, h(pi) = h0 (a *junction*), a zone at the top forms, held by its own
 traction: the top bridge, one contact with its bottom zone and the top zone (jkrcyl.numerics.cohesive_top_zone).
 One family per junction on the sub- or the super-critical branch (each on its side of the receding limit: the
-README's pin, identical bodies at M 0.33, has its junction past it, at eps 1.605), traced in c_top from 0 (the junction, whose state is the
-single patch's) until
+README's pin, identical bodies at M 0.33, has its junction past it, at eps 1.605), traced in c_top from 0 (the
+junction, whose state is the single patch's) until
 
 * the top closes (h(pi) = 0): there the law's two patches begin (the top contact forms under its zone, as
   eps_top^2); end 'top closes';
