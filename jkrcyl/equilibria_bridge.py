@@ -67,7 +67,7 @@ def _curve(pb: Problem) -> Curve:
     return Curve(M=pb.M, theta=pb.theta, gb=pb.gb, regime=TOP_BRIDGE, a=t["a"], eps=t["eps"],
                  eps_star=t["eps"] / math.pi, P_star=t["p"] / k, delta_over_Delta=t["dn"], h_pi_over_Delta=t["h"],
                  feasible=t["feasible"], stable_load=t["stable_load"], stable_grip=t["stable_grip"],
-                 dP_star_da=t["dp_da"] / k, ddelta_da=t["ddn_da"], dG_da_P=nan, dG_da_delta=nan, delta_work_over_Delta=t["dw"],
-                 ddelta_work_da=t["ddw_da"], dG_da_delta_work=nan, stable_grip_work=t["stable_grip_work"],
-                 alpha_ratio=pb.alpha_ratio, c=t["c"], c_top=t["c_top"],
+                 stable_grip_work=t["stable_grip_work"], dP_star_da=t["dp_da"] / k, ddelta_da=t["ddn_da"],
+                 delta_work_over_Delta=t["dw"], ddelta_work_da=t["ddw_da"], dG_da_P=nan, dG_da_delta=nan,
+                 dG_da_delta_work=nan, alpha_ratio=pb.alpha_ratio, c=t["c"], c_top=t["c_top"],
                  ends=tuple(_bridge.end_text(e) for e in t["ends"]))
