@@ -25,12 +25,10 @@ states whose zone ends are held (grad 2 s0 (h(c_i) - h0)), a minimum where G_ij 
 quantity is positive definite.  The total potential: jkrcyl.numerics.cohesive_branch.potential (both zones).
 At the top's closing the family meets the law's two-arc states (jkrcyl.numerics.cohesive_two.solve as the top arc
 eps_top -> 0, as eps_top^2); where the contact vanishes first (lambda 20 above) it meets the states without
-contact held by zones at the bottom and top (jkrcyl.numerics.cohesive_zones.contactless_states) where they touch.
+contact held by zones at the bottom and top where they touch (traced on: cohesive_contactless.two_zone_trace).
 
-For the walker (jkrcyl.analysis.landing, not wired here): the single patch ends at the junction, h(pi) = h0, not
-where h(pi) = 0; there it meets the bridge, a saddle, so the junction is a fold of the combined branch and a walk
-on a stable single patch jumps there, at the held value, onto whatever is stable (the law's two patches).  The
-bridge is never walked: it is the barrier, vanishing at the junction.
+The single patch ends at the junction, h(pi) = h0, a fold of the combined branch (the bridge, a saddle, is the
+barrier): a walk jumps there (jkrcyl.analysis.landing).  The families as a branch: jkrcyl.model.cohesive_bridge.
 """
 import math
 from collections import namedtuple
