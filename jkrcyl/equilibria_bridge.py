@@ -70,4 +70,4 @@ def _curve(pb: Problem) -> Curve:
                  stable_grip_work=t["stable_grip_work"], dP_star_da=t["dp_da"] / k, ddelta_da=t["ddn_da"],
                  delta_work_over_Delta=t["dw"], ddelta_work_da=t["ddw_da"], dG_da_P=nan, dG_da_delta=nan,
                  dG_da_delta_work=nan, alpha_ratio=pb.alpha_ratio, c=t["c"], c_top=t["c_top"],
-                 ends=tuple(_bridge.end_text(e) for e in t["ends"]))
+                 ends=t["ends"])

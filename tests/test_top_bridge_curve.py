@@ -293,7 +293,7 @@ def test_bridge_states_lie_between_the_junction_and_the_closing_all_saddles(E, n
     try:
         cv = EQ.curve(M, mat.theta, regime="top-bridge", gb=gb, alpha_ratio=ar, s0=s0)
     except ValueError as exc:
-        assert str(exc).startswith("regime: no top bridge")
+        assert str(exc).startswith(("regime: no top bridge", "regime: the top bridge is not traced"))
         return
     h0 = m * m / s0 if math.isfinite(mat.theta) else M * M / s0
     assert cv.feasible.all() and np.all((cv.h_pi_over_Delta > -1e-9) & (cv.h_pi_over_Delta < h0 + 1e-9))
@@ -301,6 +301,9 @@ def test_bridge_states_lie_between_the_junction_and_the_closing_all_saddles(E, n
     fam = np.floor(cv.a).astype(int)
     for j, end in enumerate(cv.ends):
         h = cv.h_pi_over_Delta[fam == j]
+        if h.size == 0:                               # a family whose trace stopped at once says so
+            assert end.startswith("no state traced from the junction")
+            continue
         assert h[0] == pytest.approx(h0, abs=1e-6) and np.all(np.diff(cv.c_top[fam == j]) > 0)
         if end.startswith(("the top closes", "the contact vanished")):
             assert h[-1] == pytest.approx(0.0, abs=1e-9)

@@ -40,8 +40,8 @@ RATIO = 2.0               # c_top grows by this factor per traced bridge state (
 Family = namedtuple("Family", ["junction", "states", "end", "n_contact"])
 Family.__doc__ = """One top-bridge family (jkrcyl.numerics.cohesive.CohesiveState each): junction, the single-patch
 state where h(pi) = h0 (c_top = 0, not among the states); states, in increasing c_top: n_contact with contact
-(zones 'bottom+top'), then those without contact (the two-zone continuation past the touch); end, why it ends
-(:data:`ENDS`)."""
+(zones 'bottom+top'), then those without contact (the two-zone continuation past the touch; none where the trace
+stopped at once); end, why it ends (:data:`ENDS`)."""
 
 ENDS = {
     "top closes": "the top closes (h(pi) = 0): the two patches begin, the top contact forming under its zone",
@@ -54,22 +54,29 @@ ENDS = {
 }
 
 
-def end_text(end: str) -> str:
-    """A family's end in words (ENDS; any other end: the trace stopped there, not followed)."""
-    return ENDS.get(end, f"the trace stopped ({end}): not followed beyond")
+def end_text(end: str, n_states: int = 1) -> str:
+    """A family's end in words (ENDS; any other end: the trace stopped there, not followed); a family without
+    states (its trace stopped at once) says so."""
+    text = ENDS.get(end, f"the trace stopped ({end}): not followed beyond")
+    return text if n_states else f"no state traced from the junction: {text}"
 
 
 def require(problem) -> None:
     """ValueError naming regime where the problem has no top bridge: a law of zero range (JKR's top adheres where
-    the gap closes, h(pi) = 0) or one whose single patch never reaches h(pi) = h0 with a gap minimum at the top."""
+    the gap closes, h(pi) = 0) or one whose single patch never reaches h(pi) = h0 with a gap minimum at the top;
+    or where no family has a state traced (said, with why)."""
     h0 = problem.edge.range_over_Delta(problem.m)
     if h0 == 0:
         raise ValueError("regime: 'top-bridge' needs a law of finite range (the cohesive law: give sigma0 or "
                          "lambda): JKR's top adheres where the gap closes, h(pi) = 0, with no zone at the top held "
                          "by its own traction")
-    if not families_of(problem):
+    fams = families_of(problem)
+    if not fams:
         raise ValueError(f"regime: no top bridge for this problem: its single patch's gap at the top never falls to "
                          f"the range h0 = {h0:.6g} Delta with a local minimum there (no junction h(pi) = h0)")
+    if not any(f.states for f in fams):
+        raise ValueError("regime: the top bridge is not traced for this problem: from each junction (eps = " +
+                         ", ".join(f"{f.junction.eps:.6g}" for f in fams) + f" rad) {end_text(fams[0].end, 0)}")
 
 
 def families_of(problem):
@@ -103,8 +110,7 @@ def trace(sv) -> tuple:
         if not all(keep):                           # c_top turns back: the family's parameter ends there
             cut = int(np.argmin(keep))
             states, end, n_contact = states[:cut], "c_top turns back", min(n_contact, cut)
-        if states:
-            out.append(Family(start, states, end, n_contact))
+        out.append(Family(start, states, end, n_contact))       # none traced: kept, its end says why
     return tuple(out)
 
 
@@ -137,7 +143,7 @@ def table(problem, sv) -> dict:
     cols = {k: np.array(v) for k, v in zip(names, zip(*rows))}
     for k in ("feasible", "stable_load", "stable_grip", "stable_grip_work"):
         cols[k] = cols[k].astype(bool)
-    cols["ends"] = tuple(f.end for f in sv.top_bridges)
+    cols["ends"] = tuple(end_text(f.end, len(f.states)) for f in sv.top_bridges)
     return cols
 
 
