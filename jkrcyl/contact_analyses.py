@@ -8,6 +8,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, List, Optional, Sequence, Tuple
 
 from . import equilibria
+from . import equilibria_bridge as _bridge
 from ._validate import control as _check_control, count, finite_scalar
 from .analysis import branches as _br
 from .analysis import confined as _confined
@@ -33,9 +34,12 @@ class Analyses:
         ----------
         regime : str
             'sub-critical' or 'super-critical' (contact parameter a below or above a_crit, section 4); the
-            cohesive law also 'contactless' (the zone alone).
+            cohesive law also 'contactless' (the zone alone) and 'top-bridge' (a second zone at the top, held by
+            its own traction, from where the single patch's gap at the top falls to the range h0 up to where the
+            top closes or, past the touch, the pin held by two zones touches the top: every state a saddle;
+            the states as traced, a = j + c_top/pi on the family j, ``Curve.ends`` says how each ends).
         n : int
-            Points, uniform in eps* = 2 atan(a/a_crit)/pi, >= 2.
+            Points, uniform in eps* = 2 atan(a/a_crit)/pi, >= 2 (not used for 'top-bridge').
 
         Returns
         -------
@@ -45,7 +49,8 @@ class Analyses:
         Raises
         ------
         ValueError
-            Naming regime (a branch this pair or law does not have) or n.
+            Naming regime (a branch this pair or law does not have: 'top-bridge' for JKR, whose top adheres at
+            h(pi) = 0, or where the gap at the top never falls to the range with a minimum there) or n.
 
         Examples
         --------
@@ -55,7 +60,10 @@ class Analyses:
         >>> round(float(cv.P.min()))                         # N/m: the load-control pull-off
         -1555
         """
-        return _br.curve(self.problem, regime, count("n", n, low=2)).with_units(self.units)
+        n = count("n", n, low=2)
+        if _bridge.check_regime(regime) == _bridge.TOP_BRIDGE:
+            return _bridge.curve(self.problem).with_units(self.units)
+        return _br.curve(self.problem, regime, n).with_units(self.units)
 
     def adherence(self, control: str = "load", confined: bool = True) -> List[Point]:
         """The adherence points: minima of P* (control 'load') or stationary approaches ('grip', 'grip-work').

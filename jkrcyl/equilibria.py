@@ -17,6 +17,7 @@ from numpy.typing import ArrayLike
 
 from ._validate import CONTROLS, count, finite_scalar, theta as _check_theta
 from .analysis import branches as _br
+from . import equilibria_bridge as _bridge
 from .critical import a_crit
 from .equilibria_confined import confined_events, full_contact, two_patch, two_patch_state
 from .equilibria_points import adherence, adherence_of, solve_approach, solve_load, stationary_points
@@ -129,9 +130,11 @@ def curve(M: float, theta: float, regime: str = "sub-critical", n: int = 2000, *
     M, theta, gb, alpha_ratio, s0
         The problem (:func:`problem`).
     regime : str
-        'sub-critical', 'super-critical' (a below, above a_crit); cohesive: 'sub-critical', 'contactless'.
+        'sub-critical', 'super-critical' (a below, above a_crit); cohesive: 'sub-critical', 'contactless',
+        'top-bridge' (a zone at the top held by its own traction: jkrcyl.equilibria_bridge.curve, as traced).
     n : int
-        Points uniform in eps* = 2 atan(a/a_crit)/pi (over 0 < a < 3 where a_crit = inf, Fig. 7), >= 2.
+        Points uniform in eps* = 2 atan(a/a_crit)/pi (over 0 < a < 3 where a_crit = inf, Fig. 7), >= 2 (not used
+        for 'top-bridge').
     a : array_like, optional
         The contact parameters on the branch instead of the uniform grid.
 
@@ -143,7 +146,8 @@ def curve(M: float, theta: float, regime: str = "sub-critical", n: int = 2000, *
     Raises
     ------
     ValueError
-        Naming M, theta, gb, alpha_ratio, s0, regime or n outside its range.
+        Naming M, theta, gb, alpha_ratio, s0, regime or n outside its range; naming regime for 'top-bridge'
+        where there is none (JKR: its top adheres at h(pi) = 0).
 
     Examples
     --------
@@ -152,6 +156,9 @@ def curve(M: float, theta: float, regime: str = "sub-critical", n: int = 2000, *
     ([-0.1569, -0.2507, -0.2851, -0.2482, 0.1787], [False, False, False, True, True])
     """
     pb = Problem(M, theta, gb, alpha_ratio, _law(s0))
+    if _bridge.check_regime(regime) == _bridge.TOP_BRIDGE:
+        count("n", n, low=2)
+        return _bridge.curve(pb, a)
     return _br.curve(pb, regime, count("n", n, low=2) if a is None else n, a=a)
 
 

@@ -152,3 +152,10 @@ def test_cohesive_as_stated():
     assert weak.h0 / weak.Delta == pytest.approx(2.5, rel=1e-12) and "no adherence force" in weak.pull_off().reason
     f, s = ns["f"], ns["near_md"][1]
     assert f.pressure(s.eps + 1e-3 * (s.extra["c"] - s.eps)) == pytest.approx(-md.sigma0, rel=1e-12)
+    br, bp = ns["br"], ns["bridge_pin"]
+    assert "about -5000 N/m at the junction, -4553 N/m where the top closes (c_top = 0.00111 rad)" in text
+    assert br.P[0] == pytest.approx(-5000, abs=0.5) and br.P[-1] == pytest.approx(-4553, abs=0.5)
+    assert br.c_top[-1] == pytest.approx(0.00111, abs=5e-6) and br.ends[0].startswith("the top closes (h(pi) = 0)")
+    assert not (br.stable_load.any() or br.stable_grip.any() or br.stable_grip_work.any())
+    assert "(eps = 1.605 > eps_crit = 1.481)" in text and br.eps[0] == pytest.approx(1.605, abs=5e-4)
+    assert 2 * math.atan(bp.a_crit) == pytest.approx(1.481, abs=5e-4)

@@ -23,12 +23,15 @@ def run(args):
     out = open(args.output, "w") if args.output else sys.stdout
     try:
         if args.format == "json":
-            json.dump({**pi.meta(), "regime": args.regime,
+            ends = {"ends": list(cv.ends)} if cv.ends is not None else {}
+            json.dump({**pi.meta(), "regime": args.regime, **ends,
                        **{k: [inputs.json_value(x) for x in v] for k, v in table.items()}}, out)
             out.write("\n")
         else:
             out.write(f"# M={inputs.number(pi.M)} theta={inputs.number(pi.theta)} {pi.gb_text} "
                       f"alpha_ratio={inputs.number(pi.alpha_ratio)} regime={args.regime} edge={pi.law_text}\n")
+            if cv.ends is not None:
+                out.write("".join(f"# family {j}: {end}\n" for j, end in enumerate(cv.ends)))
             out.write(inputs.header(table, inputs.PHYSICAL_UNITS) + "\n")
             for row in zip(*table.values()):
                 out.write(",".join(inputs.number(x) for x in row) + "\n")
@@ -44,8 +47,10 @@ def register(sub):
                                    " (feasible, stable_* as true/false; with physical inputs also P [N/m], "
                                    "delta, delta_work [m]). The first line names the problem, with the gb used.")
     inputs.add_problem(c)
-    c.add_argument("--regime", choices=eq.REGIMES + ("contactless",), default="sub-critical",
-                   help="branch (default sub-critical; contactless: the cohesive law's zone-only pin)")
+    c.add_argument("--regime", choices=eq.REGIMES + ("contactless", "top-bridge"), default="sub-critical",
+                   help="branch (default sub-critical; contactless: the cohesive law's zone-only pin; top-bridge: "
+                        "its zone at the top held by its own traction, as traced, the families' ends on a comment "
+                        "line)")
     c.add_argument("--n", type=int, default=200, help="number of points (default 200)")
     c.add_argument("--format", choices=("csv", "json"), default="csv", help="output format (default csv)")
     c.add_argument("--output", "-o", default=None, help="file to write (default: stdout)")

@@ -25,12 +25,10 @@ states whose zone ends are held (grad 2 s0 (h(c_i) - h0)), a minimum where G_ij 
 quantity is positive definite.  The total potential: jkrcyl.numerics.cohesive_branch.potential (both zones).
 At the top's closing the family meets the law's two-arc states (jkrcyl.numerics.cohesive_two.solve as the top arc
 eps_top -> 0, as eps_top^2); where the contact vanishes first (lambda 20 above) it meets the states without
-contact held by zones at the bottom and top (jkrcyl.numerics.cohesive_zones.contactless_states) where they touch.
+contact held by zones at the bottom and top where they touch (traced on: cohesive_contactless.two_zone_trace).
 
-For the walker (jkrcyl.analysis.landing, not wired here): the single patch ends at the junction, h(pi) = h0, not
-where h(pi) = 0; there it meets the bridge, a saddle, so the junction is a fold of the combined branch and a walk
-on a stable single patch jumps there, at the held value, onto whatever is stable (the law's two patches).  The
-bridge is never walked: it is the barrier, vanishing at the junction.
+The single patch ends at the junction, h(pi) = h0, a fold of the combined branch (the bridge, a saddle, is the
+barrier): a walk jumps there (jkrcyl.analysis.landing).  The families as a branch: jkrcyl.model.cohesive_bridge.
 """
 import math
 from collections import namedtuple
@@ -47,8 +45,13 @@ CT_MAX_POINTS = 400
 RATIO_MIN = 1e-4          # trace: the step in c_top refined (square roots of the ratio) down to this before an end
 EPS_STEP = 1e-7           # bracket search in eps: the first step relative to eps, doubled
 EPS_XTOL = 1e-15          # the eps root to this relative tolerance
+SUPER_TOP = 0.05          # the super-critical side: contacts up to pi - SUPER_TOP (as its single patch)
 TOUCH = 1e-2              # the trace follows eps down to this times the law's smallest traced contact (the touch end)
 HOLD_STEP = 1e-4          # zone_matrix: central differences, relative to each zone length
+SLOPE_STEP = 1e-3         # slopes: central differences relative to c_top and eps (the states' ~1e-12 noise over
+SLOPE_STEP_EPS = 1e-5     # the step against its truncation, which is large in eps past the receding limit: 1e-5
+                          # relative at c_top 1e-9 .. 3e-3 on both sides, measured)
+HELD = ("load", "grip", "grip-work")   # the controls of held_state
 
 TopZoneBranch = namedtuple("TopZoneBranch", ["junction", "states", "end", "onset"])
 TopZoneBranch.__doc__ = """A traced top-zone family (jkrcyl.numerics.cohesive.CohesiveState each, zones 'bottom+top').
@@ -56,7 +59,8 @@ TopZoneBranch.__doc__ = """A traced top-zone family (jkrcyl.numerics.cohesive.Co
 junction: the single-patch state where h(pi) = h0 (c_top = 0); states: the family in increasing c_top; end: why
 the trace ended -- 'top closes' (h(pi) reaches 0: onset is that state, the top contact's onset), 'touch' (eps
 below 0.1 of the law's smallest traced contact: the family goes on without contact, the states of
-jkrcyl.numerics.cohesive_zones.contactless_states), 'receding limit', 'zones meet' (c + c_top -> pi), 'no root'
+jkrcyl.numerics.cohesive_zones.contactless_states), 'receding limit' (the pole eps_crit, from either side), 'near full
+contact' (a super-critical family at eps = pi - SUPER_TOP), 'zones meet' (c + c_top -> pi), 'no root'
 (no eps root next to the last state: a fold in c_top) or 'points' (CT_MAX_POINTS states)."""
 
 
@@ -82,15 +86,15 @@ def _top_gap(st):
     return st.fields.gap(math.pi - st.c_top)[0] - st.h0_over_Delta
 
 
-def _eps_root(law, c_top, eps0, d_near):
+def _eps_root(law, c_top, eps0, d_near, step=EPS_STEP):
     """The state with the top zone c_top whose eps solves h(pi - c_top) = h0 nearest to eps0: a bracket grown
-    geometrically on both sides of eps0 (the family can turn back in eps), then Brent (to EPS_XTOL relative);
-    None when none is found within a factor e^2."""
-    memo = {}
+    geometrically (from the relative step ``step``, doubled) on both sides of eps0 (the family can turn back in
+    eps), then Brent (to EPS_XTOL relative); None when none is found within a factor e^2."""
+    memo, (lo, hi) = {}, domain(law, eps0)
 
     def f(eps):
         if eps not in memo:
-            st = fixed_state(law, eps, c_top, d_near) if law.eps_lo * TOUCH < eps < law.eps_hi else None
+            st = fixed_state(law, eps, c_top, d_near) if lo < eps < hi else None
             memo[eps] = (math.nan, None) if st is None else (_top_gap(st), st)
         return memo[eps][0]
 
@@ -99,7 +103,6 @@ def _eps_root(law, c_top, eps0, d_near):
         return None
     if f0 == 0.0:
         return memo[eps0][1]
-    step = EPS_STEP
     while step < 2.0:
         for x in (eps0 * math.exp(-step), eps0 * math.exp(step)):
             fx = f(x)
@@ -174,7 +177,8 @@ def trace(law, start, ct_start=CT_START, ratio=CT_RATIO):
     states, eps, d, step = [], start.eps, start.c - start.eps, ratio
     ct, end, onset = ct_start, "", None
     while len(states) < CT_MAX_POINTS:
-        st = _eps_root(law, ct, _predict(states, ct, eps), d)
+        guess = _predict(states, ct, eps)             # its error: a fraction of the step it predicts
+        st = _eps_root(law, ct, guess, d, max(EPS_STEP, 0.03 * abs(math.log(guess / eps))))
         if st is None:                                # refine the step before calling it an end
             if step - 1 > RATIO_MIN and states:
                 step = math.sqrt(step)
@@ -200,11 +204,25 @@ def _predict(states, ct, eps):
     return guess if 0.5 * b.eps < guess < 2 * b.eps else b.eps
 
 
+def domain(law, eps):
+    """(lo, hi): the contacts the family through eps may reach -- the sub-critical side of the receding limit
+    eps_crit (from TOUCH times the law's smallest traced contact to jkrcyl.numerics.cohesive_branch's eps_hi), or
+    the super-critical side (from eps_crit (1 + EPS_MARGIN) to pi - SUPER_TOP): a root is never bracketed
+    across the pole."""
+    crit = law.eps_hi / (1 - _cb.EPS_MARGIN)           # the receding contact (or above pi - 0.05: none below)
+    if eps < crit:
+        return law.eps_lo * TOUCH, law.eps_hi
+    return crit * (1 + _cb.EPS_MARGIN), math.pi - SUPER_TOP
+
+
 def _end_reason(law, eps, d, ct):
     """Why no state follows the last one (eps, d = c - eps) at the next c_top = ct."""
+    lo, hi = domain(law, eps)
     if eps < 0.1 * law.eps_lo:                     # below the single patch's own touch end: the contact vanishes
         return "touch"
-    if eps > law.eps_hi * (1 - 1e-3):
+    if eps > hi * (1 - 1e-3):
+        return "receding limit" if hi == law.eps_hi else "near full contact"
+    if eps < lo * (1 + 1e-3) and lo > law.eps_hi:
         return "receding limit"
     if eps + d + ct >= math.pi * (1 - 1e-6):
         return "zones meet"
@@ -212,23 +230,46 @@ def _end_reason(law, eps, d, ct):
 
 
 def _onset(law, before, after):
-    """The state of the family between before (h(pi) > 0) and after (h(pi) <= 0) where h(pi) = 0."""
+    """The state of the family between before (h(pi) > 0) and after (h(pi) <= 0) where h(pi) = 0: Brent in c_top,
+    each eps root from the log-linear guess between the two (its bracket from 3 % of their distance in log eps)."""
     memo = {}
+    lo = max(before.c_top, CT_START * 1e-3)         # before solves h(pi - lo) = h0 already: its h(pi) is f(lo)
+    span = math.log(after.eps / before.eps)
+    step = max(EPS_STEP, 0.03 * abs(span))
+
+    def root(ct):
+        guess = before.eps * math.exp(span * math.log(ct / lo) / math.log(after.c_top / lo))
+        return _eps_root(law, ct, guess, before.c - before.eps, step)
 
     def f(ct):
-        st = _eps_root(law, ct, before.eps, before.c - before.eps)
-        memo[ct] = st
+        st = memo[ct] = root(ct)
         return math.nan if st is None else st.h_pi_over_Delta
-    lo = max(before.c_top, CT_START * 1e-3)         # before solves h(pi - lo) = h0 already: its h(pi) is f(lo)
     ct = _roots.brent(lambda x, _: f(x), lo, after.c_top, (), before.h_pi_over_Delta, after.h_pi_over_Delta,
                       1e-13 * after.c_top)
-    return memo.get(ct) or _eps_root(law, ct, before.eps, before.c - before.eps)
+    return memo.get(ct) or root(ct)
 
 
 def state_at(law, c_top, eps_guess, d_guess):
     """The top-zone state with the top zone c_top, solved alone: its eps the root nearest to eps_guess, the bottom
     zone end nearest to eps + d_guess (a check on the traced family)."""
     return _eps_root(law, c_top, eps_guess, d_guess)
+
+
+def slopes(law, st, rel=SLOPE_STEP, rel_eps=SLOPE_STEP_EPS):
+    """d(p, delta/Delta, eps)/dc_top along the family at st, by implicit differentiation of the top zone-end
+    condition F(eps, c_top) = h(pi - c_top) - h0 = 0 (the bottom zone end and k = 0 solved at each): deps/dc_top =
+    -F_ct/F_eps, then dX/dc_top = X_eps deps/dc_top + X_ct (X = p, delta/Delta), the partials by central differences
+    (steps rel_eps times eps, rel times c_top) of states at a fixed contact -- four, where solving states alone
+    costs ~40."""
+    d_near, he, hc = st.c - st.eps, rel_eps * st.eps, rel * st.c_top
+    at = [fixed_state(law, st.eps + he, st.c_top, d_near), fixed_state(law, st.eps - he, st.c_top, d_near),
+          fixed_state(law, st.eps, st.c_top + hc, d_near), fixed_state(law, st.eps, st.c_top - hc, d_near)]
+    if any(a is None for a in at):
+        return math.nan, math.nan, math.nan
+    part = lambda f, i, h: (f(at[i]) - f(at[i + 1])) / (2 * h)
+    deps = -part(_top_gap, 2, hc) / part(_top_gap, 0, he)
+    p_of, dn_of = (lambda s: s.p), (lambda s: s.delta_over_Delta)
+    return (part(p_of, 0, he) * deps + part(p_of, 2, hc), part(dn_of, 0, he) * deps + part(dn_of, 2, hc), deps)
 
 
 # --- energy and stability -------------------------------------------------------------------------------------
@@ -238,12 +279,12 @@ def potential(st):
     return _cb.potential(st)
 
 
-def held_state(law, c, c_top, control, value, eps_guess):
+def held_state(law, c, c_top, control, value, eps_guess, work_shift=0.0):
     """The state with the zone ends c and c_top held, k = 0 at the contact edge and the control's quantity at value
-    ('grip': delta/Delta, 'load': p): a scalar root in eps near eps_guess (bracketed, Brent).  Returns (state,
-    [h(c) - h0, h(pi - c_top) - h0])."""
-    if control not in ("grip", "load"):
-        raise ValueError(f"control must be 'grip' or 'load', got {control!r}")
+    ('grip': delta/Delta, 'load': p, 'grip-work': delta_work/Delta = delta/Delta + work_shift p): a scalar root in
+    eps near eps_guess (bracketed, Brent).  Returns (state, [h(c) - h0, h(pi - c_top) - h0])."""
+    if control not in HELD:
+        raise ValueError(f"control must be one of {', '.join(HELD)}, got {control!r}")
     zones = _co.zones_of(c, c_top)
 
     def pieces(eps):
@@ -251,9 +292,9 @@ def held_state(law, c, c_top, control, value, eps_guess):
         ua = fc.fx[3] + law.s0 * fc.zone_unit(zones)
         if control == "grip":
             dn = value
-        else:
-            p_a = fc.load_width(ua, zones, law.s0)[0]
-            dn = (value - p_a) / (fc.ep @ fc.fx[4])
+        else:                                      # p = p_a + dn q, affine in the approach
+            p_a, q = fc.load_width(ua, zones, law.s0)[0], fc.ep @ fc.fx[4]
+            dn = (value - p_a) / q if control == "load" else (value - work_shift * p_a) / (1 + work_shift * q)
         u = ua + dn * fc.fx[4]
         return fc, dn, u, fc.ek @ u
 
@@ -271,22 +312,39 @@ def held_state(law, c, c_top, control, value, eps_guess):
     return st, st.fields.gap(np.array([c, math.pi - c_top])) - law.h0
 
 
-def zone_matrix(law, st, control):
+def _held_value(st, control, work_shift):
+    return {"grip": st.delta_over_Delta, "load": st.p, "grip-work": st.delta_over_Delta + work_shift * st.p}[control]
+
+
+def zone_matrix(law, st, control, work_shift=0.0):
     """G_ij = d(h(c_i) - h0)/dc_j at the held quantity of control (central differences of zone-end-held states,
     steps HOLD_STEP times each zone length, c - eps and c_top, or the contact eps if smaller: near the touch the
     held contact moves ~ (c step)/eps and vanishes under load a step ~ eps away), unsymmetrised."""
-    value = st.delta_over_Delta if control == "grip" else st.p
+    value = _held_value(st, control, work_shift)
     ends = np.array([st.c, st.c_top])
     steps = HOLD_STEP * np.minimum([st.c - st.eps, st.c_top], st.eps)
     G = np.empty((2, 2))
     for j in range(2):
-        g = [held_state(law, *(ends + sgn * steps[j] * np.eye(2)[j]), control, value, st.eps)[1] for sgn in (1, -1)]
+        g = [held_state(law, *(ends + sgn * steps[j] * np.eye(2)[j]), control, value, st.eps, work_shift)[1]
+             for sgn in (1, -1)]
         G[:, j] = (g[0] - g[1]) / (2 * steps[j])
     return G
 
 
-def stable(law, st, control, G=None):
-    """Whether the top-zone state st is stable under control ('grip' or 'load'): the held energy a minimum, G's
-    symmetric part positive definite."""
-    G = zone_matrix(law, st, control) if G is None else G
+def stable(law, st, control, G=None, work_shift=0.0):
+    """Whether the top-zone state st is stable under control ('grip', 'load' or 'grip-work'): the held energy a
+    minimum, G's symmetric part positive definite."""
+    G = zone_matrix(law, st, control, work_shift) if G is None else G
     return bool(np.all(np.linalg.eigvalsh(0.5 * (G + G.T)) > 0))
+
+
+def flags(law, st, work_shift=0.0):
+    """{control: stable} under 'load', 'grip' and 'grip-work' (work_shift >= 0).  A stiffer control only adds a
+    constraint (or a spring) to the energy's Hessian, so stable under load => under grip-work => under grip; where
+    the top zone grows at a held approach (G_22 < 0 under grip: every state met) all three are False from two held
+    states, else each by :func:`stable`."""
+    step = HOLD_STEP * min(st.c_top, st.eps)
+    g = [held_state(law, st.c, st.c_top + s * step, "grip", st.delta_over_Delta, st.eps)[1][1] for s in (1, -1)]
+    if (g[0] - g[1]) / (2 * step) < 0:
+        return dict.fromkeys(HELD, False)
+    return {ctl: stable(law, st, ctl, work_shift=work_shift) for ctl in HELD}

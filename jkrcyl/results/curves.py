@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, fields as dataclass_fields, replace
-from typing import Dict, Optional
+from typing import Dict, Optional, Tuple
 
 import numpy as np
 
@@ -27,7 +27,7 @@ class Curve:
     M, theta, gb, alpha_ratio : float
         The problem (section 6; gb = (1/G_I)/beta*, alpha_ratio = alpha*/beta*).
     regime : str
-        'sub-critical' or 'super-critical' (the cohesive law: 'sub-critical', 'contactless').
+        'sub-critical' or 'super-critical' (the cohesive law: 'sub-critical', 'contactless', 'top-bridge').
     a, eps, eps_star : ndarray
         a = tan(eps/2); eps [rad]; eps* = 2 atan(a/a_crit)/pi (eps/pi where a_crit = inf).  Cohesive law
         (jkrcyl.model.cohesive): a is the branch parameter (the arclength of the traced branch), eps the contact
@@ -47,6 +47,9 @@ class Curve:
         [N/m], [m], [m] when the curve comes from a Contact (:meth:`with_units`).
     c, c_top : ndarray or None
         The cohesive zone ends [rad]; None for JKR.
+    ends : tuple of str or None
+        'top-bridge' only: how each family ends, in words (jkrcyl.model.cohesive_bridge.ENDS); its parameter is
+        a = j + c_top/pi for the family j = 0, 1, ... (in increasing junction contact).
 
     Examples
     --------
@@ -85,6 +88,7 @@ class Curve:
     alpha_ratio: float = 0.0
     c: Optional[np.ndarray] = None
     c_top: Optional[np.ndarray] = None
+    ends: Optional[Tuple[str, ...]] = None
 
     COLUMNS = ("a", "eps", "eps_star", "P_star", "delta_over_Delta", "delta_work_over_Delta", "h_pi_over_Delta",
                "feasible", "stable_load", "stable_grip", "stable_grip_work")
