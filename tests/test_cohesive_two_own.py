@@ -73,12 +73,13 @@ def test_states_solved_alone_lie_on_the_own_branch(lam5):
         assert abs(s.delta_over_Delta - b.delta_over_Delta[i]) < 1e-9
 
 
-@pytest.mark.parametrize("x, h", [(0.3, 1e-3), (0.02, 1e-4)])
+@pytest.mark.parametrize("x, h", [(0.3, 1e-3), (0.02, 1e-4)])        # near these top arcs
 def test_energy_changes_by_p_d_delta_along_the_own_branch(lam5, x, h):
     """dE/d(delta) by Richardson on states solved alone at the top arc x +- h, +- 2h: p to 1e-8 (kernel scale),
     where the raw quotient is 10 x further off (the check can fail)."""
     fam, b = lam5
-    i = int(np.argmin(np.abs(b.eps_top[: len(b.eps) // 2] - x)))     # the branch's first pass by x
+    i = int(np.argmin(np.abs(b.eps_top[: len(b.eps) // 2] - x)))     # the branch's first pass near x: its state
+    x = float(b.eps_top[i])
     s = fam.at(1, x, float(b.eps[i]), fam.n)
     extrapolated, d1 = two_patch_dE_ddelta(fam, s, x, h)
     assert abs(extrapolated - s.P_star * THETA) < 1e-8 and abs(d1 - s.P_star * THETA) > 10 * abs(
@@ -111,7 +112,7 @@ def _on_own_branch(fam, states, eps_top, eps_near):
             key=lambda i: abs(math.exp((1 - at(i)) * y[i, 0] + at(i) * y[i + 1, 0]) - eps_near))
     t = at(k)
     with cb.one_blas_thread():
-        return own.correct(fam.law, (1 - t) * y[k] + t * y[k + 1], np.eye(4)[1], fam.n)
+        return own.correct(fam.law, (1 - t) * y[k] + t * y[k + 1], np.eye(4)[1], fam.n)[0]
 
 
 @pytest.mark.slow

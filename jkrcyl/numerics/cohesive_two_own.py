@@ -125,12 +125,15 @@ def residual(law, y, n):
     return np.array([k[1], h[0] - law.h0, h[1] - law.h0])
 
 
-def correct(law, y_pred, t, n, tol=1e-11):
+def correct(law, y_pred, t, n, arcs=None, tol=1e-11):
     """The state on the branch where t . (y - y_pred) = 0 (Keller's pseudo-arclength corrector): Newton in y on
-    [residual, t . (y - y_pred)] from y_pred, the Jacobian's arc columns by forward differences (a fixed-arc system
-    each, refined from a neighbour's LU: cohesive_two_branch.BranchLaw), its zone columns at the same arcs
-    (back-substitutions).  A state (cohesive_two.TwoPatchCohesive), or None."""
+    [residual, t . (y - y_pred)] from y_pred.  The Jacobian's zone columns by differences at the same arcs
+    (back-substitutions), its arc columns (a fixed-arc system each, refined from a neighbour's LU:
+    cohesive_two_branch.BranchLaw) by forward differences at the first step -- or from arcs, a neighbour's -- and
+    then secant (Broyden) updates along the iterates: one new system per step.  Returns (state, the arc columns)
+    (state: cohesive_two.TwoPatchCohesive), or None."""
     scale = np.array([max(1.0, law.m), max(1.0, law.h0), max(1.0, law.h0), 1.0])
+    cols = [None if arcs is None else np.array(arcs)]
 
     def f(y):
         r = residual(law, y, n)
@@ -138,20 +141,28 @@ def correct(law, y_pred, t, n, tol=1e-11):
 
     def jacobian(y, r):
         J = np.empty((4, 4))
-        for j in range(4):
+        for j in (range(4) if cols[0] is None else (2, 3)):
             h = 1e-7 if j < 2 else 1e-6
             rj = f(y + h * np.eye(4)[j])
             if rj is None:
                 return None
             J[:, j] = (rj - r) / h
+        if cols[0] is None:
+            cols[0] = J[:3, :2].copy()
+        J[:3, :2], J[3] = cols[0], t
         return J if np.all(np.isfinite(J)) and np.linalg.cond(J) < 1e14 else None
 
+    def secant(y, dy, r, rt, J):
+        a = dy[:2]
+        if a @ a > 0:
+            cols[0] = cols[0] + np.outer(rt[:3] - r[:3] - J[:3] @ dy, a) / (a @ a)
+
     got = _roots.damped_newton(f, np.array(y_pred, dtype=float), jacobian, scale, tol, np.array([0.2, 0.2, 2.0, 2.0]),
-                               _cb.SECANT_STEPS, 6, _cb.RESIDUAL_FLOOR * scale)
+                               _cb.SECANT_STEPS, 6, _cb.RESIDUAL_FLOOR * scale, secant)
     if got is None:
         return None
     eps, eps_top, d_bot, d_top = np.exp(got[0])
-    return _two.state(law, eps, eps_top, eps + d_bot, eps_top + d_top, n)
+    return _two.state(law, eps, eps_top, eps + d_bot, eps_top + d_top, n), cols[0]
 
 
 def trace(law, start, n, direction=None):
@@ -159,7 +170,7 @@ def trace(law, start, n, direction=None):
     tangent in y to leave along (default: the smaller arc grows, from a seed at an axis)."""
     small = int(start.eps_top < start.eps)
     t = np.eye(4)[small] if direction is None else np.asarray(direction, dtype=float)
-    states, h = [start], STEP_FIRST
+    states, h, arcs = [start], STEP_FIRST, None
     while len(states) < MAX_STATES:
         last = states[-1]
         y0 = _y(last)
@@ -174,7 +185,10 @@ def trace(law, start, n, direction=None):
             y, t_c = y0 + step * t, np.eye(4)[i]                          # ... held there
         else:
             t_c = t
-        st = correct(law, y, t_c, n)
+        got = correct(law, y, t_c, n, arcs) if arcs is not None else None
+        if got is None:                                                  # (the neighbour's columns too far)
+            got = correct(law, y, t_c, n)
+        st, arcs = got if got is not None else (None, None)
         if st is None or np.linalg.norm(_y(st) - y) > 2 * step + 1e-12:  # (a jump to another branch)
             if _meeting(last):
                 return states, "zones meet"
