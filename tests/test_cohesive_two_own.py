@@ -148,14 +148,16 @@ def test_the_own_branch_tends_to_jkrs_as_lambda_squared():
 
 
 @pytest.mark.slow
-def test_no_two_patch_state_at_M_half_lambda_20_the_axis_states_fold_in_lambda():
-    """M = 0.5, lambda = 20: JKR's branch has top arcs <= 0.0034, thinner than the 0.0063 zones.  The law's: at
-    lambda 30 two loops (single -> single and its mirror); the axis state continued down from larger lambda folds
-    at lambda 27.6 (Folded), between 27 and 28.3 -- so the loops shrink to nothing there and two_patch() is ()
-    below: physical, not a refusal."""
-    fam = fam_at(0.5, 30.0)
-    loops = own_branches(fam)
+@pytest.mark.parametrize("M, above, below, fold, guess", [(0.5, 30.0, 20.0, "2(7|8)", 1.2366),
+                                                          (0.2, 3.7, 3.0, "3.5", 1.9086)])
+def test_no_two_patch_state_below_the_fold_of_the_axis_states_in_lambda(M, above, below, fold, guess):
+    """M = 0.5, lambda = 20: JKR's branch has top arcs <= 0.0034, thinner than the 0.0063 zones; M = 0.2, lambda = 3:
+    zones ~0.15 rad.  The law's: above (lambda 30, 3.7) two loops (single -> single and its mirror); the axis state
+    continued down from larger lambda folds (Folded) at lambda 27.6 / 3.556 -- so the loops shrink to nothing there
+    and two_patch() is () below (guess: JKR's single end's bottom arc): physical, not a refusal."""
+    loops = own_branches(fam_at(M, above))
     assert sorted(t.ends for t in loops) == [("mirror", "mirror"), ("single", "single")]
-    with pytest.raises(own.Folded, match="below lambda = 2(7|8)"):
-        own.seed(fam_at(0.5, 20.0).law, 1, 1.2366, 64)
-    assert fam_at(0.5, 20.0).branches() == ()
+    assert max(max(s.eps_top for s in t.states) for t in loops if t.ends[0] == "single") < 0.05
+    with pytest.raises(own.Folded, match=f"below lambda = {fold}"):
+        own.seed(fam_at(M, below).law, 1, guess, 64)
+    assert fam_at(M, below).branches() == ()
