@@ -21,6 +21,7 @@ import numpy as np
 import pytest
 
 import jkrcyl
+import jkrcyl.numerics.arcs
 from jkrcyl.analysis import tracing
 from jkrcyl.analysis.two_patch_family import family
 from jkrcyl.model import two_patch as tp
@@ -51,6 +52,22 @@ def lam5():
     fam = fam_at(0.2, 5.0)
     b, = fam.branches()
     return fam, b
+
+
+def test_the_seed_is_the_top_bridges_closing_state():
+    """M 0.1, vartheta 10, gb 1/2.8, lambda 50 (tests/test_cohesive_top_zone.py's case): the top bridge's two
+    families close (h(pi) = 0) at eps 0.0048 and 1.12 (jkrcyl.numerics.cohesive_top_zone: one contact, a zone at
+    the top, another solver); the own route's seed there (two arcs, the top one held) tends to it as the top arc
+    shrinks -- delta/Delta off by 2.3e-3 / 1.6e-3 at 1e-4, 3.8e-5 / 2.7e-5 at 1e-5 (measured): the law's two-patch
+    family starts at the top's closing."""
+    from jkrcyl.numerics import cohesive_top_zone as tz
+    m, s0 = 1.0, EQ.zone_strength(50.0, 0.1, 10.0)
+    law = cb.BranchLaw(m, s0, jkrcyl.numerics.arcs.Kernel(10.0, GB), layered=True)
+    onsets = [f.onset for f in tz.families(m, s0, 10.0, GB, ratio=3.0)]
+    assert len(onsets) == 2
+    for o in onsets:
+        off = [abs(own.seed(law, 1, o.eps, 71, arc=a).delta_over_Delta - o.delta_over_Delta) for a in (1e-4, 1e-5)]
+        assert off[1] < 1e-4 and off[1] < off[0] / 30
 
 
 def test_at_lambda_5_the_law_holds_along_the_own_branch(lam5):

@@ -1,5 +1,7 @@
 """The Maugis-Dugdale law's two-patch family through the model core: the branches traced
-(jkrcyl.numerics.cohesive_two_branch: along JKR's, each state warm-started from its neighbour), a state at a given
+(jkrcyl.numerics.cohesive_two_branch: along JKR's, each state warm-started from its neighbour, where the zones are
+small and it reaches JKR's ends; elsewhere the law's own, jkrcyl.numerics.cohesive_two_own: seeded at the top's
+closing and continued by its own arclength -- none where its seeds fold in lambda), a state at a given
 half-angle (cold, from JKR's state: jkrcyl.numerics.cohesive_two.solve's guess), the states at a load or an
 approach, and the landing of a path on the branch (:meth:`CohesiveTwoPatch.land`).
 
@@ -9,7 +11,8 @@ contact edges have k = 0), gap_min the smallest gap outside both arcs, and TwoPa
 zones' interface energy, so that for both laws the total potential is energy - 2 M^2 vartheta (eps + eps_top)
 (units 4 pi Delta^2 vartheta/beta*).  Branch ends: JKR's labels where reached ('single': the top arc shrinks to
 END_ARC, its zone staying as a bridge; 'mirror' the same upside down), 'unresolved' where the states stop short
-(e.g. the zones meet near full contact at small lambda).
+(e.g. the zones meet near full contact at small lambda); the own route's ends: 'single', 'mirror' (back at an
+axis: a loop at lambda just above its fold), 'zones meet' or 'unresolved'.
 
 alpha* = 0 only (the two-arc cohesive collocation); elsewhere a ValueError naming alpha_ratio.
 """

@@ -66,12 +66,12 @@ def _seed_zones(law, small):
     return d
 
 
-def seed(law, small, guess, n, d0=None):
-    """The two-arc state with the arc ``small`` (1: top, 0: bottom) at SEED_ARC, the other from guess (e.g. JKR's
+def seed(law, small, guess, n, d0=None, arc=SEED_ARC):
+    """The two-arc state with the arc ``small`` (1: top, 0: bottom) at arc, the other from guess (e.g. JKR's
     branch end at that axis) -- directly, or by continuation in lambda (module docstring).  Raises NoSeed."""
     d0 = _seed_zones(law, small) if d0 is None else np.asarray(d0, dtype=float)
     try:
-        return _cb.solve_at(law, small, SEED_ARC, guess, d0, n)[0]
+        return _cb.solve_at(law, small, arc, guess, d0, n)[0]
     except _cb.NotFound:
         pass
     lam = 4 * law.s0 / law.m ** (2 / 3)
@@ -80,15 +80,15 @@ def seed(law, small, guess, n, d0=None):
         if 4 * big.s0 / big.m ** (2 / 3) > _cb._layer.LAMBDA_MAX:
             break
         try:
-            st = _cb.solve_at(big, small, SEED_ARC, guess, _seed_zones(big, small), n)[0]
+            st = _cb.solve_at(big, small, arc, guess, _seed_zones(big, small), n)[0]
         except _cb.NotFound:
             continue
-        return _down_in_lambda(law, st, small, big.s0, n)
-    raise NoSeed(f"no two-patch state of the law with its {('bottom', 'top')[small]} arc at {SEED_ARC:g} near "
+        return _down_in_lambda(law, st, small, big.s0, n, arc)
+    raise NoSeed(f"no two-patch state of the law with its {('bottom', 'top')[small]} arc at {arc:g} near "
                  f"{guess:g} (lambda = {lam:.3g})")
 
 
-def _down_in_lambda(law, st, small, s0, n):
+def _down_in_lambda(law, st, small, s0, n, arc):
     """From the state st of the law at zone strength s0 to law's, s0 stepped down geometrically (the ratio
     halved in log on a failure); raises NoSeed where the ratio falls below 1 + 1e-3 (a fold in lambda: the
     state does not continue to law's lambda)."""
@@ -99,7 +99,7 @@ def _down_in_lambda(law, st, small, s0, n):
         scale = _co.dugdale_zone(law.m, s) / _co.dugdale_zone(law.m, s0)
         d0 = scale * np.array([st.c - st.eps, st.c_top - st.eps_top])
         try:
-            st = _cb.solve_at(here, small, SEED_ARC, (st.eps, st.eps_top)[1 - small], d0, n)[0]
+            st = _cb.solve_at(here, small, arc, (st.eps, st.eps_top)[1 - small], d0, n)[0]
             s0, ratio = s, min(ratio ** 1.5, LAMBDA_RATIO)
         except _cb.NotFound:
             ratio = math.sqrt(ratio)
