@@ -17,7 +17,9 @@ Measured (2 shared cores, CPU s of the whole branch, 16-17 states with their fla
 before the end layers (8 sqrt(eps_max/d) nodes per arc: 112 / 225 / 564; 216 assemblies of 0.09 s at 50):
 1.3 / 2.6 / 29 s CPU (1.0 / 2.2 / 24.6 s wall on a quiet machine; lambda >= ~70 refused).  With the zones' end
 layers subtracted (jkrcyl.numerics.cohesive_two_layer: 64 nodes per arc at any lambda): see the printed table --
-~1 s per branch for every lambda from 10 to 1000.
+~1 s per branch for every lambda from 10 to 1000.  Last, the law's own branch (jkrcyl.numerics.cohesive_two_own,
+seeded at the top's closing) where JKR's is no scaffold: M = 0.2 at lambda 3 / 5 / 8 and M = 0.5 at 20 / 30
+(no goal; ~45 states per branch, ~3-4 s CPU).
 """
 import argparse
 import math
@@ -85,6 +87,16 @@ def main(argv=None):
         print(f"lambda {lam:5g}: two_patch (whole branch) {wall:6.2f} s wall, {cpu:6.2f} s CPU, {k} states, ends "
               f"{b.ends}, {fam.n} nodes per arc, {fam.law.factorisations} LUs; {wall / k:.3f} s per state = "
               f"{wall / k / cold.get(lam, math.nan):.2f} x the cold state; goal <= 5 s: {verdict}")
+
+    # the law's own branch (jkrcyl.numerics.cohesive_two_own) where JKR's is no scaffold: thick zones, thin arcs
+    for m_, lam in ((0.2, 5.0),) if args.quick else ((0.2, 3.0), (0.2, 5.0), (0.2, 8.0), (0.5, 20.0), (0.5, 30.0)):
+        pb = jkrcyl.equilibria.problem(m_, THETA, GB, s0=zone_strength(lam, m_ * THETA))
+        tracing.traced(jkrcyl.equilibria.problem(m_, THETA, GB))
+        w, c = time.perf_counter(), time.process_time()
+        bs = family(pb).branches()
+        wall, cpu = time.perf_counter() - w, time.process_time() - c
+        print(f"M {m_}, lambda {lam:4g}: the law's own route {wall:6.2f} s wall, {cpu:6.2f} s CPU: "
+              f"{[(b.ends, len(b.eps)) for b in bs] or 'no two-patch state (its axis states fold in lambda)'}")
 
 
 if __name__ == "__main__":

@@ -42,7 +42,7 @@ def test_solve_cycle_curve_adherence_take_the_law():
     (["pull-off", *PHYS, "--lambda", "0"], "lambda"), (["pull-off", *PHYS, "--lambda", "1", "--sigma0", "1e5"],
                                                        "sigma0"),
     (["curve", "--M", "0.3", "--sigma0", "1e5"], "sigma0"), (["curve", "--M", "0", "--lambda", "1"], "lambda"),
-    (["two-patch", "--M", "0.3", "--lambda", "1"], "lambda"),
+    (["two-patch", "--M", "0.3", "--lambda", "2000"], "sigma0"),     # (lambda 1: no two-patch state, physical)
     (["pull-off", "--E", "2.6e9", "--nu", "0.3", "--E-I", "2.6e9", "--nu-I", "0.3", "--R", "0.01", "--Delta",
       "1e-6", "--w", "0", "--lambda", "1"], "lambda")])
 def test_bad_input_one_line_exit_2(args, name):

@@ -107,10 +107,12 @@ def test_top_closing_lands_on_the_laws_two_patch_branch_as_jkr():
 
 
 def test_outside_the_branch_range_the_landing_is_refused_naming_sigma0():
-    """At lambda = 3 the law's two-patch branches are refused (zones not small: cohesive_two_branch.branch_nodes):
-    the refusal names sigma0 (what a cycle's note appends), and a walk whose top closes lands nowhere."""
-    pb = Problem(M, THETA, GB, 0.0, edge_of_strength(jkrcyl.equilibria.zone_strength(3.0, M, THETA)))
-    assert landing.two_patch_refusal(pb).startswith("sigma0: the two-patch branches")
+    """At lambda = 2000 the law's two-patch branches are refused (zones too thin for the two-arc solver's
+    rounding: cohesive_two_layer.check_lambda; at low lambda the law's own branch is traced,
+    tests/test_cohesive_two_own.py): the refusal names sigma0 (what a cycle's note appends), and a walk whose top
+    closes lands nowhere."""
+    pb = Problem(M, THETA, GB, 0.0, edge_of_strength(jkrcyl.equilibria.zone_strength(2000.0, M, THETA)))
+    assert landing.two_patch_refusal(pb).startswith("sigma0 is too large for the two-arc")
     assert landing.two_patch_refusal(Problem(M, THETA, GB)) == ""
     un = Units.normalised(pb, K_edge=1.0)
     s = forward.single_patch_states(pb, un, "sub-critical", [8.0], "grip")[0]
@@ -136,7 +138,7 @@ def test_confined_classes_equal_jkrs_at_lambda_50(M):
 
 
 def test_confined_events_refused_naming_sigma0_where_the_branches_are_not_followed():
-    with pytest.raises(ValueError, match="^sigma0"):
-        EQ.confined_events(M, THETA, gb=GB, s0=EQ.zone_strength(3.0, M, THETA))
+    with pytest.raises(ValueError, match="^sigma0"):                 # beyond lambda 1000 (low lambda: the own branch)
+        EQ.confined_events(M, THETA, gb=GB, s0=EQ.zone_strength(2000.0, M, THETA))
     with pytest.raises(ValueError, match="^alpha_ratio"):
         EQ.confined_events(0.2, 1.0, gb=GB, alpha_ratio=0.1, s0=EQ.zone_strength(20.0, 0.2, 1.0))

@@ -40,13 +40,19 @@ def test_a_law_naming_an_unknown_family_gets_a_value_error_naming_its_parameter(
 
 
 def test_a_jkr_branch_the_law_cannot_follow_is_said_not_dropped(monkeypatch):
-    """A branch of JKR's whose law's states are not found (the trace returns none) raises, naming sigma0: the
-    law's two_patch() once returned () silently where JKR has a branch (M 0.67, lambda 20, before the end layers)."""
+    """A branch of JKR's whose law's states are not found (neither the scaffold's trace nor the law's own seeds
+    find one) raises, naming sigma0: the law's two_patch() once returned () silently where JKR has a branch
+    (M 0.67, lambda 20, before the end layers).  (Where the own seeds fold in lambda, () is physical:
+    tests/test_cohesive_two_own.py.)"""
     from jkrcyl.analysis import cohesive_two_patch
-    from jkrcyl.numerics import cohesive_two_branch
+    from jkrcyl.numerics import cohesive_two_branch, cohesive_two_own
     from jkrcyl.numerics.cohesive_scales import zone_strength
     pb = Problem(0.3, 1.0, 1 / 2.8, 0.0, DugdaleEdge(s0=zone_strength(50.0, 0.3)))
     monkeypatch.setattr(cohesive_two_branch, "trace",
                         lambda *a: cohesive_two_branch.Traced((), (), ("unresolved", "unresolved")))
+
+    def no_seed(*a):
+        raise cohesive_two_own.NoSeed("none")
+    monkeypatch.setattr(cohesive_two_own, "branches", no_seed)
     with pytest.raises(ValueError, match=r"^sigma0: JKR's two-patch branch .* not followed under the law"):
         cohesive_two_patch._branches(family(pb), 12)

@@ -1,5 +1,7 @@
 """The Maugis-Dugdale law's two-patch family through the model core: the branches traced
-(jkrcyl.numerics.cohesive_two_branch: along JKR's, each state warm-started from its neighbour), a state at a given
+(jkrcyl.numerics.cohesive_two_branch: along JKR's, each state warm-started from its neighbour, where the zones are
+small and it reaches JKR's ends; elsewhere the law's own, jkrcyl.numerics.cohesive_two_own: seeded at the top's
+closing and continued by its own arclength -- none where its seeds fold in lambda), a state at a given
 half-angle (cold, from JKR's state: jkrcyl.numerics.cohesive_two.solve's guess), the states at a load or an
 approach, and the landing of a path on the branch (:meth:`CohesiveTwoPatch.land`).
 
@@ -9,7 +11,8 @@ contact edges have k = 0), gap_min the smallest gap outside both arcs, and TwoPa
 zones' interface energy, so that for both laws the total potential is energy - 2 M^2 vartheta (eps + eps_top)
 (units 4 pi Delta^2 vartheta/beta*).  Branch ends: JKR's labels where reached ('single': the top arc shrinks to
 END_ARC, its zone staying as a bridge; 'mirror' the same upside down), 'unresolved' where the states stop short
-(e.g. the zones meet near full contact at small lambda).
+(e.g. the zones meet near full contact at small lambda); the own route's ends: 'single', 'mirror' (back at an
+axis: a loop at lambda just above its fold), 'zones meet' or 'unresolved'.
 
 alpha* = 0 only (the two-arc cohesive collocation); elsewhere a ValueError naming alpha_ratio.
 """
@@ -24,6 +27,8 @@ from .._validate import count
 from ..numerics import cohesive as _co
 from ..numerics import cohesive_two as _ct
 from ..numerics import cohesive_two_branch as _cb
+from ..numerics import cohesive_two_own as _own
+from ..numerics import cohesive_two_stability as _st
 from ..numerics import roots as _roots
 from ..model import two_patch as _two
 from ..model.problem import Problem
@@ -62,7 +67,7 @@ class CohesiveTwoPatch:
     def flags(self, s: TwoPatchState):
         """(stable_load, stable_grip, stable_grip_work) of a state (cohesive_two_branch.flags)."""
         with _cb.one_blas_thread():
-            return _cb.flags(_cb.jacobian(self.law, s._lin), self.pb.work_shift)
+            return _st.flags(_st.jacobian(self.law, s._lin), self.pb.work_shift)
 
     def potential(self, s: TwoPatchState) -> float:
         """The total potential in the kernel scale (units 4 pi Delta^2/beta*)."""
@@ -74,7 +79,8 @@ class CohesiveTwoPatch:
         discretisation: a state solved alone equals the traced one); ValueError naming sigma0 (too thin zones,
         or too thick: cohesive_two_branch.branch_nodes)."""
         points = [p for p, _ in _tr.traced(self.jkr)]
-        return _cb.branch_nodes(np.vstack(points) if points else np.full((1, 2), 0.1), self.law.m, self.law.s0)
+        return _cb.branch_nodes(np.vstack(points) if points else np.full((1, 2), 0.1), self.law.m, self.law.s0,
+                                scaffold=False)
 
     def state(self, eps=None, eps_top=None, guess=None) -> TwoPatchState:
         """The equilibrium with one half-angle given, the other from guess: Newton from JKR's state there (guess
@@ -110,7 +116,7 @@ class CohesiveTwoPatch:
     def curve(self, states, jacobians, ends) -> TwoPatchCurve:
         pb = self.pb
         res = [self.result(s) for s in states]
-        fl = np.array([_cb.flags(J, pb.work_shift) for J in jacobians], dtype=bool).reshape(-1, 3)
+        fl = np.array([_st.flags(J, pb.work_shift) for J in jacobians], dtype=bool).reshape(-1, 3)
         arr = lambda k: np.array([getattr(s, k) for s in res])
         sv = solver(self.jkr)
         eps, et = arr("eps"), arr("eps_top")
@@ -248,12 +254,29 @@ def _branches(fam: CohesiveTwoPatch, n: int) -> tuple:
     out = []
     for b in _tr.branches(fam.jkr, n):
         points = np.column_stack([b.eps, b.eps_top])
-        with _cb.one_blas_thread():
-            t = _cb.trace(fam.law, points, b.ends, fam.n)
-        if not t.states:            # never a silent drop: JKR's branch is there, the law's was not found from it
-            arc = float(np.max(np.min(points, axis=1)))
-            raise ValueError(f"sigma0: JKR's two-patch branch (its smaller arc at most {arc:.3g} rad) is not "
-                             f"followed under the law: no state found from it (Dugdale zones ~"
-                             f"{_co.dugdale_zone(fam.law.m, fam.law.s0):.3g} rad)")
-        out.append(fam.curve(t.states, t.jacobians, t.ends))
+        out += [fam.curve(t.states, t.jacobians, t.ends) for t in _traced(fam, points, b.ends)]
     return tuple(out)
+
+
+def _traced(fam: CohesiveTwoPatch, points, ends) -> list:
+    """The law's branches near JKR's (points, ends): along JKR's as a scaffold where the zones are small
+    (cohesive_two_branch.trace: cheaper, ~16 states) and it reaches JKR's ends; else the law's own, seeded at the
+    axis ends (cohesive_two_own.branches) -- [] where its seeds fold in lambda (the law has no two-patch states
+    there: M = 0.5, lambda = 20; M = 0.2, lambda = 3).  ValueError naming sigma0 where neither finds a state."""
+    law = fam.law
+    scaffold = None
+    with _cb.one_blas_thread():
+        if _cb.follows_scaffold(law):
+            scaffold = _cb.trace(law, points, ends, fam.n)
+            if scaffold.states and "unresolved" not in scaffold.ends:
+                return [scaffold]
+        try:
+            return _own.branches(law, points, ends, fam.n)
+        except _own.NoSeed:
+            if scaffold is not None and scaffold.states:
+                return [scaffold]
+    # never a silent drop: JKR's branch is there, the law's was not found from it
+    arc = float(np.max(np.min(points, axis=1)))
+    raise ValueError(f"sigma0: JKR's two-patch branch (its smaller arc at most {arc:.3g} rad) is not followed "
+                     f"under the law: no state found from it (Dugdale zones ~"
+                     f"{_co.dugdale_zone(law.m, law.s0):.3g} rad)")

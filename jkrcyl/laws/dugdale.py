@@ -6,9 +6,10 @@ Dimensional: :class:`Dugdale` (sigma0 [Pa]).  Normalised: :class:`DugdaleEdge`, 
 finite stress in equilibrium (edge coefficient 0, Maugis).  Its single-patch solver is jkrcyl.model.cohesive (the
 contact branches with their zone on either side of the receding limit, traced; the zone-only pin); full contact
 is JKR's bonded pin where the tension stays below s0 (:meth:`DugdaleEdge.bond_strength`,
-jkrcyl.model.full_contact.holds); its two-patch branches are traced from JKR's where the zones are small
-(jkrcyl.analysis.cohesive_two_patch, alpha* = 0), and where the top closes the walker lands on them
-(jkrcyl.analysis.landing) and confined_events classifies them as JKR's (outside that range a ValueError names
+jkrcyl.model.full_contact.holds); its two-patch branches are traced from JKR's where the zones are small, and as the
+law's own (seeded at the top's closing) elsewhere -- none where those states fold in lambda
+(jkrcyl.analysis.cohesive_two_patch, alpha* = 0) -- and where the top closes the walker lands on them
+(jkrcyl.analysis.landing) and confined_events classifies them as JKR's (beyond lambda = 1000 a ValueError names
 sigma0).
 """
 from __future__ import annotations

@@ -23,13 +23,7 @@ JKR's near-touching arcs, at least cohesive_two.NODES_LAYER_TWO, whatever the zo
 along the whole branch, lambda = 20 / 50: 48 nodes per arc are 1.4e-8 / 1.7e-7 off 128 in P*, 64 nodes 2e-11 /
 3e-10 (without the layers the zones needed 8 sqrt(eps_max/d): 564 per arc at lambda = 50, 1.5 s per cold state).
 
-Stability under each control from one Jacobian (:func:`flags`): the zone-end-held energy of
-jkrcyl.numerics.cohesive_two_stability has the Hessian 2 s0 G, G = dg/dc at k = 0 and the held quantity
-(g_i = h(c_i) - h0).  The implicit function theorem gives G = g_c - [g_e g_d] A^-1 [k_c; q_c], A = [[k_e, k_d],
-[q_e, q_d]], with q = a delta/Delta + b p the held quantity (load: (0, 1), grip: (1, 0), grip-work: (1, c_work)),
-e the half-angles, d = delta/Delta; the derivatives are central differences of fixed-arc states (four more
-systems, refined from the state's LU; delta and the zone ends: back-substitutions).  Tests: G equals
-cohesive_two_stability.zone_matrix's (held states solved by Newton, an independent route).
+Stability under each control from one Jacobian: jkrcyl.numerics.cohesive_two_stability.flags.
 """
 import math
 from collections import namedtuple
@@ -44,8 +38,6 @@ from . import cohesive_two_stability as _stab
 from . import roots as _roots
 
 ZONE_MAX = 0.02           # the largest Dugdale zone estimate followed [rad] (lambda >~ 8 at M = 0.2)
-ARC_STEP = 1e-6           # central differences of the half-angles in flags, relative
-ZONE_STEP = 1e-5          # ... of the zone ends and the approach, relative to the zone length
 SECANT_STEPS = 12         # Newton steps at most (a warm start takes 2-4)
 RESIDUAL_FLOOR = 1e-8     # Newton ends where its steps stop reducing residuals below this (the rounding floor,
                           # above tol at thin zones: k_top ~2e-11, h(c) - h0 ~3e-12 at lambda = 1000 -- terms of
@@ -139,13 +131,19 @@ def require_alpha_zero(ar):
                          f"states (the two-arc cohesive solver), got {ar!r}")
 
 
-def branch_nodes(points, m, s0, ar=0.0):
-    """Nodes per arc for the states near the scaffold points (k, 2), with the end layers subtracted (module
-    docstring: a count independent of lambda); ValueError naming sigma0 where the zones are not small
-    (d > ZONE_MAX: low lambda, where JKR's branch is no guide to the law's) or too thin (lambda beyond
-    cohesive_two_layer.LAMBDA_MAX)."""
+def follows_scaffold(law):
+    """Whether the law's zones are small enough (Dugdale's estimate <= ZONE_MAX) for :func:`trace` along JKR's."""
+    return _co.dugdale_zone(law.m, law.s0) <= ZONE_MAX
+
+
+def branch_nodes(points, m, s0, ar=0.0, scaffold=True):
+    """Nodes per arc for the states near the points (k, 2), with the end layers subtracted (module docstring: a
+    count independent of lambda); ValueError naming sigma0 where the zones are too thin (lambda beyond
+    cohesive_two_layer.LAMBDA_MAX) or, for the scaffold (JKR's branch followed), not small (d > ZONE_MAX: low
+    lambda, where JKR's branch is no guide to the law's; the law's own branch, jkrcyl.numerics.cohesive_two_own,
+    is traced there)."""
     d = _co.dugdale_zone(m, s0)
-    if d > ZONE_MAX:
+    if scaffold and d > ZONE_MAX:
         raise ValueError(f"sigma0: the two-patch branches are followed from JKR's where the Dugdale zones are "
                          f"small (~{d:.3g} rad > {ZONE_MAX} here: the transition parameter lambda = "
                          f"{4 * s0 / m ** (2 / 3):.3g} is too small for it)")
@@ -190,7 +188,7 @@ def solve_at(law, held, value, guess, d0, n, jx=None, tol=1e-11):
                 return None
             col[0] = (rj - r) / h
         J[:, 0] = col[0]
-        return J
+        return J if np.all(np.isfinite(J)) and np.linalg.cond(J) < 1e14 else None    # (singular: no state here)
 
     def secant(z, dz, r, rt, J):
         if dz[0] != 0:
@@ -204,52 +202,6 @@ def solve_at(law, held, value, guess, d0, n, jx=None, tol=1e-11):
     d = np.exp(z[1:])
     eps, eps_top = (z[0], value) if held == 1 else (value, z[0])
     return _two.state(law, eps, eps_top, eps + d[0], eps_top + d[1], n), jx
-
-
-def pieces(law, x, n):
-    """[k_bot, k_top, g_bot, g_top, p] of the fixed-arc state at x = (eps, eps_top, c, c_top, delta/Delta)
-    (g = h(c) - h0, h(pi - c_top) - h0): the functions of :func:`flags`."""
-    eps, eps_top, c, c_top, dn = x
-    fa = law.arcs(eps, eps_top, n)
-    zones = _co.zones_of(c, c_top)
-    u = fa.u0 + dn * fa.u1 + law.s0 * fa.zone_unit(zones)
-    g = fa.gap(np.array([c, math.pi - c_top]), dn, u, zones, law.s0) - law.h0
-    p = fa.sys.moments(u, np.cos) + law.s0 * fa.zone_totals(zones)[0]
-    return np.concatenate([fa.sys.edge(u), g, [p]])
-
-
-def jacobian(law, st):
-    """d pieces/dx at the state st (5 x 5, central differences: the half-angles' take two fixed-arc systems each;
-    forward differences would not do: G's first entry is a difference of larger terms, 0.6 % off at a step
-    1e-6 -- measured at M = 0.2, lambda = 20 against cohesive_two_stability's held states)."""
-    x = np.array([st.eps, st.eps_top, st.c, st.c_top, st.delta_over_Delta])
-    zone = min(st.c - st.eps, st.c_top - st.eps_top)
-    steps = np.array([ARC_STEP * st.eps, ARC_STEP * st.eps_top, ZONE_STEP * zone, ZONE_STEP * zone, 1e-3])
-    J = np.empty((5, 5))
-    for j in range(5):
-        dx = steps[j] * np.eye(5)[j]
-        J[:, j] = (pieces(law, x + dx, st.n) - pieces(law, x - dx, st.n)) / (2 * steps[j])
-    return J
-
-
-def zone_matrix(J, a, b):
-    """G = dg/dc at k = 0 with q = a delta/Delta + b p held (module docstring), from the Jacobian J."""
-    free, ends = [0, 1, 4], [2, 3]
-    q = b * J[4]
-    q[4] += a
-    A = np.vstack([J[0:2][:, free], q[free]])
-    B = np.vstack([J[0:2][:, ends], q[ends]])
-    return J[2:4][:, ends] - J[2:4][:, free] @ np.linalg.solve(A, B)
-
-
-def flags(J, work_shift):
-    """(stable_load, stable_grip, stable_grip_work): G's symmetric part positive definite under each control
-    (work_shift: c in delta_work/Delta = delta/Delta + c p)."""
-    out = []
-    for a, b in ((0.0, 1.0), (1.0, 0.0), (1.0, work_shift)):
-        G = zone_matrix(J, a, b)
-        out.append(_stab.positive_definite(G))
-    return tuple(out)
 
 
 def _free_index(points, i):
@@ -344,4 +296,4 @@ def trace(law, points, ends, n):
             got += more
         sides.append((got, end if reached else "unresolved"))
     states = tuple(sides[1][0][::-1]) + (st,) + tuple(sides[0][0])
-    return Traced(states, tuple(jacobian(law, s) for s in states), (sides[1][1], sides[0][1]))
+    return Traced(states, tuple(_stab.jacobian(law, s) for s in states), (sides[1][1], sides[0][1]))

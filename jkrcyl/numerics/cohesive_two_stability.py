@@ -9,6 +9,13 @@ matrix G_ij = d(h(c_i) - h0)/dc_j at the held quantity (2 s0 G is the Hessian, s
 definite.  :func:`held_state` gives the zone-end-held states, :func:`zone_matrix` G by central differences,
 :func:`stable` the flag; tests/test_cohesive_two_patch.py checks dE/dc by differences of the held states' energy,
 G's symmetry, and the flags against JKR's (jkrcyl.model.two_patch.stability) in the limit.
+
+A traced state's flags under each control from one Jacobian (:func:`flags`, cheaper than held states): the
+implicit function theorem gives G = g_c - [g_e g_d] A^-1 [k_c; q_c], A = [[k_e, k_d], [q_e, q_d]], with
+q = a delta/Delta + b p the held quantity (load: (0, 1), grip: (1, 0), grip-work: (1, c_work)), e the half-angles,
+d = delta/Delta; the derivatives are central differences of fixed-arc states (:func:`jacobian`: four more
+systems; delta and the zone ends: back-substitutions).  tests/test_cohesive_two_patch_branch.py: G equals
+:func:`zone_matrix`'s (held states solved by Newton, an independent route).
 """
 import math
 
@@ -18,6 +25,8 @@ from . import cohesive as _co
 from . import cohesive_two as _two
 
 HOLD_STEP = 1e-4          # central differences of the zone ends, relative to the zone length
+ARC_STEP = 1e-6           # jacobian: central differences of the half-angles, relative
+ZONE_STEP = 1e-5          # ... of the zone ends and the approach, relative to the zone length
 
 
 def _held_pieces(fa, zones, s0, control, value):
@@ -88,3 +97,51 @@ def positive_definite(G):
     entry and its determinant > 0; in closed form -- LAPACK's call costs ~1 ms on a loaded machine)."""
     a, b, d = G[0, 0], 0.5 * (G[0, 1] + G[1, 0]), G[1, 1]
     return bool(a > 0 and a * d - b * b > 0)
+
+
+# --- the flags of a traced state from one Jacobian ------------------------------------------------------------
+def pieces(law, x, n):
+    """[k_bot, k_top, g_bot, g_top, p] of the fixed-arc state at x = (eps, eps_top, c, c_top, delta/Delta)
+    (g = h(c) - h0, h(pi - c_top) - h0): the functions of :func:`flags` (law: cohesive_two's, or a
+    BranchLaw)."""
+    eps, eps_top, c, c_top, dn = x
+    fa = law.arcs(eps, eps_top, n)
+    zones = _co.zones_of(c, c_top)
+    u = fa.u0 + dn * fa.u1 + law.s0 * fa.zone_unit(zones)
+    g = fa.gap(np.array([c, math.pi - c_top]), dn, u, zones, law.s0) - law.h0
+    p = fa.sys.moments(u, np.cos) + law.s0 * fa.zone_totals(zones)[0]
+    return np.concatenate([fa.sys.edge(u), g, [p]])
+
+
+def jacobian(law, st):
+    """d pieces/dx at the state st (5 x 5, central differences: the half-angles' take two fixed-arc systems each;
+    forward differences would not do: G's first entry is a difference of larger terms, 0.6 % off at a step
+    1e-6 -- measured at M = 0.2, lambda = 20 against cohesive_two_stability's held states)."""
+    x = np.array([st.eps, st.eps_top, st.c, st.c_top, st.delta_over_Delta])
+    zone = min(st.c - st.eps, st.c_top - st.eps_top)
+    steps = np.array([ARC_STEP * st.eps, ARC_STEP * st.eps_top, ZONE_STEP * zone, ZONE_STEP * zone, 1e-3])
+    J = np.empty((5, 5))
+    for j in range(5):
+        dx = steps[j] * np.eye(5)[j]
+        J[:, j] = (pieces(law, x + dx, st.n) - pieces(law, x - dx, st.n)) / (2 * steps[j])
+    return J
+
+
+def implicit_zone_matrix(J, a, b):
+    """G = dg/dc at k = 0 with q = a delta/Delta + b p held (module docstring), from the Jacobian J."""
+    free, ends = [0, 1, 4], [2, 3]
+    q = b * J[4]
+    q[4] += a
+    A = np.vstack([J[0:2][:, free], q[free]])
+    B = np.vstack([J[0:2][:, ends], q[ends]])
+    return J[2:4][:, ends] - J[2:4][:, free] @ np.linalg.solve(A, B)
+
+
+def flags(J, work_shift):
+    """(stable_load, stable_grip, stable_grip_work): G's symmetric part positive definite under each control
+    (work_shift: c in delta_work/Delta = delta/Delta + c p)."""
+    out = []
+    for a, b in ((0.0, 1.0), (1.0, 0.0), (1.0, work_shift)):
+        G = implicit_zone_matrix(J, a, b)
+        out.append(positive_definite(G))
+    return tuple(out)
