@@ -1,7 +1,8 @@
 """Where a jump lands, how a branch continues past its end, and first contact: the landing half of the load-path
 walker (jkrcyl.analysis.path walks the tracks; pull-off, the confined analysis, cycles and the kinetics read
 both).  A jump keeps the held value: :func:`land` picks the stable, feasible state it lands on among the
-solutions of every branch at that value (jkrcyl.analysis.forward.solve_normalised).
+solutions of every branch at that value (jkrcyl.analysis.forward.solve_normalised) that the jump dissipates energy
+to (:func:`_landable`); where the top closes, the relaxation of jkrcyl.analysis.top_closing says which.
 """
 from __future__ import annotations
 
