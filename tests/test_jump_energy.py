@@ -9,7 +9,9 @@ collocation and the full-contact modes 0 and 1.  Checked against what each does 
   two arcs whose gap closes against full contact at the same approach (U* - U*_full = 1.08 gap^2);
 * the level of full contact against a two-patch state, from the energy release rates alone (Irwin: dPi/d eps_top
   = 2 vartheta (pi^2 k_top^2 - M^2) vartheta at fixed delta, integrated from the state to the closed gap);
-* every jump of a cycle dissipates: (P_a + P_b)/2 (delta_b - delta_a) - (E_b - E_a) >= 0.
+* every jump of a cycle dissipates: (P_a + P_b)/2 (delta_b - delta_a) - (E_b - E_a) >= 0 (JKR, and the
+  Maugis-Dugdale law at lambda 20-50: the walker keeps only such landings, jkrcyl.analysis.landing._landable;
+  the levels of the free pin, the zone-only pin, one patch and full contact: tests/test_energy_levels.py).
 
 M 0.1, vartheta 10, gb 1/2.8 under grip: the walk along JKR's two patches ends at its fold (delta/Delta
 -0.0700951849, refined: a dense resampling of the branch, 20000 points, has its largest delta -0.07009519) with
@@ -149,3 +151,28 @@ def test_a_top_closing_while_pushing_hard_never_raises_the_potential(M, theta, g
     for j in cy.jumps:
         assert dissipated(pb, un, j.before, j.after) >= -1e-9 * max(1.0, abs(j.before.energy), abs(j.after.energy))
     assert all(j.kind != "top-contact" for j in cy.jumps) and "after the top-contact" in cy.note
+
+
+@pytest.mark.slow                       # ~30-60 s per cycle: the law's two-patch branches traced at lambda 20-50
+@settings(max_examples=3, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(M=st.floats(0.05, 0.12), theta=st.floats(8.0, 20.0), gb=st.floats(0.1, 0.6), lam=st.floats(20.0, 50.0),
+       control=st.sampled_from(["grip", "load"]))
+@example(M=0.0938, theta=8.786, gb=0.285, lam=45.12, control="grip")     # top contact both ways, two-patch folds
+def test_every_jump_of_a_cycle_under_the_law_dissipates(M, theta, gb, lam, control):
+    """Maugis-Dugdale cycles (as the JKR property) at lambda 20-50, where the walk lands on the law's zone-only pin,
+    its single patch, its traced two patches and the bonded pin: every jump lowers the total potential less the
+    held quantity's work (the levels: tests/test_energy_levels.py).  A problem whose two-patch branch the law
+    cannot follow (zones not small against JKR's top arc) is refused naming sigma0, not answered."""
+    import jkrcyl
+    from jkrcyl.laws.dugdale import edge_of_strength
+    pb = Problem(M, theta, gb, 0.0, edge_of_strength(jkrcyl.equilibria.zone_strength(lam, M, theta)))
+    un = Units.normalised(pb, K_edge=1.0)
+    hi, lo = (0.0, -1.95) if control == "grip" else (1.0, -1.0)
+    try:
+        cy = cycle.cycle(pb, un, control, hi, lo, 100, lambda P, d: d)
+    except ValueError as why:
+        assert str(why).startswith("sigma0")
+        return
+    for j in cy.jumps:
+        assert j.before.held() == pytest.approx(j.after.held(), abs=1e-9)
+        assert dissipated(pb, un, j.before, j.after) >= -1e-9 * max(1.0, abs(j.before.energy), abs(j.after.energy))

@@ -79,6 +79,8 @@ class _Run:
                 if kind == "top-contact" and not self.pb.models("two-patch"):
                     why = _land.two_patch_refusal(self.pb) or self.pb.not_modelled(
                         "two-patch-branches", "the contact at the bottom and the top (two patches) is")
+                elif kind == "top-contact" and _land.into_pole(self.pb, self.un, s, self.control, value):
+                    why = _land.POLE
                 return None, f"leg {leg}: no stable state to jump to after the {kind} at {s!r}" + (
                     f" -- {why}" if why else "")
             if kind != "continue":                           # a branch going on as another is no jump

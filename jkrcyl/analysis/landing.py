@@ -1,7 +1,8 @@
 """Where a jump lands, how a branch continues past its end, and first contact: the landing half of the load-path
 walker (jkrcyl.analysis.path walks the tracks; pull-off, the confined analysis, cycles and the kinetics read
 both).  A jump keeps the held value: :func:`land` picks the stable, feasible state it lands on among the
-solutions of every branch at that value (jkrcyl.analysis.forward.solve_normalised).
+solutions of every branch at that value (jkrcyl.analysis.forward.solve_normalised) that the jump dissipates energy
+to (:func:`_landable`); where the top closes, the relaxation of jkrcyl.analysis.top_closing says which.
 """
 from __future__ import annotations
 
@@ -16,13 +17,11 @@ from ..units import CONTROLS, Units
 from . import branches as _br
 from . import cohesive_two_patch as _cohesive
 from . import forward as _fw
-from . import tracing as _tr
 from . import two_patch_fold as _fold2
+from .top_closing import POLE, into_pole, top_onset, top_onsets      # noqa: F401 (the walker reads them here)
+from .top_closing import arcs as _arcs, jkr_onset as _jkr_onset, land_on_top_contact as _land_on_top_contact, \
+    other_side
 from .two_patch_family import family as _family
-
-
-def _other(side):
-    return {"bottom": "top", "top": "bottom"}.get(side, side)
 
 
 def continuation(pb: Problem, un: Units, s, control: str):
@@ -57,7 +56,7 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
         if nxt is not None:
             if nxt.stable and nxt.feasible:
                 return nxt, "continue"
-            across = _floats_onto(pb, un, control, _other(s.side)) if nxt.branch == "separated" else None
+            across = _floats_onto(pb, un, control, other_side(s.side)) if nxt.branch == "separated" else None
             if across is not None:   # a floating pin under load (P = 0 only) floats across onto the other side's
                 return across, "continue"      # touch end: no jump, the contact vanishes and forms continuously
             event = "fold"           # its continuation is unstable: the path jumps from the branch's end
@@ -67,8 +66,7 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
     target = un.normalise(control, value)
 
     def candidates(branches):
-        return [x for x in _fw.solve_normalised(pb, un, control, target, branches) if x.stable and x.feasible
-                and not (x.branch == s.branch and abs(x.a - s.a) <= 1e-6 * max(s.a, 1e-300))]
+        return _landable(pb, un, s, _fw.solve_normalised(pb, un, control, target, branches))
     # a snap-in takes the smallest state on its side, a sub-critical pull-off a smaller one or the smallest on the
     # other side: a super-critical state (eps > eps_crit) is larger than any sub-critical one, so those branches
     # (for a traced law, a trace of their own) are searched only where the others leave no candidate
@@ -90,7 +88,7 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
         if up:
             into = [x for x in cands if x.side == s.side and x.size > 0]
             return (min(into, key=lambda x: x.size), "snap-in") if into else (None, "snap-in")
-        off = [x for x in cands if x.branch == "separated" or x.side == _other(s.side)]
+        off = [x for x in cands if x.branch == "separated" or x.side == other_side(s.side)]
         return (min(off, key=lambda x: x.size), "pull-off") if off else (None, "pull-off")
     # a cohesive S-shaped branch's fold met pushing, or one the pull-off rule has no state for: the nearest in size
     nearest = lambda xs: min(xs, key=lambda x: abs(x.size - s.size)) if xs else None
@@ -122,11 +120,10 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
         if not pb.models("two-patch-branches") or two_patch_refusal(pb):
             return None, "top-contact"
         two = [_fw.two_patch_state(pb, un, x, control) for x, _ in _cohesive.land_two_patch(pb, control, target)]
-        cands = [x for x in cands if x.branch != "two-patch"] + [x for x in two if x.stable and x.feasible]
+        cands = [x for x in cands if x.branch != "two-patch"] + _landable(pb, un, s, two)
         jkr = Problem(pb.M, pb.theta, pb.gb)
-        return _land_on_top_contact(pb, s, _downhill(pb, un, s, cands), control, _jkr_onset(jkr, s, control),
-                                    jkr), "top-contact"
-    return _land_on_top_contact(pb, s, _downhill(pb, un, s, cands), control, target), "top-contact"
+        return _land_on_top_contact(pb, s, cands, control, _jkr_onset(jkr, s, control), jkr), "top-contact"
+    return _land_on_top_contact(pb, s, cands, control, target), "top-contact"
 
 
 def two_patch_refusal(pb: Problem) -> str:
@@ -137,27 +134,6 @@ def two_patch_refusal(pb: Problem) -> str:
     except ValueError as why:
         return str(why)
     return ""
-
-
-def top_onset(pb: Problem, un: Units, s, control: str):
-    """The state of the branch of s where the gap at the top reaches the law's range, h(pi) = h0 (JKR: 0),
-    between s (a feasible table point, the walk's 'gap') and its infeasible neighbour below it: where the top
-    adheres (the law's table is coarse there: the walk lands from this state).  Under the cohesive law the single
-    patch ends there, not where h(pi) = 0: below h0 the law pulls at the top, and the top-zone states beyond
-    (jkrcyl.numerics.cohesive_top_zone) are saddles, the barrier to two patches vanishing at h(pi) = h0 -- a
-    fold of the combined branch.  s itself where no such neighbour brackets a root."""
-    regime = s.branch.replace("-top", "")
-    t = _br.table(pb, regime)
-    h0 = pb.edge.range_over_Delta(pb.m)
-    a, h = np.asarray(t.a), np.asarray(t.h_pi_over_Delta) - h0
-    i = int(np.argmin(np.abs(a - s.a)))
-    for k in (i - 1, i + 1):
-        if 0 <= k < a.size and h[k] <= 0 < h[i]:
-            (lo, flo), (hi, fhi) = sorted(((float(a[i]), float(h[i])), (float(a[k]), float(h[k]))))
-            r = solver(pb).root("h", lo, hi, flo, fhi, target=h0)
-            if r is not None:
-                return _fw.single_patch_states(pb, un, regime, [r], control, s.side)[0]
-    return s
 
 
 def _zips_round(pb, un, control, target, side):
@@ -180,58 +156,8 @@ def _pull_off_landing(s, cands, control):
         sep = [x for x in cands if x.branch == "separated"]
         if sep:
             return sep[0]
-    other = [x for x in cands if x.side == _other(s.side)]
+    other = [x for x in cands if x.side == other_side(s.side)]
     return min(other, key=lambda x: x.size) if other else None
-
-
-def top_onsets(pb: Problem):
-    """(eps, P*, delta/Delta, stable under load) of every single-patch state where the top adheres: h(pi) equal
-    to the law's range (JKR: h(pi) = 0; the cohesive law: h0, top_onset)."""
-    if not pb.models("two-patch"):     # a law's branch parameter is not tan(eps/2): its states at the roots of h
-        un = Units.normalised(pb, K_edge=1.0)
-        h0 = pb.edge.range_over_Delta(pb.m)
-        return tuple(sorted((s.eps, s.P_star, s.delta_over_Delta, s.stable_load) for r in _br.solver(pb).regimes()
-                            if r != _br.ZONE_ONLY for s in _fw.single_patch_states(
-                                pb, un, r, [a for a, _ in _br.roots(pb, r, "h", h0)], "load")))
-    out = []
-    for e in _tr.onset_angles(pb):
-        a = math.tan(e / 2)
-        c = _br.values_at(pb, _br.solver(pb).regime_of(a), a)
-        out.append((e, float(c.P_star[0]), float(c.delta_over_Delta[0]), bool(c.stable_load[0])))
-    return tuple(out)
-
-
-def _jkr_onset(jkr: Problem, s, control: str) -> float:
-    """The held value (normalised: P*, delta/Delta, delta_work/Delta) of JKR's top onset (h(pi) = 0,
-    :func:`top_onsets`) nearest to the contact of s: where JKR's descent predicts what follows a law's top onset
-    (the law's top adheres at h(pi) = h0, earlier than JKR's by ~h0 log(lambda): jkrcyl.numerics.cohesive_top_zone)."""
-    _, P, d, _ = min(top_onsets(jkr), key=lambda o: abs(o[0] - s.eps))
-    v = {"load": P, "grip": d, "grip-work": d + jkr.work_shift * jkr.scale * P}[control]
-    return v if s.side != "top" else -v if control == "load" else -2.0 - v     # a walk at the top: its mirror
-
-
-def _land_on_top_contact(pb, s, cands, control, target, jkr=None):
-    """The gap at phi = pi closes (h(pi) = 0, the walk's 'gap'; the law's range h0 for a cohesive law): a nascent
-    top contact appears and the edges relax at the held value (jkrcyl.model.two_patch.descend); the landing is the
-    candidate where that relaxation ends -- full contact, the patch on the other side (the bottom arc vanished),
-    or the two-patch state nearest to the end point.  jkr: the problem whose descent predicts it (a law with thin
-    zones: JKR's, its limit, at its own onset: target is then JKR's held value there, :func:`_jkr_onset`)."""
-    pb = pb if jkr is None else jkr
-    if s.side == "top":            # the mirror (P* -> -P*, approach -> -2 - approach): solve it at the bottom
-        mirrored = -target if control == "load" else -2.0 - target
-        outcome, end = _two.descend(pb, mirrored, s.eps, control=control)
-        end = end[::-1]
-        outcome = {"transfer": "single", "single": "transfer"}.get(outcome, outcome)
-    else:
-        outcome, end = _two.descend(pb, target, s.eps, control=control)
-    pools = {"full": [x for x in cands if x.branch == "full-contact"],
-             "transfer": [x for x in cands if x.side == _other(s.side)],
-             "single": [x for x in cands if x.side == s.side and x.size < s.size],
-             "two-patch": [x for x in cands if x.branch == "two-patch"]}
-    pool = pools[outcome] or [x for x in cands if x.side in ("both", _other(s.side))]
-    if not pool:
-        return None
-    return min(pool, key=lambda x: math.hypot(x.eps - end[0], x.eps_top - end[1]))
 
 
 def dissipated(pb: Problem, un: Units, a, b) -> float:
@@ -243,26 +169,29 @@ def dissipated(pb: Problem, un: Units, a, b) -> float:
     return work - (b.energy - a.energy) / un.energy_scale
 
 
-def _downhill(pb, un, s, cands):
-    """The candidates a jump from s at its held value dissipates energy to (>= 0 up to 1e-9 of the potential): a
-    jump lowers the total potential less the held quantity's work (a landing on full contact where the top
+def _landable(pb, un, s, states):
+    """The states a jump from s can land on: stable, feasible, not s itself, and dissipating energy (>= 0 up to
+    1e-9 of the potential): every jump at a held value lowers the total potential less the held quantity's work
+    (the levels of every state kind agree, tests/test_energy_levels.py; a landing on full contact where the top
     closes while pushing hard raised it by ~1300 kernel units: M 0.40, vartheta 1, gb 0, load P* 48.8)."""
     tol = 1e-9 * max(abs(s.energy / un.energy_scale), 1.0)
-    return [x for x in cands if dissipated(pb, un, s, x) >= -tol]
+    return [x for x in states if x.stable and x.feasible and dissipated(pb, un, s, x) >= -tol
+            and not (x.branch == s.branch and abs(x.a - s.a) <= 1e-6 * max(s.a, 1e-300))]
 
 
 def _leave_two_patch(pb, un, s, cands, control, target, up):
     """A fold of the two-patch branch: (landing, kind).  The edges relax from the fold driven past it (JKR's
     two_patch.escape: its descent along the fold's unstable direction; a law with thin zones asks JKR's own fold
     next to it, its limit); the landing is the candidate where that ends -- full contact ('zip'), the patch on
-    one side (the other arc let go: 'pull-off') or the two-patch state nearest to the end point -- among the
-    candidates the jump dissipates energy to (a jump at a held value lowers the total potential)."""
+    one side (the other arc let go: 'pull-off') or the two-patch state nearest to the end point (cands: those the
+    jump dissipates energy to, :func:`_landable`)."""
     sgn = 1 if up else -1
     if pb.models("two-patch"):
         outcome, end = _two.escape(pb, s.eps, s.eps_top, target, control, sgn)
     else:
         outcome, end = _jkr_escape(pb, un, s, control, target, sgn)
-    cands = _downhill(pb, un, s, cands)
+    if outcome == "pole":            # the paper's delta held: relaxing, the load grows without bound
+        return None, "zip" if up else "pull-off"
     pools = {"full": [x for x in cands if x.branch == "full-contact"],
              "transfer": [x for x in cands if x.side == "top"],
              "single": [x for x in cands if x.side == "bottom"],
@@ -270,7 +199,7 @@ def _leave_two_patch(pb, un, s, cands, control, target, up):
     pool = pools[outcome] or cands
     if not pool:
         return None, "zip" if outcome == "full" else "pull-off"
-    to = min(pool, key=lambda x: math.hypot(min(x.eps, math.pi) - end[0], x.eps_top - end[1]))
+    to = min(pool, key=lambda x: math.dist(_arcs(x), end))
     grew = to.branch == "full-contact" or (to.branch == "two-patch" and to.size > s.size)
     return to, ("zip" if grew else "pull-off")
 

@@ -185,6 +185,8 @@ def stability(pb: Problem, eps, eps_top, delta_over_Delta, n=N_NODES, lin=None):
 DESCENT_TINY = 1e-9     # a half-angle below this has vanished (descend)
 DESCENT_START = 1e-7    # the nascent top arc of descend
 DESCENT_STEP = 0.02     # longest descent step [rad]
+DESCENT_POLE = 1e6      # G/w where the descent's steps vanish: a pole of the fixed arcs, not a stationary point
+                        # (measured 4e21 at the pole; a stationary point's G/w - 1 ~ the last step, 1e-10)
 
 
 def _held_delta(pb, lin, control, value):
@@ -203,8 +205,10 @@ def descend(pb: Problem, value: float, eps: float, eps_top: float = DESCENT_STAR
     arcs (eps, eps_top): the edges move down the total potential, d eps_i/dt ~ -(G_i - w) (equal edge
     mobilities; dPi*/d eps_i = 2 vartheta (pi^2 k_i |k_i| - M^2) at the approach the control fixes, a
     compressive edge k < 0 counting as G > w... growing).  Returns (outcome, (eps, eps_top)): 'full' (the arcs
-    meet), 'transfer' (the bottom arc vanishes), 'single' (the top arc vanishes) or 'two-patch' (a stationary
-    point: a two-patch state stable under the control)."""
+    meet), 'transfer' (the bottom arc vanishes), 'single' (the top arc vanishes), 'two-patch' (a stationary
+    point: a two-patch state stable under the control) or 'pole' (grip only: the edges run into arcs where the
+    fixed-arc load at the held paper's delta is unbounded, G/w > DESCENT_POLE -- the potential of a held delta,
+    E = E_work - c p^2/2, is unbounded below there: no state to relax to)."""
     x = np.array([eps, eps_top], dtype=float)
     h, g_old = DESCENT_STEP, None
     for _ in range(max_steps):
@@ -213,9 +217,9 @@ def descend(pb: Problem, value: float, eps: float, eps_top: float = DESCENT_STAR
         g = -(math.pi ** 2 * k * np.abs(k) - pb.M ** 2)      # the descent direction of the potential
         turned = g_old is not None and g @ g_old < 0
         if turned:
-            h /= 2                                           # overshot a stationary point
+            h /= 2                                           # overshot a stationary point (or straddles a pole)
         if h < 1e-10 or np.linalg.norm(g) < 1e-12 * pb.M ** 2:
-            return "two-patch", tuple(x)
+            return ("pole" if np.max(np.abs(g)) > DESCENT_POLE * pb.M ** 2 else "two-patch"), tuple(x)
         x, g_old = x + min(h, 0.5 * min(x)) * g / np.linalg.norm(g), g
         if x.sum() >= math.pi - 0.02:
             return "full", tuple(x)
