@@ -109,12 +109,12 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
         grow = [x for x in cands if x.size > s.size and x.side in (s.side, "both")]    # tail's largest load: the
         if grow:                 # bond at the top breaks) onto the nearest stable state on its side; a cohesive
             return min(grow, key=lambda x: x.size), "zip"      # super-critical S met pulling: its other stable part
-        same = _downhill(pb, un, s, [x for x in cands if x.side == s.side])
+        same = [x for x in cands if x.side == s.side]            # (cands: stable, feasible, dissipating)
         if same:
             return nearest(same), "zip"
         # zipping round where the bond cannot hold: onto the other side's contact reaching round (open where the
         # bond breaks; vartheta 10, gb 0, lambda 7.9, M 0.246: P* -0.1351 past the bond limit -0.1341)
-        over = _downhill(pb, un, s, [x for x in cands if x.size > s.size])
+        over = [x for x in cands if x.size > s.size]
         return (min(over, key=lambda x: x.size) if over else None), "zip"
     if not pb.models("two-patch"):       # the top closes: the law's traced two-patch branch, where it has one
         if not pb.models("two-patch-branches") or two_patch_refusal(pb):
