@@ -127,7 +127,7 @@ def classify_law(Ms, thetas, lam, workers: int = 2, two_patch: bool = False, pro
     two_patch : bool
         Refine every ``CONF_TOP`` pair by the law's confined_events (its two-patch landing).
     progress : bool
-        A tqdm bar over the pairs (stderr; serial only).
+        A progress bar on stderr (tqdm over the pairs; Dask's over its tasks).
 
     Returns
     -------
@@ -163,12 +163,16 @@ def classify_law(Ms, thetas, lam, workers: int = 2, two_patch: bool = False, pro
         except ImportError as exc:                     # pragma: no cover - depends on the install
             raise ValueError("workers: the law's atlas on more than 1 worker needs dask "
                              "(pip install 'jkrcyl[map]')") from exc
-        chunks = [pairs[k::4 * workers] for k in range(4 * workers)]       # interleaved: rows differ in cost
-        parts = dask.compute(*[dask.delayed(_pairs)(c, lam, two_patch) for c in chunks],
-                             scheduler="processes", num_workers=workers)
+        import contextlib
+        from dask.diagnostics import ProgressBar
+        n_chunks = min(len(pairs), 8 * workers)
+        chunks = [pairs[k::n_chunks] for k in range(n_chunks)]        # interleaved: rows differ in cost
+        with ProgressBar(dt=1.0, out=sys.stderr) if progress else contextlib.nullcontext():
+            parts = dask.compute(*[dask.delayed(_pairs)(c, lam, two_patch) for c in chunks],
+                                 scheduler="processes", num_workers=workers)
         done = [None] * len(pairs)
         for k, part in enumerate(parts):
-            done[k::4 * workers] = part
+            done[k::n_chunks] = part
     jkr = classify(Ms, thetas, parallel=False)
     shape = (thetas.size, Ms.size)
     out = {"M": Ms, "theta": thetas, "lam": np.array(lam), "zero_load_M_max": jkr["zero_load_M_max"],
