@@ -28,14 +28,24 @@ The pairs are independent: Dask (optional dependency, ``pip install 'jkrcyl[map]
 """
 from __future__ import annotations
 
+import contextlib
 import math
 import sys
 
 import numpy as np
 
 from .._validate import count, finite_scalar
+from ..analysis import landing, path
+from ..analysis.confined import confined_events
+from ..analysis.pull_off import grows_under_pull
+from ..equilibria import incompressible_gb
+from ..laws.dugdale import edge_of_strength
+from ..model.problem import Problem
+from ..model.single_patch import solver
+from ..numerics import cohesive_scales as scales
+from ..units import Units
 from .classify import (CONF_BONDED, CONF_NONE, CONF_TOP, CONF_TRANSFER, CONF_ZIP, CONFINED, FROM_TWOPATCH,
-                       _check_grid, classify)
+                       _check_grid, classify, default_grid)
 
 CONF_FLOAT, CONF_REFUSED = 8, 9
 LAW_CONFINED = {**CONFINED,
@@ -56,10 +66,6 @@ def check_lambda(lam) -> float:
 
 def law_problem(M: float, theta: float, lam: float):
     """The Maugis-Dugdale problem of the pair at lambda (gb of an incompressible pin), M > 0."""
-    from ..equilibria import incompressible_gb
-    from ..laws.dugdale import edge_of_strength
-    from ..model.problem import Problem
-    from ..numerics import cohesive_scales as scales
     gb = incompressible_gb(theta)
     jkr = Problem(M, theta, gb, 0.0)
     return Problem(M, theta, gb, 0.0, edge_of_strength(scales.zone_strength(lam, jkr.m)))
@@ -67,10 +73,6 @@ def law_problem(M: float, theta: float, lam: float):
 
 def _event(pb, two_patch: bool):
     """(code, a, P*) of the pair's first event under load control (module docstring)."""
-    from ..analysis import landing, path
-    from ..analysis.pull_off import grows_under_pull
-    from ..model.single_patch import solver
-    from ..units import Units
     sol = solver(pb)
     if sol.unmodelled and sol.floats_onto() is None:
         raise ValueError(sol.unmodelled)
@@ -90,7 +92,6 @@ def _event(pb, two_patch: bool):
         return code, a(s), s.P_star
     on = landing.top_onset(pb, un, s, "load")          # 'gap': where the top adheres, h(pi) = h0
     if two_patch:
-        from ..analysis.confined import confined_events
         return FROM_TWOPATCH[confined_events(pb).regime], a(on), on.P_star
     return CONF_TOP, a(on), on.P_star
 
@@ -163,7 +164,6 @@ def classify_law(Ms, thetas, lam, workers: int = 2, two_patch: bool = False, pro
         except ImportError as exc:                     # pragma: no cover - depends on the install
             raise ValueError("workers: the law's atlas on more than 1 worker needs dask "
                              "(pip install 'jkrcyl[map]')") from exc
-        import contextlib
         from dask.diagnostics import ProgressBar
         n_chunks = min(len(pairs), 8 * workers)
         chunks = [pairs[k::n_chunks] for k in range(n_chunks)]        # interleaved: rows differ in cost
@@ -187,5 +187,4 @@ def classify_law(Ms, thetas, lam, workers: int = 2, two_patch: bool = False, pro
 def default_law_grid(n_M=24, n_theta=24, M_max=2.0, theta_min=0.5, theta_max=5.0, with_inf=True):
     """The law's coarse grid: M = linspace(0, M_max, n_M), vartheta = linspace(theta_min, theta_max, n_theta)
     (+ inf), as :func:`jkrcyl.atlas.default_grid`."""
-    from .classify import default_grid
     return default_grid(n_M, n_theta, M_max, theta_min, theta_max, with_inf)

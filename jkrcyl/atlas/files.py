@@ -2,11 +2,13 @@
 
 :data:`NOTE` (what M and P* mean on the vartheta = inf row, the masks, the codes of ``confined``) heads both.
 """
+import pathlib
 from typing import Mapping
 
 import numpy as np
 
 from .classify import CONFINED, FIELDS_BOOL, FIELDS_FLOAT, FIELDS_INT
+from .cohesive import LAW_CONFINED, LAW_FIELDS_FLOAT, LAW_FIELDS_INT
 
 NOTE = ("vartheta = inf row: M is M_R* = sqrt(wAR)/(sqrt(2) Delta) and P* is P_R* = P beta*/(4 pi Delta) "
         "of (7.6). Value fields are 0 where their mask is False (no NaN). confined codes: "
@@ -93,7 +95,6 @@ def write_csv(path: str, atlas: Mapping[str, np.ndarray]) -> None:
 
 def law_note(lam: float) -> str:
     """The head line of the law's atlas files (jkrcyl.atlas.cohesive): lambda, the fields, the codes."""
-    from .cohesive import LAW_CONFINED
     return (f"Maugis-Dugdale law at lambda = {lam:.17g} (s0 of each pair: jkrcyl.numerics.cohesive_scales."
             "zone_strength; gb of an incompressible pin). event_a = tan(eps/2), event_P = P* of the first event; "
             "jkr_* = JKR's atlas (jkrcyl.atlas.classify) on the same grid. " + NOTE.split(" confined codes:")[0]
@@ -122,8 +123,6 @@ def write_law_files(folder, atlas: Mapping[str, np.ndarray], csv: bool = True) -
     OSError
         Where a file cannot be written.
     """
-    import pathlib
-    from .cohesive import LAW_FIELDS_FLOAT, LAW_FIELDS_INT
     folder = pathlib.Path(folder)
     note = law_note(float(atlas["lam"]))
     reasons = np.array([f"theta={t:.17g} M={m:.17g}: {r}" for t, m, r in atlas["reasons"]] or [""])
