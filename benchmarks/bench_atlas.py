@@ -40,6 +40,9 @@ def main(argv=None):
     ap.add_argument("--law-lambda", type=float, default=50.0)
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--law-only", action="store_true", help="only the law's case")
+    ap.add_argument("--law-sample", type=int, default=0,
+                    help="instead of the whole law's grid: the CPU time of every K-th pair, serial, extrapolated to "
+                         "the grid on --workers idle cores (robust on a loaded machine)")
     args = ap.parse_args(argv)
     if not args.law_only:
         jkr(args)
@@ -49,6 +52,8 @@ def main(argv=None):
 
 def law(args):
     Ms, th = atlas.default_grid(args.law_n, args.law_n)
+    if args.law_sample:
+        return law_sample(args, Ms, th)
     t, res = timed(lambda: cohesive.classify_law(Ms, th, args.law_lambda, workers=args.workers))
     n = res["confined"].size
     same = int((res["confined"] == res["jkr_confined"]).sum())
@@ -61,6 +66,25 @@ def law(args):
     for i, j in diff[:10]:
         print(f"  differs at vartheta {th[i]:g}, M {Ms[j]:.4f}: law {res['confined'][i, j]}, "
               f"JKR {res['jkr_confined'][i, j]}")
+
+
+def law_sample(args, Ms, th):
+    pairs = [(float(M), float(t)) for t in th for M in Ms][::args.law_sample]
+    cohesive.classify_pair(0.2, 1.0, args.law_lambda)                     # compile / load the numba caches
+    cpu, wall, codes = [], [], []
+    for M, t in pairs:
+        c0, w0 = time.process_time(), time.perf_counter()
+        codes.append(cohesive.classify_pair(M, t, args.law_lambda)[0])
+        cpu.append(time.process_time() - c0)
+        wall.append(time.perf_counter() - w0)
+    n = Ms.size * th.size
+    print(f"law's atlas (Maugis-Dugdale, lambda = {args.law_lambda:g}), every {args.law_sample}-th of {n} pairs "
+          f"({len(pairs)}): CPU {np.mean(cpu):.2f} s per pair (max {max(cpu):.2f} s, wall {np.mean(wall):.2f} s); "
+          f"the {Ms.size} x {th.size} grid on {args.workers} idle cores ~{np.mean(cpu) * n / args.workers / 60:.1f} "
+          f"min")
+    for code in sorted(set(codes)):
+        sel = [c for c, k in zip(cpu, codes) if k == code]
+        print(f"  class {code}: {len(sel)} pairs, CPU {np.mean(sel):.2f} s per pair")
 
 
 def jkr(args):
