@@ -8,7 +8,7 @@ from .._validate import count
 from . import inputs
 
 GRID_MAX = 10_000        # points per axis: 10^4 x 10^4 pairs is ~1.6 GB of fields and hours on 2 cores
-LAW_GRID_MAX = 200       # the law's atlas: ~1-3 s per pair on one core (200 x 200: ~1 day on 2 cores)
+LAW_GRID_MAX = 200       # the law's atlas: ~0.8 s of CPU per pair (200 x 200: ~4.5 h on 2 cores)
 
 
 def run(args):
@@ -20,7 +20,7 @@ def run(args):
     for name, n in (("n-M", args.n_M), ("n-theta", args.n_theta)):
         if not 2 <= n <= top:
             raise ValueError(f"{name} must be in [2, {top}] (the grid's memory and time grow with "
-                             f"n-M x n-theta{'; the law: ~1-3 s per pair' if law else ''}), got {n}")
+                             f"n-M x n-theta{'; the law: ~1 s of CPU per pair' if law else ''}), got {n}")
     if not args.theta_min < args.theta_max:
         raise ValueError(f"theta-max must be > theta-min, got theta-min = {args.theta_min:g}, "
                          f"theta-max = {args.theta_max:g}")
@@ -84,7 +84,7 @@ def register(sub):
                    help="grid points in vartheta, plus the inf row (default 1000; with --lambda 24)")
     t.add_argument("--lambda", dest="lam", type=inputs.number_arg, default=None,
                    help="the Maugis-Dugdale law at this transition parameter lambda > 0 (jkrcyl.atlas.cohesive: "
-                        "the same classes through the model core's load path, ~1-3 s per pair; the top adheres "
+                        "the same classes through the model core's load path, ~1 s of CPU per pair; the top adheres "
                         "where the gap at pi reaches h0). Default: JKR")
     t.add_argument("--workers", type=int, default=2, help="with --lambda: Dask worker processes (default 2)")
     t.add_argument("--M-max", type=inputs.number_arg, default=2.0, help="M range [0, M_MAX] (default 2)")
