@@ -11,7 +11,8 @@ gap closes first) adds on this grid.  Goal: the default 1000 x 1000 atlas with t
 
 The law's atlas (jkrcyl.atlas.cohesive.classify_law, ``jkrcyl atlas --lambda``): the default 24 x 24 grid (+ the
 vartheta = inf row) at lambda 50 on ``--workers`` Dask processes, per pair, and against JKR's numba atlas of the
-same grid (how many classes equal, and where not).  No goal was set for it (each pair walks the law's branch tables, ~1 s of CPU).
+same grid (how many classes equal, and where not).  No goal was set for it (each pair walks the law's branch
+tables, ~1 s of CPU; --law-sample K: the CPU time of every K-th pair, serial, extrapolated).
 """
 import argparse
 import os
