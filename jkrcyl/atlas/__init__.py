@@ -2,7 +2,8 @@
 
 :mod:`.classify` classifies every pair of a grid (numba kernels, one per pair, through jkrcyl.numerics; the codes
 of :data:`CONFINED`), :mod:`.files` writes the result (npz, CSV) and :mod:`.draw` the map (``jkrcyl atlas``,
-``make atlas``).
+``make atlas``).  :mod:`.cohesive` classifies the same way under the Maugis-Dugdale law at a given lambda, each pair
+through the model core's load path (``jkrcyl atlas --lambda``).
 
 Examples
 --------
@@ -16,4 +17,5 @@ from .classify import (CONF_BONDED, CONF_NONE, CONF_TOP, CONF_TOP_FULL, CONF_TOP
                        CONF_TWO_PATCH, CONF_ZIP, CONFINED, FIELDS_BOOL, FIELDS_FLOAT, FIELDS_INT, FROM_TWOPATCH,
                        classify, classify_parallel, classify_serial, default_grid)
 from .draw import draw
-from .files import CSV_COLUMNS, NOTE, write_csv, write_npz
+from .cohesive import CONF_FLOAT, CONF_REFUSED, LAW_CONFINED, classify_law
+from .files import CSV_COLUMNS, NOTE, write_csv, write_law_files, write_npz

@@ -8,11 +8,12 @@ from .classify import CONFINED
 
 # one colour per class, distinct in greyscale too (luminance falls with the code)
 PALETTE = {0: "#f0f0f0", 1: "#a6cee3", 2: "#fdbf6f", 3: "#fb9a99", 4: "#b2df8a", 5: "#cab2d6", 6: "#6a3d9a",
-           7: "#b15928"}
+           7: "#b15928", 8: "#ffff99", 9: "#404040"}         # 8, 9: the law's codes (jkrcyl.atlas.cohesive)
 LEVELS = (-5, -3, -2, -1.5, -1, -0.75, -0.5, -0.3, -0.2, -0.1, -0.05, 0.05, 0.1, 0.2, 0.3, 0.5)
 
 
-def draw(atlas: Mapping[str, np.ndarray], path_stem: str) -> List[str]:
+def draw(atlas: Mapping[str, np.ndarray], path_stem: str, labels: Mapping[int, str] = CONFINED,
+         title: str = "") -> List[str]:
     """Draw the atlas map into path_stem.png and path_stem.pdf (matplotlib, Agg backend).
 
     One colour per ``confined`` class (distinct in greyscale too), contours of P* of the first event (the fold, or
@@ -25,6 +26,10 @@ def draw(atlas: Mapping[str, np.ndarray], path_stem: str) -> List[str]:
         What :func:`jkrcyl.atlas.classify` returns (or the arrays of a file of :func:`jkrcyl.atlas.write_npz`).
     path_stem : str
         The path without the extension.
+    labels : mapping of int to str
+        The legend of each code (default :data:`CONFINED`; the law's atlas: jkrcyl.atlas.cohesive.LAW_CONFINED).
+    title : str
+        A first title line (e.g. the law and its lambda).
 
     Returns
     -------
@@ -80,10 +85,10 @@ def draw(atlas: Mapping[str, np.ndarray], path_stem: str) -> List[str]:
         ax.set_xlim(ext[0], ext[1])
         ax.set_ylim(ext[2], ext[3])
     ax.set_ylabel(r"$\vartheta$")
-    ax.set_title("Slow pulling under load control, starting from the zero-load contact: what happens first;\n"
+    ax.set_title(title + "Slow pulling under load control, starting from the zero-load contact: what happens first;\n"
                  r"contours: $P^*$ of that event (the fold, or where the gap at $\varphi = \pi$ closes)",
                  fontsize=10)
-    handles = [Patch(facecolor=PALETTE[c], edgecolor="k", lw=0.3, label=CONFINED[c]) for c in present]
+    handles = [Patch(facecolor=PALETTE[c], edgecolor="k", lw=0.3, label=labels[c]) for c in present]
     handles.append(plt.Line2D([], [], color="tab:red", ls="--",
                               label=r"$M_{max}(\vartheta)$: zero-load contact (8.1) for $M < M_{max}$"))
     ax.legend(handles=handles, loc="upper right", fontsize=7, framealpha=0.9)
