@@ -127,6 +127,7 @@ def _branch_work(pb, x, y):
     return w if y.a > x.a else -w
 
 
+@pytest.mark.slow          # 9.5 s: a cycle of 6 jumps at vartheta 10 and 4 branch trapezoids
 def test_a_zip_round_past_the_bond_limit_lands_on_the_other_sides_contact():
     """vartheta 10, gb 0, lambda 7.924, M 0.246: the bonded pin never holds near the super-critical fold (bond
     limit P* -0.13412, fold -0.13488), so the zip from the bottom fold lands on the top's contact reaching round
