@@ -145,3 +145,33 @@ def test_a_zip_round_past_the_bond_limit_lands_on_the_other_sides_contact():
     work = sum(j.before.P_star * (j.after.delta_over_Delta - j.before.delta_over_Delta) for j in loop)
     work += sum(_branch_work(pb, j.after, k.before) for j, k in zip(loop, loop[1:] + loop[:1]))
     assert cy.dissipated / pb.scale == pytest.approx(work, rel=1e-5)
+
+
+def _piece_work(pb, x, y):
+    """int P* d(delta/Delta) from state x to state y along one branch: full contact in closed form (delta/Delta =
+    -1 + c P*, jkrcyl.model.full_contact.law: the work c (P_y^2 - P_x^2)/2), a single patch by _branch_work."""
+    if x.branch == "full-contact":
+        assert y.branch == "full-contact"
+        _, c = full.law(pb)
+        return 0.5 * c * (y.P_star ** 2 - x.P_star ** 2)
+    return _branch_work(pb, x, y)
+
+
+@pytest.mark.slow          # ~6 s: a cycle through the bond's break and two trapezoids
+def test_the_bond_breaking_with_no_branch_going_on_lands_on_the_largest_state():
+    """vartheta 10, gb 0, lambda 19.9, M 0.122, load 2 .. -3: pulled, the bonded pin reaches its bond limit
+    (P* -0.7849) where no single-patch branch goes on from it; the contact recedes onto the top's super-critical
+    patch (stable, 4.26 of 6.28 wide at P* -0.786).  Was: the load cycle raised the two-patch family's ValueError
+    (the landing fell through to the top-contact rule).  Reference: the loop work from the jumps' P d(delta) and the
+    pieces between them (full contact in closed form, patches by trapezoids: no energies) equals the cycle's
+    dissipation (landing.dissipated per jump, kernel units = vartheta x the work)."""
+    pb, un = _law(19.905, 0.122, 10.0, 0.0)
+    cy = cycle.cycle(pb, un, "load", 2.0, -3.0, 200, lambda P, d: d)
+    assert cy.note == "" and cy.closed_from_leg is not None
+    loop = [j for j in cy.jumps if j.leg in (cy.closed_from_leg, cy.closed_from_leg + 1)]
+    brk = next(j for j in loop if j.before.branch == "full-contact")
+    assert brk.before.P_star == pytest.approx(full.bond_limit(pb, -1.0), rel=1e-9)
+    assert brk.after.branch == "super-critical-top" and brk.after.stable and brk.after.feasible
+    work = sum(j.before.P_star * (j.after.delta_over_Delta - j.before.delta_over_Delta) for j in loop)
+    work += sum(_piece_work(pb, j.after, k.before) for j, k in zip(loop, loop[1:] + loop[:1]))
+    assert cy.dissipated / pb.scale == pytest.approx(work, rel=1e-5)
