@@ -110,12 +110,26 @@ def test_the_grip_walk_leaves_the_two_patch_fold_onto_the_bottom_patch():
     assert cy.dissipated == pytest.approx(sum(dissipated(PB, UN, x.before, x.after) for x in cy.jumps[1:]))
 
 
-@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(M=st.floats(0.05, 0.3), theta=st.floats(2.0, 20.0), gb=st.floats(0.1, 0.6),
-       control=st.sampled_from(["grip", "load"]))
+JKR_CYCLES = dict(M=st.floats(0.05, 0.3), theta=st.floats(2.0, 20.0), gb=st.floats(0.1, 0.6),
+                  control=st.sampled_from(["grip", "load"]))
+
+
+@settings(max_examples=3, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(**JKR_CYCLES)
 @example(M=0.1, theta=10.0, gb=1 / 2.8, control="grip")     # the zip onto full contact raised the potential 9.07
 @example(M=0.094, theta=12.067, gb=0.324, control="grip")  # two-patch folds both ways: an arc lets go (0.5236 each)
 def test_every_jump_of_a_cycle_dissipates(M, theta, gb, control):
+    _every_jump_dissipates(M, theta, gb, control)
+
+
+@pytest.mark.slow                       # the same property over more problems (~2 s each)
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(**JKR_CYCLES)
+def test_every_jump_of_a_cycle_dissipates_more_problems(M, theta, gb, control):
+    _every_jump_dissipates(M, theta, gb, control)
+
+
+def _every_jump_dissipates(M, theta, gb, control):
     """JKR cycles (grip 0 .. -1.95 Delta, load P* +-1) over random problems: every jump lowers the total potential
     by at least the work of the held quantity's conjugate (rounding: 1e-9 of the states' potential)."""
     pb = Problem(M, theta, gb)

@@ -251,6 +251,7 @@ def gap_min(st) -> float:
 
 @functools.lru_cache(maxsize=16)
 def _branches(fam: CohesiveTwoPatch, n: int) -> tuple:
+    _cb.check_lambda(fam.law.m, fam.law.s0)       # refused before JKR's scaffold is traced (~30 s at M 0.3)
     out = []
     for b in _tr.branches(fam.jkr, n):
         points = np.column_stack([b.eps, b.eps_top])

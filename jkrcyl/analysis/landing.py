@@ -107,8 +107,7 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
     if s.branch == "full-contact":     # the bond breaks at its limit with no branch going on from the bonded pin
         # (vartheta 10, gb 0, lambda 19.9, M 0.122 pulled to P* -0.785): the contact recedes onto the largest
         # stable state the jump dissipates to (there the top's super-critical patch, 4.26 of 6.28 wide)
-        off = [x for x in cands if x.branch != "full-contact"]        # (the bonded pin itself holds at its limit)
-        return (max(off, key=lambda x: x.size) if off else None), "pull-off"
+        return (max(cands, key=lambda x: x.size) if cands else None), "pull-off"
     if event == "fold" and s.branch == "two-patch":
         return _leave_two_patch(pb, un, s, cands, control, target, up)
     if event == "fold":          # a super-critical fold: the contact grows (zips round), else pushed (the round-zone
@@ -139,6 +138,8 @@ def two_patch_refusal(pb: Problem) -> str:
     a state from JKR's branch -- vartheta 10, gb 0, lambda 19.9, M 0.122: JKR's smaller arc <= 0.0011 rad against
     zones of 0.0115, where a load cycle raised that ValueError from inside its walk).  Cached: a refusal costs the
     trace (the branches themselves are cached by their family)."""
+    if pb.models("two-patch"):                  # JKR's branches: solved directly (jkrcyl.model.two_patch)
+        return ""
     try:
         _family(pb).branches()                  # the law's branches: its refusal, if any
     except ValueError as why:
@@ -185,8 +186,9 @@ def _landable(pb, un, s, states):
     (the levels of every state kind agree, tests/test_energy_levels.py; a landing on full contact where the top
     closes while pushing hard raised it by ~1300 kernel units: M 0.40, vartheta 1, gb 0, load P* 48.8)."""
     tol = 1e-9 * max(abs(s.energy / un.energy_scale), 1.0)
-    return [x for x in states if x.stable and x.feasible and dissipated(pb, un, s, x) >= -tol
-            and not (x.branch == s.branch and abs(x.a - s.a) <= 1e-6 * max(s.a, 1e-300))]
+    # (x.a == s.a first: full contact has a = inf, where inf - inf is nan)
+    same = lambda x: x.branch == s.branch and (x.a == s.a or abs(x.a - s.a) <= 1e-6 * max(s.a, 1e-300))
+    return [x for x in states if x.stable and x.feasible and dissipated(pb, un, s, x) >= -tol and not same(x)]
 
 
 def _leave_two_patch(pb, un, s, cands, control, target, up):

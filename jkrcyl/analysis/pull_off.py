@@ -40,9 +40,9 @@ def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
     unmodelled = solver(pb).unmodelled
     if unmodelled and solver(pb).floats_onto() is None:
         return PullOff(control, None, None, None, None, unmodelled)
-    if not solver(pb).adheres and not _path_answers(pb, un, control):
-        return PullOff(control, None, None, None, None, solver(pb).no_adherence_reason)
     start, event, s, towards = _path.pull_path(pb, un, control)
+    if not solver(pb).adheres and not _path_answers(pb, event, s, control, towards):
+        return PullOff(control, None, None, None, None, solver(pb).no_adherence_reason)
     if event == "none":
         why = _reasons.no_first_contact_reason(pb, control)
         return PullOff(control, None, None, None, None, why + ": no path to follow")
@@ -81,13 +81,12 @@ def pull_off(pb: Problem, un: Units, control: str) -> PullOff:
     return PullOff(control, s.P, s.contact_width, s.delta, s, "detachment: the contact shrinks away (G > w)")
 
 
-def _path_answers(pb: Problem, un: Units, control: str) -> bool:
+def _path_answers(pb: Problem, event: str, s, control: str, towards) -> bool:
     """Whether the path from first contact says what happens where no single-patch state pulls: a law whose
     single-patch states all push may still hold the pin -- drawn round into full contact at first touch (those
     that pull overlap the top), onto the other side's patch (a range longer than half the clearance) or floating
     onto a round zone -- or zipping round into full contact at a fold (JKR's answer too: under grip, lambda 10.8,
     M 1, the super-critical fold at P = 1.940 N/m, JKR's 1.941)."""
-    _, event, s, towards = _path.pull_path(pb, un, control)
     return event in ("bonded", "elsewhere", "float", "round") or (
         event == "fold" and s.branch != "contactless" and grows_under_pull(pb, s.a, control, towards))
 
@@ -100,8 +99,10 @@ def _bonded_reason(pb: Problem, un: Units) -> str:
     why = ("no stable zero-load contact (M above the largest M with one): at first touch the contact zips round "
            "into full contact")
     limit = _full.bond_limit(pb, -1.0)
-    if math.isinf(limit) or math.isnan(limit):
+    if math.isinf(limit):
         return why + ", and a pin bonded all round does not detach"
+    if math.isnan(limit):     # (not met: first contact lands only on a feasible bonded pin)
+        return why + ", where the law's bond does not hold even at zero load"
     P = un.physical("load", limit)
     return (why.replace("(M above the largest M with one)", "on one patch") +
             f"; the bond holds down to P = {P:.6g} N/m (the tension at the bottom reaches the law's strength), "

@@ -36,6 +36,7 @@ from . import cohesive_two as _two
 from . import cohesive_two_layer as _layer
 from . import cohesive_two_stability as _stab
 from . import roots as _roots
+from .cohesive_two_layer import check_lambda  # noqa: F401 (the analysis layer's refusal before any trace)
 
 ZONE_MAX = 0.02           # the largest Dugdale zone estimate followed [rad] (lambda >~ 8 at M = 0.2)
 SECANT_STEPS = 12         # Newton steps at most (a warm start takes 2-4)
