@@ -42,6 +42,7 @@ import numpy as np
 from ..numerics import cohesive as _co
 from ..numerics import cohesive_branch as _cb
 from ..numerics import cohesive_contactless as _cl
+from ..numerics import cohesive_crossing as _cx
 from ..numerics import cohesive_zones as _cz
 from ..numerics import one_arc as _one
 from ..numerics import roots as _roots
@@ -73,7 +74,11 @@ class Cohesive(CohesiveEnds, SinglePatch):
     def _sub(self):
         """The sub-critical branch (jkrcyl.numerics.cohesive_branch.trace), a = 2 + t."""
         got = _cb.trace(self.law)                  # (x, kind, reason[, n_round]: the S-branch's round prefix)
-        return _ct.Traced(self.law, got[:3], _ct.SUB_OFFSET, n_round=got[3] if len(got) > 3 else 0)
+        x, n_after, crossed = _cx.sub_extended(self.law, got)        # on past the margin next to eps_crit
+        br = _ct.Traced(self.law, (x,) + got[1:3], _ct.SUB_OFFSET, n_round=got[3] if len(got) > 3 else 0,
+                        cross=(0, n_after))
+        br.crossed = crossed
+        return br
 
     @functools.cached_property
     def _super(self):
@@ -83,7 +88,10 @@ class Cohesive(CohesiveEnds, SinglePatch):
         if got is None or len(got[0]) < 2:
             return None
         tail, n_join = (got[3], got[4]) if len(got) > 3 else ((), 0)         # the round-zone tail and the join
-        return _ct.Traced(self.law, got[:3], _ct.SUPER_OFFSET, tail=tail, n_join=n_join)
+        x, before, after, joined = _cx.super_extended(self.law, got, self._sub.x[-1] if self._sub.crossed else None)
+        br = _ct.Traced(self.law, (x,) + got[1:3], _ct.SUPER_OFFSET, tail=tail, n_join=n_join, cross=(before, after))
+        br.joined = joined
+        return br
 
     def _branch(self, regime):
         if regime == "super-critical":
