@@ -34,7 +34,8 @@ H_MIN = 1e-10           # below: the step finds no point on the curve
 TURN = 0.98             # the largest turn per step (cosine between tangents)
 FD_LOG = 1e-7           # finite-difference step of the tangent in x
 SECANT_STEPS = 30
-TOL = 1e-13             # the correctors' tolerance in x
+TOL = 1e-13             # the correctors' tolerance in x ...
+NOISE = 1e-9            # ... or where the residual's rounding stops the secant this close
 MAX_STEPS = 800
 JOIN_TOL = 1e-6         # a target point is met when the curve passes its eps within this in log(c - eps)
 
@@ -58,15 +59,19 @@ def load(law, x):
 
 
 def _secant(f, a, b):
+    """The root of f by secant from a, b to TOL, or to NOISE where f's rounding stops it (a thin zone: F's
+    noise ~1e-14 over its slope in log(c - eps) ~4e-3 at lambda 200), else None."""
     fa, fb = f(a), f(b)
     for _ in range(SECANT_STEPS):
-        if not (np.isfinite(fa) and np.isfinite(fb)) or fa == fb:
+        if not (np.isfinite(fa) and np.isfinite(fb)):
             return None
+        if fa == fb:
+            return b if abs(b - a) <= NOISE else None
         a, fa, b = b, fb, b - fb * (b - a) / (fb - fa)
         if abs(b - a) <= TOL * max(1.0, abs(b)):
             return b
         fb = f(b)
-    return None
+    return b if abs(b - a) <= NOISE else None
 
 
 def at_eps(law, le, ld):
