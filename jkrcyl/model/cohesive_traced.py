@@ -44,7 +44,7 @@ class Traced:
         self.n_join = int(np.count_nonzero(keep[len(keep) - n_join:])) if n_join else 0
         self.cross = tuple(int(np.count_nonzero(k)) if n else 0 for n, k in
                            zip(cross, (keep[:cross[0]], keep[len(keep) - cross[1]:])))
-        self.crossed, self.joined = False, ""
+        self.crossed, self.joined, self.cross_reasons = False, "", ("", "")
         self.t = self.x[:, 0] - self.x[0, 0] if kind == "all" else _cb.arclength(self.x)
         self.tail = np.asarray(tail, dtype=float)
         self.t_round = float(self.t[-1])               # the last zone point; the tail starts JOIN past it
@@ -116,6 +116,9 @@ def super_short(sv, br, a):
     trace failed, the zone reaches round, the load cap or eps = pi - 0.05 (the last only to a walker at that point:
     for the table's extent, a = None, eps = pi - 0.05 ends the branch, as it ends the sub-critical one)."""
     if a is not None and a <= br.offset + 1e-9 * max(1.0, br.t[-1]):
+        if br.cross[0] and br.cross_reasons[0] != "cap":      # followed back across a_crit (cohesive_crossing)
+            return (f"the super-critical branch is followed back across the receding limit a_crit down to eps = "
+                    f"{sv._where(br.offset)[0]:.6g} rad ({br.cross_reasons[0]}): the part beyond is not traced")
         return (f"the super-critical branch is traced from eps = {sv._where(br.offset)[0]:.6g} rad, next to "
                 "the receding limit a_crit, where |P| grows without bound")
     if a is not None and a < br.offset + (br.a_end - br.offset) * (1 - 1e-9):

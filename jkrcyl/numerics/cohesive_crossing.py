@@ -38,6 +38,8 @@ TOL = 1e-13             # the correctors' tolerance in x ...
 NOISE = 1e-9            # ... or where the residual's rounding stops the secant this close
 MAX_STEPS = 800
 JOIN_TOL = 1e-6         # a target point is met when the curve passes its eps within this in log(c - eps)
+WINDOW = 0.05           # followed within this of eps_crit, relative (the pole region: the rigid pair's part
+                        # below it folds at eps_crit (1 - 2.3e-2)); beyond, a part not joined is not traced
 
 Extended = namedtuple("Extended", "points reason")      # points (n, 2) after the start; reason: why it stopped
 
@@ -113,7 +115,8 @@ def _correct(law, x, t, h):
 
 def _inside(law, x, eps_top):
     eps, d = math.exp(x[0]), math.exp(x[1])
-    return law.eps_lo <= eps <= eps_top and eps + d < math.pi * (1 - 1e-9) and abs(load(law, x)) <= law.p_cap
+    near = abs(math.log(eps / eps_crit(law))) <= WINDOW
+    return near and law.eps_lo <= eps <= eps_top and eps + d < math.pi * (1 - 1e-9) and abs(load(law, x)) <= law.p_cap
 
 
 def _passes(le, x, y):
@@ -123,7 +126,7 @@ def _passes(le, x, y):
 def extend(law, x0, direction, eps_top, eps_stop=None, target=None):
     """The curve F = 0 from the point x0 on it, leaving along direction (in x), up to (reason) 'cap' (the next
     point's |p| beyond P_CAP m^(4/3)), 'bounds' (eps below the trace's start or above eps_top, c reaching pi),
-    'stop' (the line eps = eps_stop: the last point on it), 'joined' (the curve passing the target point's eps
+    'stop' (the line eps = eps_stop: the last point on it), 'window' (eps leaving WINDOW of eps_crit), 'joined' (the curve passing the target point's eps
     within JOIN_TOL of it: the last point is the target), 'stalled' or 'steps'."""
     x, prev = np.asarray(x0, dtype=float), np.asarray(direction, dtype=float)
     t = _tangent(law, x, prev)
@@ -151,7 +154,8 @@ def extend(law, x0, direction, eps_top, eps_stop=None, target=None):
             if h > 1e-3 * H_FIRST:       # close in on the bound (the last point within a fraction of a step)
                 h, edge = h / 4, True
                 continue
-            return Extended(_thinned(pts), "cap" if abs(load(law, y)) > law.p_cap else "bounds")
+            far = abs(math.log(math.exp(y[0]) / eps_crit(law))) > WINDOW
+            return Extended(_thinned(pts), "cap" if abs(load(law, y)) > law.p_cap else "window" if far else "bounds")
         pts.append(y)
         x, t, h = y, t_new, (h if edge else min(1.5 * h, H_MAX))
     return Extended(_thinned(pts), "steps")
@@ -194,20 +198,21 @@ def sub_extended(law, traced):
 
 
 def super_extended(law, traced, sub_end):
-    """(x, n_before, n_after, joined): the super-critical trace (x, kind, reason[, tail, n_join]:
+    """(x, n_before, n_after, joined, reasons): the super-critical trace (x, kind, reason[, tail, n_join]:
     jkrcyl.numerics.cohesive_super.trace) with each end at the margin next to eps_crit followed on
     (:func:`extend`; its end only where no round-zone tail follows it) through eps_crit up to the load cap or
     the sub-critical table's end sub_end on eps_crit (None where it ends elsewhere): joined -- 'start', 'end'
-    or '' -- says which end of the super-critical table is that point."""
+    or '' -- says which end of the super-critical table is that point; reasons: :func:`extend`'s at either end
+    ('' where that end was not followed on)."""
     x, kind = traced[0], traced[1]
     ec = eps_crit(law)
     if kind != "zone" or len(x) < 2:
-        return x, 0, 0, ""
-    joined, before, after = "", np.zeros((0, 2)), np.zeros((0, 2))
+        return x, 0, 0, "", ("", "")
+    joined, before, after, reasons = "", np.zeros((0, 2)), np.zeros((0, 2)), ["", ""]
     if _at_margin(law, x[0], ec):
         ext = extend(law, x[0], x[0] - x[1], _csu.EPS_TOP, target=sub_end)
-        before, joined = ext.points[::-1], ("start" if ext.reason == "joined" else "")
+        before, joined, reasons[0] = ext.points[::-1], ("start" if ext.reason == "joined" else ""), ext.reason
     if len(traced) == 3 and not traced[2] and _at_margin(law, x[-1], ec):
         ext = extend(law, x[-1], x[-1] - x[-2], _csu.EPS_TOP, target=None if joined else sub_end)
-        after, joined = ext.points, (joined or ("end" if ext.reason == "joined" else ""))
-    return np.vstack([before, x, after]), len(before), len(after), joined
+        after, joined, reasons[1] = ext.points, (joined or ("end" if ext.reason == "joined" else "")), ext.reason
+    return np.vstack([before, x, after]), len(before), len(after), joined, tuple(reasons)
