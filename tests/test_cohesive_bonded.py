@@ -8,6 +8,7 @@ reaches s0 at P* = -(pi s0/vartheta - 1) -- written here from that balance, not 
 import math
 import re
 
+import numpy as np
 import pytest
 
 from jkrcyl.analysis import cycle
@@ -69,12 +70,14 @@ def test_the_laws_bonded_pin_cycle_closes_and_dissipates_the_loop_work():
     pb, un = _law()
     cy = cycle.cycle(pb, un, "load", 1.0, -20.0, 200, lambda P, d: d)
     assert cy.closed_from_leg == 1 and [j.kind for j in cy.jumps] == ["snap-in", "zip", "zip"]
-    top_max, top_min = sorted(-f.P_star for f in fw.stationary_points(pb, un, "load", "super-critical"))
+    folds = fw.stationary_points(pb, un, "load", "super-critical")
+    top_max, top_min = sorted(-f.P_star for f in folds)
+    a_mid = np.mean([f.a for f in folds])          # the S's unstable middle part lies between its folds
     P_bond = full.bond_limit(pb, -1.0)
 
     def delta(P, part):                   # the stable top-patch state of the S's part A (larger) or B
         xs = [s for s in fw.solve_normalised(pb, un, "load", P, ["super-critical-top"]) if s.stable]
-        xs = [s for s in xs if (s.a > 1002.0) == (part == "A")]
+        xs = [s for s in xs if (s.a > a_mid) == (part == "A")]
         assert len(xs) == 1, (P, part, xs)
         return xs[0].delta
 

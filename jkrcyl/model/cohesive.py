@@ -19,6 +19,10 @@
   end's first root meets its second (a longer zone), and follows that root back until the zone reaches round
   (h(pi) = h0); as lambda -> inf the fold moves to eps -> pi and the branch tends to JKR's.  Present where the
   pair has a receding contact below pi - 0.05 (not a rigid cradle at alpha* = 0).
+* Across eps_crit: a table's end at the traces' margin there is followed on where the branch crosses eps_crit
+  with a finite load (jkrcyl.numerics.cohesive_crossing): the sub-critical end up to eps_crit, a super-critical
+  end back across it to the load cap or to that sub-critical end, the two tables then continuing into each other
+  (:meth:`continues`).
 
 Slopes are per point: along the branch's tangent (implicit differentiation of k = 0, h(c) = h0 with finite
 differences in eps and c at a fixed approach), never across table points.  Stability: the rule of
@@ -42,6 +46,7 @@ import numpy as np
 from ..numerics import cohesive as _co
 from ..numerics import cohesive_branch as _cb
 from ..numerics import cohesive_contactless as _cl
+from ..numerics import cohesive_crossing as _cx
 from ..numerics import cohesive_zones as _cz
 from ..numerics import one_arc as _one
 from ..numerics import roots as _roots
@@ -73,7 +78,11 @@ class Cohesive(CohesiveEnds, SinglePatch):
     def _sub(self):
         """The sub-critical branch (jkrcyl.numerics.cohesive_branch.trace), a = 2 + t."""
         got = _cb.trace(self.law)                  # (x, kind, reason[, n_round]: the S-branch's round prefix)
-        return _ct.Traced(self.law, got[:3], _ct.SUB_OFFSET, n_round=got[3] if len(got) > 3 else 0)
+        x, n_after, crossed = _cx.sub_extended(self.law, got)        # on past the margin next to eps_crit
+        br = _ct.Traced(self.law, (x,) + got[1:3], _ct.SUB_OFFSET, n_round=got[3] if len(got) > 3 else 0,
+                        cross=(0, n_after))
+        br.crossed = crossed
+        return br
 
     @functools.cached_property
     def _super(self):
@@ -83,7 +92,11 @@ class Cohesive(CohesiveEnds, SinglePatch):
         if got is None or len(got[0]) < 2:
             return None
         tail, n_join = (got[3], got[4]) if len(got) > 3 else ((), 0)         # the round-zone tail and the join
-        return _ct.Traced(self.law, got[:3], _ct.SUPER_OFFSET, tail=tail, n_join=n_join)
+        x, before, after, joined, why = _cx.super_extended(self.law, got,
+                                                           self._sub.x[-1] if self._sub.crossed else None)
+        br = _ct.Traced(self.law, (x,) + got[1:3], _ct.SUPER_OFFSET, tail=tail, n_join=n_join, cross=(before, after))
+        br.joined, br.cross_reasons = joined, why
+        return br
 
     def _branch(self, regime):
         if regime == "super-critical":
@@ -123,8 +136,9 @@ class Cohesive(CohesiveEnds, SinglePatch):
 
     @functools.cached_property
     def a_crit(self) -> float:
-        """The pair's receding contact tan(eps_crit/2) (the one meaning of a_crit: jkrcyl.critical); the traced
-        branches stop short of it on either side (jkrcyl.numerics.cohesive_branch.EPS_MARGIN)."""
+        """The pair's receding contact tan(eps_crit/2) (the one meaning of a_crit: jkrcyl.critical); the
+        traces stop short of it on either side (jkrcyl.numerics.cohesive_branch.EPS_MARGIN), the tables go on
+        across it where the branch crosses it with a finite load (jkrcyl.numerics.cohesive_crossing)."""
         return _one.receding_contact(self.problem.theta, self.problem.gb, self.problem.alpha_ratio)
 
     def regimes(self):

@@ -37,9 +37,13 @@ class CohesiveEnds:
 
     def continues(self, regime, a):
         """The contact branch's touch end (a = 2) continues as the contactless one from the touch (a = 1) and
-        back; the super-critical round-zone tail's end next to full contact as the bonded pin (a = inf)."""
+        back; the super-critical round-zone tail's end next to full contact as the bonded pin (a = inf); the
+        sub-critical table's end on eps_crit (a regular crossing) as the super-critical table's end there."""
         if regime == "super-critical" and self.has(regime) and _csu.reaches_full(self._super.tail, a, self._super):
             return "full-contact", math.inf
+        join = self._joined(regime, a)
+        if join is not None:
+            return join
         if self._contactless is None:
             return None
         if regime == "sub-critical" and a <= 2.0 + 1e-9 * max(1.0, self._sub.t[-1]):
@@ -47,6 +51,23 @@ class CohesiveEnds:
         if regime == "contactless" and a >= 1.0 - 1.0 / CONTACTLESS_POINTS:
             return "sub-critical", 2.0
         return None
+
+    def _joined(self, regime, a):
+        """(regime, a) of the other table's end where a is the sub-critical table's end on eps_crit or the
+        super-critical table's end joined to it (jkrcyl.numerics.cohesive_crossing), else None."""
+        if regime not in ("sub-critical", "super-critical") or not self._sub.crossed:
+            return None
+        sub = self._sub
+        if not self.has("super-critical") or not self._super.joined:
+            return None
+        sup = self._super
+        at_end = lambda br, x: x >= br.offset + (br.a_end - br.offset) * (1 - 1e-9)
+        at_start = lambda br, x: x <= br.offset + 1e-9 * max(1.0, br.t[-1])
+        end_of_super = sup.offset if sup.joined == "start" else sup.offset + float(sup.t[-1])
+        if regime == "sub-critical" and at_end(sub, a):
+            return "super-critical", end_of_super
+        on_join = at_start(sup, a) if sup.joined == "start" else at_end(sup, a)
+        return ("sub-critical", sub.offset + float(sub.t[-1])) if regime == "super-critical" and on_join else None
 
     def grows_under_pull(self, a, control, towards=0):
         """At a fold, whether a further pull makes the contact grow: eps rising the way the walk went (towards,

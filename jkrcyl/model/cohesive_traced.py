@@ -14,6 +14,7 @@ import math
 import numpy as np
 
 from ..numerics import cohesive_branch as _cb
+from ..numerics import cohesive_crossing as _cx
 from ..numerics import cohesive_super as _csu
 
 SUB_OFFSET = 2.0
@@ -29,14 +30,21 @@ class Traced:
     A super-critical 'zone' trace whose zone reached round can carry a tail (``tail``: the eps of its states with
     the zone all round, beyond the last point, from its join): t goes on there as JOIN + log(eps/eps_join); its
     last ``n_join`` points run back in eps towards that join with c -> pi (jkrcyl.numerics.cohesive_super
-    .join_points), a state between them solved at its contact (cohesive_super.top_gap)."""
+    .join_points), a state between them solved at its contact (cohesive_super.top_gap).  ``cross`` (n_before,
+    n_after): how many of the first and last points follow the branch next to and across the receding contact
+    eps_crit (jkrcyl.numerics.cohesive_crossing), a state between them solved without the pole there;
+    ``crossed`` (the sub-critical table ends on eps_crit, a regular crossing) and ``joined`` ('start', 'end':
+    that end of the super-critical table is the sub-critical table's end there) are set by the solver."""
 
-    def __init__(self, law, traced, offset, n_round=0, tail=(), n_join=0):
+    def __init__(self, law, traced, offset, n_round=0, tail=(), n_join=0, cross=(0, 0)):
         x, kind, reason = traced
         keep = np.concatenate([[True], np.any(np.diff(x, axis=0) != 0, axis=1)])
         self.law, self.x, self.kind, self.reason, self.offset = law, x[keep], kind, reason, offset
         self.n_round = int(np.count_nonzero(keep[:n_round]))
         self.n_join = int(np.count_nonzero(keep[len(keep) - n_join:])) if n_join else 0
+        self.cross = tuple(int(np.count_nonzero(k)) if n else 0 for n, k in
+                           zip(cross, (keep[:cross[0]], keep[len(keep) - cross[1]:])))
+        self.crossed, self.joined, self.cross_reasons = False, "", ("", "")
         self.t = self.x[:, 0] - self.x[0, 0] if kind == "all" else _cb.arclength(self.x)
         self.tail = np.asarray(tail, dtype=float)
         self.t_round = float(self.t[-1])               # the last zone point; the tail starts JOIN past it
@@ -80,6 +88,10 @@ class Traced:
             return math.exp(x[0, 0] + min(t, tt[self.n_round - 1])), math.pi, (1.0, 0.0)
         if f <= 0 or f >= 1:
             xp = x[j] if f <= 0 else x[j + 1]
+        elif j < self.cross[0] or j >= len(x) - 1 - self.cross[1]:      # next to eps_crit: without its pole
+            xp = _cx.project(self.law, x[j] + f * chord, chord)
+            if xp is None:
+                raise ValueError(f"a: no cohesive state found at the branch parameter {self.offset + t!r}")
         elif j >= len(x) - 1 - self.n_join:        # towards the join (c -> pi): the zone end at the contact
             eps = math.exp(x[j, 0] + f * chord[0])
             s = _csu.top_gap(self.law, eps)
@@ -104,6 +116,9 @@ def super_short(sv, br, a):
     trace failed, the zone reaches round, the load cap or eps = pi - 0.05 (the last only to a walker at that point:
     for the table's extent, a = None, eps = pi - 0.05 ends the branch, as it ends the sub-critical one)."""
     if a is not None and a <= br.offset + 1e-9 * max(1.0, br.t[-1]):
+        if br.cross[0] and br.cross_reasons[0] != "cap":      # followed back across a_crit (cohesive_crossing)
+            return (f"the super-critical branch is followed back across the receding limit a_crit down to eps = "
+                    f"{sv._where(br.offset)[0]:.6g} rad ({br.cross_reasons[0]}): the part beyond is not traced")
         return (f"the super-critical branch is traced from eps = {sv._where(br.offset)[0]:.6g} rad, next to "
                 "the receding limit a_crit, where |P| grows without bound")
     if a is not None and a < br.offset + (br.a_end - br.offset) * (1 - 1e-9):

@@ -259,7 +259,7 @@ def load_approach(law, eps, c):
         p, delta, _ = _bo.round_values(law, eps)
         return p, delta
     aff = affine(law, eps, c)
-    delta = -aff[0][0] / aff[0][1]
+    delta = _cc.approach(aff)
     return _at(aff[1], delta), delta
 
 
@@ -287,7 +287,7 @@ def _slopes(law, eps, c, direction):
         return _bo.round_slopes(law, eps)
     shift = law.fixed(eps).shift                  # the stencil's contacts in the centre's system
     aff = affine(law, eps, c)
-    delta = -aff[0][0] / aff[0][1]
+    delta = _cc.approach(aff)
     k_d, p_d = aff[0][1], aff[1][1]
     dv = lambda i, pair, h: (_at(pair[0][i], delta) - _at(pair[1][i], delta)) / (2 * h)
     if c < math.pi:

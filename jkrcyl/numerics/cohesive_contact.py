@@ -196,3 +196,17 @@ def contact_nodes(eps, zone, ar=0.0):
         return nodes_for(eps, zone, ar), False
     n = max(NODES_LAYER if ar == 0.0 else NODES_LAYER_ALPHA, _arcs.nodes_for(eps, ar))
     return (int(n) if ar == 0.0 else int(NODES_ALPHA * math.ceil(n / NODES_ALPHA))), True
+
+
+KAPPA = 1e-2            # approach: k's slope this small against g's -- next to the receding contact eps_crit
+
+
+def approach(aff):
+    """delta/Delta of the equilibrium k = 0, g = 0 from the affine [k, p, B, g] at a fixed contact and zone end
+    (jkrcyl.numerics.cohesive_branch.affine): from k = 0 (-k0/k1), but where k's slope k1 is below KAPPA times g's,
+    by least squares of both -- k1 vanishes at eps_crit, where k0 does too on a branch crossing it with a finite
+    approach (then -k0/k1 is 0/0 and -g0/g1 holds)."""
+    (k0, k1), g = aff[0], aff[3]
+    if g is None or abs(k1) >= KAPPA * abs(g[1]):
+        return -k0 / k1
+    return -(k0 * k1 + g[0] * g[1]) / (k1 * k1 + g[1] * g[1])

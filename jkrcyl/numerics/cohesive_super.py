@@ -13,7 +13,8 @@ a top gap within the range; the trace stops ROUND_MARGIN below c = pi, where the
 zone end closing on the top, solved at each contact down to pi - c = JOIN_S_MIN -- :func:`join_points` -- and
 goes on with its zone all round -- :func:`round_tail`, sampled in eps towards full contact, where its load tends
 to the bond limit of jkrcyl.model.full_contact.holds).  Where the zone reaches round already at the start, the branch has zones
-'all' (no zone end: k = 0 alone) and is sampled in eps.
+'all' (no zone end: k = 0 alone) and is sampled in eps.  Where the branch crosses eps_crit with a finite load the
+model's table goes on from an end at the margin back across it (jkrcyl.numerics.cohesive_crossing).
 
 JKR limit (measured, identical bodies, M = 0.4 and 0.8): at a fixed contact 2.0 <= eps <= 2.7 the load differs
 from JKR's (4.4) by C/lambda^2, |C| <= 5 in P* (2e-3 at lambda = 50); the limit is not uniform at either end: next
