@@ -112,3 +112,19 @@ def test_a_zone_only_pin_drawn_across_the_middle_stops_saying_why():
     assert on.fields.gap(np.linspace(c_on + 1e-3, math.pi, 200)).min() > h0
     stop = float(cy.delta[-1] / un.Delta)
     assert on.delta_over_Delta < stop < on.delta_over_Delta + 0.01
+
+
+def test_a_walk_from_between_the_last_points_goes_on_at_the_touch():
+    """lambda 1.2, M 0.04, grip 0 .. -0.3 Delta (h0 0.98): the pin touches at delta -0.122 Delta (closed form: the
+    zone-only pin with h(0) = 0) and is pulled back onto its zone-only states, stopping between the table's last
+    two points; pushed again it goes on across the touch onto the contact (was: read as a fold there -- 'no stable
+    state to jump to after the snap-in').  No jump but the first snap-in: nothing dissipated (reversible)."""
+    pb, un = _problem(1.2, 0.04)
+    cy = cycle.cycle(pb, un, "grip", 0.0, -0.3, 200, lambda P, d: d)
+    assert cy.note == "" and cy.closed_from_leg is not None and cy.dissipated == 0.0
+    assert [j.kind for j in cy.jumps] == ["snap-in"]
+    touch = cz.contactless_touch(pb.m, pb.edge.s0, THETA, GB).delta_over_Delta
+    up = [(b, d / un.Delta) for b, d, leg in zip(cy.branch, cy.delta, cy.leg) if leg == 2]
+    assert {"contactless", "sub-critical"} <= {b for b, _ in up}
+    crossing = [d for (b, d), (b2, _) in zip(up, up[1:]) if b == "contactless" and b2 == "sub-critical"]
+    assert len(crossing) == 1 and crossing[0] == pytest.approx(touch, abs=1e-9)
