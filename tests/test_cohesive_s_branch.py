@@ -22,6 +22,7 @@ from hypothesis import strategies as st
 import jkrcyl
 from cases import cohesive_contact
 from jkrcyl.analysis import cohesive_map
+from jkrcyl.analysis import landing
 from jkrcyl.model.problem import Problem
 from jkrcyl.model.single_patch import solver
 from jkrcyl.numerics import arcs
@@ -266,17 +267,43 @@ def test_the_map_cell_is_the_walkers_answer():
     assert math.isnan(P) and cohesive_map.OUTCOMES[kind].startswith("no adherence force from first contact")
 
 
-def test_a_floating_pin_cycles_through_its_range_without_a_jump():
-    """h0 = 3.4 Delta (lambda = 0.05, M = 0.093, identical bodies): the range reaches round, no state pulls.  A
-    load cycle goes on from the floating pin onto the bottom contact, back to its touch, across the floating range
-    (P = 0) onto the top one and back: no jump, nothing dissipated (the path is reversible)."""
+def _round_top_gap(law, eps, n=96):
+    """h(pi)/Delta of the state with the contact eps and its zone all round, solved alone (the fixed contact's
+    linear system, n nodes: no zone end, a smooth field), valid or not."""
+    m, s0, theta, gb, ar = law
+    fc = co.FixedContact(eps, arcs.Kernel(theta, gb, ar), n)
+    zones = co.zones_of(math.pi)
+    dn, u = fc.solve(zones, s0)
+    return fc.gap(math.pi, dn, u, zones, s0)[0]
+
+
+def test_a_floating_pin_cycles_through_its_range_and_its_narrow_s():
+    """h0 = 3.4 Delta (lambda = 0.05, M = 0.093, identical bodies: the law of test_a_late_opening_is_an_s_not_a_bridge)
+    the range reaches round, no state pulls.  A load cycle goes on from the floating pin onto the bottom contact,
+    back to its touch, across the floating range (P = 0) onto the top one and back -- and, pushed past the round
+    zone's opening (eps_open: h(pi) = h0 of the round-zone state solved alone, Brent), across its S (~7e-5 rad wide
+    in eps) and back at the S's other fold: jumps only there, on either side, each dissipating >= 0, the loop
+    dissipating < 1e-6 of load_scale Delta.  (Was: no jump at all -- at h0 >= 2 Delta the S was sampled in eps
+    across its jump, not traced.)"""
     pair = jkrcyl.Materials.from_young(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3)
     probe = jkrcyl.Contact(1e-2, 1e-5, 1.0, pair)
     c = jkrcyl.Contact.with_lambda(1e-2, 1e-5, (0.09306048591020996 / probe.M) ** 2, pair, 0.05)
     assert c.pull_off("load").P is None
     cy = c.cycle(P_max=c.load_scale, P_min=-c.load_scale, n=10)
-    assert cy.jumps == [] and cy.dissipated == 0.0 and cy.note in ("", None)
+    assert cy.note in ("", None) and cy.closed_from_leg is not None
     assert cy.P.max() > 0.5 * c.load_scale and cy.P.min() < -0.5 * c.load_scale
+    law = law_of(c)
+    eps_open = roots.root(lambda e: _round_top_gap(law, e) - law[0] ** 2 / law[1], 0.99, 1.0, xtol=1e-15)
+    un = c.units
+    at = {"opening": set(), "fold": set()}
+    for j in cy.jumps:
+        assert j.before.branch.startswith("sub-critical") and j.after.branch == j.before.branch
+        off = 1 - j.before.eps / eps_open
+        assert abs(off) < 1e-9 or 1e-6 < off < 1e-4, off      # the round zone's end, or the S's other fold
+        at["opening" if abs(off) < 1e-9 else "fold"].add(j.before.side)
+        assert landing.dissipated(c.problem, un, j.before, j.after) >= 0
+    assert at == {"opening": {"bottom", "top"}, "fold": {"bottom", "top"}}
+    assert 0 < cy.dissipated < 1e-6 * c.load_scale * c.Delta
 
 
 def _zone_end_alone(eps, law, c_near, span):

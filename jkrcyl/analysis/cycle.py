@@ -76,11 +76,15 @@ class _Run:
             if to is None:
                 why = self.pb.not_modelled("full-contact", "the contact growing round after a zip (two patches, "
                                            "full contact) is") if kind == "zip" else ""
-                if kind == "top-contact" and not self.pb.models("two-patch"):
+                if kind == "top-contact" and s.branch.startswith("contactless"):
+                    why = _land.zone_only_stop(self.pb, s)
+                elif kind == "top-contact" and not self.pb.models("two-patch"):
                     why = _land.two_patch_refusal(self.pb) or self.pb.not_modelled(
                         "two-patch-branches", "the contact at the bottom and the top (two patches) is")
                 elif kind == "top-contact" and _land.into_pole(self.pb, self.un, s, self.control, value):
                     why = _land.POLE
+                why = why or _land.across_a_crit(self.pb, self.un, self.control, self.un.normalise(self.control,
+                                                                                                   value))
                 return None, f"leg {leg}: no stable state to jump to after the {kind} at {s!r}" + (
                     f" -- {why}" if why else "")
             if kind != "continue":                           # a branch going on as another is no jump

@@ -188,9 +188,10 @@ def _full_contact_solver(pb: Problem, un: Units, key: str, target: float, contro
 
 
 def separated_state(pb: Problem, un: Units, delta_over_Delta: float, control: str) -> Equilibrium:
-    """The free pin at approach delta (no contact, P = 0): stable under grip, neutral under load."""
+    """The free pin at approach delta (no contact, P = 0): stable under grip, neutral under load; its energy the
+    solver's (a cohesive pin floating in a range all round: its zone's, else 0)."""
     return _state(pb, un, "separated", control, "none", 0.0, 0.0, 0.0, delta_over_Delta, 2 + delta_over_Delta,
-                  (True, False, True, True), 0.0, K=0.0)
+                  (True, False, True, True), 0.0, K=0.0, total=solver(pb).free_potential(delta_over_Delta))
 
 
 def _separated_solver(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:

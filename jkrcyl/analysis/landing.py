@@ -25,6 +25,45 @@ from .top_closing import arcs as _arcs, jkr_onset as _jkr_onset, land_on_top_con
 from .two_patch_family import family as _family
 
 
+ZONE_PARTS = ("the zone-only pin's gap at the bottom leaves the range (h(0) = h0: the pin drawn across the "
+              "middle of the hole, its gap nearly uniform): its zone would part into two beside the bottom -- a zone "
+              "that does not hold phi = 0 is not modelled")
+ZONES_BOTH_SIDES = ("the zone-only pin's top gap reaches the range h0: the pin held by zones at the bottom and the "
+                    "top without contact is not followed")
+
+
+def across_a_crit(pb: Problem, un: Units, control: str, target: float) -> str:
+    """Why a jump at the held value target (normalised) may have its landing on the untraced piece of a branch
+    crossing the receding limit with a finite load (the super-critical table turning back to a_crit: cohesive
+    model, jkrcyl.model.cohesive_traced.super_short): target between the two tables' ends there; else ''."""
+    sv = solver(pb)
+    if not sv.has("super-critical"):
+        return ""
+    end = float(np.asarray(_br.table(pb, "super-critical").a)[-1])
+    if "crosses it" not in sv.stops_short("super-critical", end):         # (only a traced law's table says so)
+        return ""
+    ends = [float(np.asarray(_br.table(pb, "sub-critical").a)[-1]), end]
+    key = CONTROLS[control].normalised
+    x, y = (getattr(_fw.single_patch_states(pb, un, r, [a], control)[0], key)
+            for r, a in zip(("sub-critical", "super-critical"), ends))
+    mirror = -target if control == "load" else -2.0 - target          # the top's states: the bottom's mirrored
+    if not any(min(x, y) <= v <= max(x, y) for v in (target, mirror)):
+        return ""
+    return (f"the state at this held {key} lies on the contact branch's crossing of the receding "
+            f"limit a_crit, between the sub-critical table's end ({x:.6g}) and the super-critical one's ({y:.6g}), "
+            "not traced")
+
+
+def zone_only_stop(pb: Problem, s) -> str:
+    """Why the zone-only pin s (at the end of its feasible states: jkrcyl.analysis.top_closing.top_onset) has no
+    state to go on to: where its gap reaches h0 -- at the bottom (its zone's middle leaves the range) or at the
+    top (a zone forms there)."""
+    side = solver(pb).point(s.a).state.fields
+    h0 = pb.m ** 2 / pb.edge.s0
+    bottom, top = (abs(float(side.gap(phi)[0]) - h0) for phi in (0.0, math.pi))
+    return ZONE_PARTS if bottom < top else ZONES_BOTH_SIDES
+
+
 def continuation(pb: Problem, un: Units, s, control: str):
     """The state where the branch of s continues past its end (the cohesive contact branch's touch end and the
     zone-only branch, SinglePatch.continues; the round-zone tail and the bonded pin at its bond limit, into each
@@ -86,7 +125,7 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
                                                       _zips_round(pb, un, control, target, side)]
         return (min(on, key=lambda x: x.size), "snap-in") if on else (None, "snap-in")
     if event in ("fold", "end") and s.branch.startswith("contactless"):    # the zone-only pin (cohesive)
-        if up:
+        if up == (s.side == "bottom"):      # driven towards its own side (on the top: the held value falls)
             into = [x for x in cands if x.side == s.side and x.size > 0]
             return (min(into, key=lambda x: x.size), "snap-in") if into else (None, "snap-in")
         off = [x for x in cands if x.branch == "separated" or x.side == other_side(s.side)]
@@ -121,6 +160,10 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
         # bond breaks; vartheta 10, gb 0, lambda 7.9, M 0.246: P* -0.1351 past the bond limit -0.1341)
         over = [x for x in cands if x.size > s.size]
         return (min(over, key=lambda x: x.size) if over else None), "zip"
+    if s.branch.startswith("contactless"):    # the zone-only pin's gap reaches h0 beyond its zone or in its
+        # middle (h0 ~ Delta): onto a stable state the jump dissipates to, the pin floating all round if it does
+        floating = [x for x in cands if x.branch == "separated"]
+        return (floating[0] if floating else None), "top-contact"
     if not pb.models("two-patch"):       # the top closes: the law's traced two-patch branch, where it has one
         if not pb.models("two-patch-branches") or two_patch_refusal(pb):
             return None, "top-contact"

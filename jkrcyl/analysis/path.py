@@ -39,6 +39,8 @@ def walk(track: "_tracks.SingleTrack", i: int, target: float):
         return [i], "target", track.state_at(track.a[i])
     nxt = [k for k in (i - 1, i + 1) if 0 <= k < y.size and sgn * (y[k] - y[i]) > 0 and stable[k] and feas[k]]
     if not nxt:
+        if _junction(track, i, sgn):     # a walk starting at the table's end where its branch goes on as another
+            return [i], "end", track.state_at(track.a[i])
         return [i], "fold", _fold(track, i, sgn)
     step = nxt[0] - i
     j, passed = i, [i]
@@ -54,6 +56,19 @@ def walk(track: "_tracks.SingleTrack", i: int, target: float):
         j = k
         passed.append(j)
     return passed, "end", track.state_at(track.a[j])
+
+
+def _junction(track, i: int, sgn: int) -> bool:
+    """Whether grid index i is an end of the table where the held quantity grows past it the walk's way and the
+    branch goes on as another there (SinglePatch.continues: the cohesive zone-only pin's touch and the contact
+    branch's; a walk from a state between the last two points starts at the nearest, the end: lambda 1.2, M 0.04,
+    vartheta 10 under grip read it as a fold, 'no stable state to jump to after the snap-in')."""
+    size, regime = track.y.size, getattr(track, "regime", None)
+    inner = 1 if i == 0 else size - 2 if i == size - 1 else -1
+    if regime is None or not 0 <= inner < size or sgn * (track.y[i] - track.y[inner]) <= 0:
+        return False
+    sv = solver(track.pb)
+    return sv.has(regime) and sv.continues(regime, float(track.a[i])) is not None
 
 
 def _fold(track, j: int, sgn: int):

@@ -114,11 +114,14 @@ class Cohesive(CohesiveEnds, SinglePatch):
 
     @functools.cached_property
     def _contactless(self):
-        """(c_lo, c_touch) of the zone-only branch, or None."""
+        """(c_far, c_touch) of the zone-only branch (c = c_far + a (c_touch - c_far), a in (0, 1]), or None: from
+        the free pin (c_far = 0) or, for a touch beyond pi/2 (h0 > Delta), from the pin floating all round (c_far
+        = pi; jkrcyl.numerics.cohesive_contactless.contactless_end: between pi/2 and such a touch the pin would
+        overlap the bottom, delta > 0 -- the branch once taken there, every state infeasible)."""
         c, touches = _cl.contactless_end(self.law)
         if not touches:
             return None
-        return (0.0, c) if c < math.pi / 2 else (math.pi / 2 * (1 + 1e-6), c)
+        return (0.0, c) if c < math.pi / 2 else (math.pi, c)
 
     @functools.cached_property
     def top_bridges(self):
@@ -161,9 +164,12 @@ class Cohesive(CohesiveEnds, SinglePatch):
         return s.contact / math.pi
 
     def grid(self, regime, n, small=0, a_max=None):
-        """The traced points (n = dense_points) or n points uniform in t; contactless: uniform in c."""
+        """The traced points (n = dense_points) or n points uniform in t; contactless: uniform in c, the table
+        with its touch end a = 1 (where the walk goes on onto the contact branch: a held value between the last
+        midpoint and the touch is reached on the table, not past the junction)."""
         if regime == "contactless":
-            n = CONTACTLESS_POINTS if n == self.dense_points else n
+            if n == self.dense_points:
+                return np.append((np.arange(CONTACTLESS_POINTS) + 0.5) / CONTACTLESS_POINTS, 1.0)
             return (np.arange(n) + 0.5) / n
         return self._branch(regime).grid(n, n == self.dense_points)
 
@@ -200,12 +206,13 @@ class Cohesive(CohesiveEnds, SinglePatch):
         pts = [self.point(x) for x in a.tolist()]
         col = lambda name: np.array([getattr(q, name) for q in pts], dtype=float)
         span = self._contactless[1] - self._contactless[0] if self._contactless else 1.0
-        c_scale = np.where(a <= 1, span, 1.0)                           # contactless: d/da = (c_touch - c_lo) d/dc
+        c_scale = np.where(a <= 1, span, 1.0)                           # contactless: d/da = (c_touch - c_far) d/dc
         cw = self.problem.work_shift
         p, dn = col("p"), col("delta")
         dp, ddn = col("dp_dt") * c_scale, col("ddn_dt") * c_scale
+        turn = np.sign(c_scale)                   # D_X: oriented along t = c; a runs against c from c_far = pi
         return Slice(a=a, p=p, dp_da=dp, dn=dn, ddn_da=ddn, dw=dn + cw * p, ddw_da=ddn + cw * dp, h=col("h_pi"),
-                     p_k=col("D_p"), dn_k=col("D_dn"), B=col("B"), eps=col("eps"), c=col("c"),
+                     p_k=col("D_p") * turn, dn_k=col("D_dn") * turn, B=col("B"), eps=col("eps"), c=col("c"),
                      c_top=np.zeros(a.size), feasible=col("feasible").astype(bool))
 
     def potential(self, s):

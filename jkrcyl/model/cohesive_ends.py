@@ -84,9 +84,20 @@ class CohesiveEnds:
     def free_range(self):
         """The free pin feels no traction while every gap exceeds h0: -2 + h0 < delta/Delta < -h0; where the
         contact branch starts with its zone round (no zone-only pin touches) and the pin floats in the range all
-        round (P = 0, :meth:`floating`) up to a larger approach, that range stands for it (both hold -1)."""
+        round (P = 0, :meth:`floating`) up to a larger approach, or the zone-only pin starts from the floating one
+        (h0 > Delta: the ranges of the bottom and the top overlap), that range stands for it (both hold -1)."""
         h0, fl = self.law.h0, self.floating()
-        return fl if fl is not None and fl[1] > -h0 and self._contactless is None else (-2.0 + h0, -h0)
+        joined = self._contactless is None or self._contactless[0] == math.pi
+        return fl if fl is not None and fl[1] > -h0 and joined else (-2.0 + h0, -h0)
+
+    def free_potential(self, dn):
+        """The total potential of the pin without contact at delta/Delta = dn (kernel scale): the floating pin's
+        (jkrcyl.numerics.cohesive_zones.floating_state: its zone all round) within :meth:`floating`, else 0."""
+        fl = self.floating()
+        if fl is None or not fl[0] <= dn <= fl[1]:
+            return 0.0
+        return _cb.potential(_cz.floating_state(dn, self.law.m, self.law.s0, self.law.theta, self.law.gb,
+                                                self.law.ar))
 
     def floats_onto(self):
         """Where the sub-critical branch starts with its zone round (zones 'all' at its touch end), the pin reaches

@@ -112,9 +112,11 @@ class Traced:
 
 def super_short(sv, br, a):
     """Why the super-critical table of the solver sv (jkrcyl.model.cohesive.Cohesive) ends at a (None: its last
-    point): both of its ends are short of the branch -- the first point lies next to the pole a_crit (|p| unbounded past it), the last one where the
-    trace failed, the zone reaches round, the load cap or eps = pi - 0.05 (the last only to a walker at that point:
-    for the table's extent, a = None, eps = pi - 0.05 ends the branch, as it ends the sub-critical one)."""
+    point): both of its ends are short of the branch -- the first point lies next to the pole a_crit (|p| unbounded
+    past it), the last one where the trace failed, the zone reaches round, the load cap, the branch turns back to
+    the pole with a finite load (it crosses onto the sub-critical branch there) or eps = pi - 0.05 (the last two
+    only to a walker at that point: for the table's extent, a = None, they end the branch, as the sub-critical
+    one ends there)."""
     if a is not None and a <= br.offset + 1e-9 * max(1.0, br.t[-1]):
         if br.cross[0] and br.cross_reasons[0] != "cap":      # followed back across a_crit (cohesive_crossing)
             return (f"the super-critical branch is followed back across the receding limit a_crit down to eps = "
@@ -132,4 +134,9 @@ def super_short(sv, br, a):
         return f"traced up to |p| = P_CAP m^(4/3) = {sv.law.p_cap:.6g}"
     if a is None:              # the table's extent (forward searches): the branch's end, as the sub-critical one
         return ""
+    lo = _csu.eps_range(sv.law)[0]
+    if eps < lo * (1 + _cb.EPS_MARGIN):      # turned back in eps: it crosses the pole with P finite
+        return (f"the super-critical branch turns back to the receding limit a_crit (eps = {eps:.6g} rad, "
+                f"c = {c:.6g} rad) and crosses it onto the sub-critical one with a finite load: the crossing is "
+                "not traced")
     return f"traced up to eps = {eps:.6g} rad (pi - 0.05): the states nearer full contact are not traced"

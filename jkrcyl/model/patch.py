@@ -100,6 +100,10 @@ class SinglePatch:
         """(lo, hi) of delta/Delta where the free pin (no contact, no traction) is an equilibrium."""
         return -2.0, 0.0
 
+    def free_potential(self, dn):
+        """The total potential of the pin without contact at delta/Delta = dn (kernel scale): 0, no traction."""
+        return 0.0
+
     def stops_short(self, regime: str, a=None) -> str:
         """Why the branch's table ends before the branch does ('' where it reaches the end: a_crit, round);
         with a: only where a is the table's last point (the end the table stops short at)."""

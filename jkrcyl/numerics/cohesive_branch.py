@@ -182,10 +182,11 @@ def trace(law):
 
 
 def opens_of(law):
-    """:func:`top_opens` of a law whose range reaches round at the touch end and is shorter than 2 Delta (else
-    None: h0 >= 2 Delta, no state pulls), computed once per law."""
+    """:func:`top_opens` of a law whose range reaches round at the touch end (else None), computed once per law.
+    Asked at any range: at h0 >= 2 Delta no state pulls, but pushed the round zone still jumps (vartheta 10, gb 0,
+    lambda 3.155, M 0.246: h0 4.21, the S traced whole by cohesive_round, not sampled in eps across its jump)."""
     if not hasattr(law, "_opens"):
-        law._opens = top_opens(law) if law.h0 < 2.0 and law.state(law.eps_lo).zones == "all" else None
+        law._opens = top_opens(law) if law.state(law.eps_lo).zones == "all" else None
     return law._opens
 
 

@@ -36,7 +36,7 @@ def contactless_point(law, c):
     dg/dc|_X = det/X_delta > 0, so D_X = sigma X_delta: D_p = 0 (the pin, a rigid body held by its zone, is a
     saddle under load), D_dn = sigma = sign(dc/dT) = sign(g_delta) = -sign(cos c)."""
     st = _cz.contactless_state(c, law.m, law.s0, law.theta, law.gb, law.ar)
-    hc = 1e-5 * min(c, abs(math.pi / 2 - c))
+    hc = 1e-5 * min(c, abs(math.pi / 2 - c), math.pi - c)
     plus, minus = (_cz.contactless_state(c + s * hc, law.m, law.s0, law.theta, law.gb, law.ar) for s in (1, -1))
     dp, ddn = (plus.p - minus.p) / (2 * hc), (plus.delta_over_Delta - minus.delta_over_Delta) / (2 * hc)
     sigma = -1.0 if math.cos(c) > 0 else 1.0

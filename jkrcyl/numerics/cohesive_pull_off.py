@@ -84,7 +84,7 @@ def pull_off_load(m, s0, theta, gb, ar=0.0, steps=(0.1, 0.3), start=START, xtol=
         # h0 >= 2 Delta: the range alone reaches round and no state pulls (a jump there changes no answer); else
         # the pin floats in the range and touches onto round-zone contacts that push: it stays at the touch at
         # P = 0 -- a jump of the round zone (cohesive_branch.top_opens) lies beyond, reached only by pushing
-        opens = _cb.opens_of(law)
+        opens = _cb.opens_of(law) if law.h0 < 2.0 else None
         if start.p >= 0 and opens is not None:
             return none(floats_reason(opens))
         return none("no adherence force: the zone reaches round (p >= 0)" if start.p >= 0 else

@@ -134,3 +134,10 @@ def floating_range(m, s0, theta, gb, ar=0.0):
     # (1 - cos phi)(1 + d) - d + zc is monotone in phi: h(0) = zc - d and h(pi) = 2 + d + zc bound it
     lo, hi = max(zc - h0, -2 - zc), min(zc, h0 - 2 - zc)
     return (lo, hi) if lo < hi else None
+
+
+def floating_state(dn, m, s0, theta, gb, ar=0.0):
+    """The pin floating at delta/Delta = dn with its zone the whole circle (no contact, p = 0), in closed form;
+    its total potential is constant over :func:`floating_range` (dE = p d(delta) = 0)."""
+    m, s0, kernel = _co._law(m, s0, theta, gb, ar)
+    return _co._state(0.0, math.pi, None, float(dn), None, _co.zones_of(math.pi), m, s0, kernel, gb, 0)
