@@ -81,6 +81,8 @@ class _Run:
                         "two-patch-branches", "the contact at the bottom and the top (two patches) is")
                 elif kind == "top-contact" and _land.into_pole(self.pb, self.un, s, self.control, value):
                     why = _land.POLE
+                if not why and kind in ("zip", "top-contact") and self.pb.rigid_cradle:
+                    why = _reasons.rigid_cradle()
                 return None, f"leg {leg}: no stable state to jump to after the {kind} at {s!r}" + (
                     f" -- {why}" if why else "")
             if kind != "continue":                           # a branch going on as another is no jump
