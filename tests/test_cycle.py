@@ -236,3 +236,16 @@ def test_solve_delta_work_hits_the_request():
         assert s.stable == s.stable_grip_work
     with pytest.raises(ValueError, match="exactly one"):
         c.solve(P=0.0, delta_work=0.0)
+
+
+def test_a_rigid_cradles_cycle_that_zips_says_why_it_stops():
+    """A rigid cradle (vartheta = inf) round a pin at M 0.65, grip 0 .. -1.95 Delta: the super-critical fold zips
+    the contact round, where full contact and two patches (finite vartheta only: jkrcyl.model.full_contact) have no
+    state; the cycle stops there and says so (it printed 'no stable state to jump to after the zip' and nothing
+    more)."""
+    m = jkrcyl.Materials.from_young(E=math.inf, nu=0.0, E_I=3.576e9, nu_I=0.0)
+    c0 = jkrcyl.Contact(R=1e-2, Delta=1e-5, w=1.0, materials=m)
+    c = jkrcyl.Contact(R=1e-2, Delta=1e-5, w=(0.6537 / c0.M) ** 2, materials=m)
+    cy = c.cycle(delta_max=0.0, delta_min=-1.95 * c.Delta, control="grip", n=100)
+    assert cy.dissipated is None and "after the zip" in cy.note
+    assert "a rigid cradle, vartheta = inf" in cy.note and "needing a finite vartheta" in cy.note

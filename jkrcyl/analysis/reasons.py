@@ -20,9 +20,14 @@ def no_first_contact_reason(pb: Problem, control: str = "load") -> str:
         return why + (_single_patch_only(pb) if control == "load" else "") + (
             f" (on the branches modelled for the {pb.edge.name} law: two patches are not)")
     if pb.rigid_cradle:      # full contact and two patches need a finite vartheta (model.full_contact)
-        why += (" (a rigid cradle, vartheta = inf: a pin that zips round into full contact at first touch is not "
-                "modelled, full contact and two patches needing a finite vartheta)")
+        why += " (" + rigid_cradle("a pin that zips round into full contact at first touch") + ")"
     return why
+
+
+def rigid_cradle(what: str = "the contact growing round (two patches, full contact)") -> str:
+    """Why a rigid cradle's pin has no state where its contact grows round: the wording pull_off and cycle print."""
+    return f"a rigid cradle, vartheta = inf: {what} is not modelled, full contact and two patches needing a " \
+        "finite vartheta"
 
 
 def _single_patch_only(pb: Problem) -> str:

@@ -112,6 +112,18 @@ class Cohesive(CohesiveEnds, SinglePatch):
         br = self._branch(self.regime_of(a))
         return br.where(a - br.offset)
 
+    def _join_chord(self, a):
+        """Between the super-critical trace's last zone point and its tail's join (Traced.gap: pi - c below
+        JOIN_S_MIN, where the states' finite-difference steps, scaled by pi - c, vanish): (dp/da, d(delta)/da) of
+        the chord across (p, delta monotone there: the fold is the join) and the last zone point's D_p, D_dn (the
+        zone family's stability); None elsewhere."""
+        br = self._super if a >= _ct.SUPER_OFFSET else None
+        if br is None or br.gap(a - br.offset) is None:
+            return None
+        a0, a1 = br.offset + br.t[len(br.x) - 1], br.offset + br.t[len(br.x)]     # table points: cached
+        p0, p1 = self.point(a0), self.point(a1)
+        return (p1.p - p0.p) / (a1 - a0), (p1.delta - p0.delta) / (a1 - a0), p0.D_p, p0.D_dn
+
     @functools.cached_property
     def _contactless(self):
         """(c_far, c_touch) of the zone-only branch (c = c_far + a (c_touch - c_far), a in (0, 1]), or None: from
@@ -196,6 +208,9 @@ class Cohesive(CohesiveEnds, SinglePatch):
             else:
                 eps, c, direction = self._where(a)
                 pt = _cb.point(self.law, eps, c, direction)
+                chord = self._join_chord(a)
+                if chord is not None:
+                    pt = pt._replace(dp_dt=chord[0], ddn_dt=chord[1], D_p=chord[2], D_dn=chord[3])
             if len(self._cache) > 20000:
                 self._cache.clear()
             self._cache[a] = pt
@@ -233,6 +248,9 @@ class Cohesive(CohesiveEnds, SinglePatch):
         """p, dn, dw or h at one branch parameter without the slopes, feasibility and energy, or a slope of p, dn
         or dw without the feasibility and energy (root refinement)."""
         a = float(a)
+        chord = self._join_chord(a) if field in _SLOPES else None
+        if chord is not None:
+            return {"dp_da": chord[0], "ddn_da": chord[1], "ddw_da": chord[1] + self.problem.work_shift * chord[0]}[field]
         if field in _SLOPES and a > 1 and a not in self._cache:
             eps, c, direction = self._where(a)
             dp, ddn = _cb.slopes(self.law, eps, c, direction)

@@ -19,7 +19,7 @@ from ..numerics import cohesive_super as _csu
 
 SUB_OFFSET = 2.0
 JOIN = 1e-6              # the parameter step from a trace's last zone point to its round-zone tail (the zone
-                         # states between, pi - c < cohesive_super.JOIN_S_MIN: a state there is the tail's first)
+                         # states between, pi - c < cohesive_super.JOIN_S_MIN: Traced.gap, solved at the contact)
 SUPER_OFFSET = 1000.0     # above any sub-critical parameter: that trace's arclength is at most 1500 x 0.25 = 375
 
 
@@ -51,6 +51,16 @@ class Traced:
         if self.tail.size:
             self.t = np.concatenate([self.t, self.t_round + JOIN + np.log(self.tail / self.tail[0])])
 
+    def gap(self, t):
+        """Where t lies in the step JOIN from the trace's last zone point to its tail's join: the fraction f in
+        (0, 1) of it (the states there: :meth:`where`); None elsewhere (within a few roundings of a - offset of
+        either end: that end)."""
+        if not self.tail.size:
+            return None
+        f = (t - self.t_round) / JOIN
+        snap = 1e-14 * (abs(self.offset) + self.t_round) / JOIN
+        return f if snap < f < 1 - snap else None
+
     def on_tail(self, a) -> bool:
         """Whether the parameter a lies on the round-zone tail (beyond the traced zone end)."""
         return bool(self.tail.size) and a - self.offset > self.t_round + 0.5 * JOIN
@@ -71,6 +81,9 @@ class Traced:
     def where(self, t):
         """(eps, c, direction) of the branch at t (exact: projected onto the curve); direction = (d eps, d c) of
         increasing t."""
+        f = self.gap(t)
+        if f is not None:           # from the last zone point to the join: the zone state at eps between theirs
+            return self._join_state(f)
         # the round-zone tail, t = t_round + JOIN + log(eps/eps_join) (half a JOIN: a - offset rounds t_round up)
         if self.tail.size and t > self.t_round + 0.5 * JOIN:
             return self.tail[0] * math.exp(max(t - self.t_round - JOIN, 0.0)), math.pi, (1.0, 0.0)
@@ -108,6 +121,21 @@ class Traced:
         eps, d = math.exp(xp[0]), math.exp(xp[1])
         de = eps * chord[0]
         return eps, eps + d, (de, de + d * chord[1])
+
+    def _join_state(self, f):
+        """(eps, c, direction) a fraction f of the way from the trace's last zone point (pi - c >= JOIN_S_MIN) to
+        the join (c = pi): eps linear between theirs, pi - c the zone end's at that contact (cohesive_super
+        .top_gap).  The states between them are on the branch (lambda 3.87, M 1, vartheta 1: P* rises from
+        2.7248121 to the fold's 2.7248170 there; a step from one end to the other put states of either end's
+        load at every load between)."""
+        e0, ej = math.exp(self.x[-1, 0]), float(self.tail[0])
+        eps = e0 + f * (ej - e0)
+        s = _csu.top_gap(self.law, eps)
+        if s is None and f < 0.99:
+            raise ValueError(f"a: no cohesive state found at the branch parameter "
+                             f"{self.offset + self.t_round + f * JOIN!r}")
+        c0 = e0 + math.exp(self.x[-1, 1])
+        return eps, (math.pi if s is None else math.pi - s), (ej - e0, math.pi - c0)
 
 
 def super_short(sv, br, a):
