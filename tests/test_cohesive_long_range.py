@@ -105,14 +105,13 @@ def test_states_solved_alone_lie_on_the_traced_s():
     assert cs[0] == math.pi and cs[1] > cs[2] + 0.05
 
 
-def test_a_load_cycle_jumps_at_the_opening_and_stops_at_the_crossing_of_a_crit():
+def test_a_load_cycle_jumps_at_the_opening_and_crosses_a_crit_back():
     """Load cycle 2 .. -3 (normalised): pushed, the round zone's opening is the branch's largest load -- the
     jump there (held P) lands on the super-critical branch, stable, the potential less P delta falling
-    (landing.dissipated); pulled
-    back, the super-critical branch turns back to the receding limit with a finite load and crosses it onto the
-    sub-critical one (states solved alone either side of eps_crit: their difference in P shrinks 10-fold with the
-    distance) -- a crossing
-    not traced, said so (was: 'more than 20 jumps' from the table's false fold)."""
+    (landing.dissipated); pulled back, the super-critical branch turns back to the receding limit with a finite
+    load and crosses it onto the sub-critical one (states solved alone either side of eps_crit: their difference
+    in P shrinks 10-fold with the distance; jkrcyl.numerics.cohesive_crossing traces it) and the cycle closes
+    (was: 'more than 20 jumps' from the table's false fold, then a stop at the untraced crossing)."""
     pb = _problem()
     un = Units.normalised(pb)
     law = _law(pb)
@@ -126,8 +125,7 @@ def test_a_load_cycle_jumps_at_the_opening_and_stops_at_the_crossing_of_a_crit()
     assert b.P_star * pb.scale == pytest.approx(_round(law, eps_open).p, rel=1e-8)
     assert t.branch == "super-critical" and t.stable and t.feasible and t.P == pytest.approx(b.P, rel=1e-9)
     assert landing.dissipated(pb, un, b, t) > 0        # the potential less the load's work falls (kernel units)
-    if "crosses it onto the sub-critical one" not in cy.note:     # a solver that traces the crossing goes on
-        return
+    assert cy.note == ""                                # closed: the crossing of eps_crit is traced
     eps_crit = 2 * math.atan(solver(pb).a_crit)
     gap = []
     for r in (1e-4, 1e-5):
@@ -137,22 +135,22 @@ def test_a_load_cycle_jumps_at_the_opening_and_stops_at_the_crossing_of_a_crit()
     assert gap[1] < 0.2 * gap[0]        # continuous through eps_crit (a pole or a jump would not shrink)
 
 
-def test_a_grip_cycle_stops_where_its_landing_lies_on_the_crossing():
-    """Grip 0 .. 5 Delta: the round zone's opening is also the branch's largest approach; no traced state holds
-    that approach elsewhere -- the state that does lies within 1e-3 of eps_crit (a state solved alone there,
-    Brent in eps on the approach of cohesive_state, feasible), on the crossing not traced: the cycle says so
-    (was: no reason); a solver that traces the crossing lands there."""
+def test_a_grip_cycle_lands_on_the_crossing_of_a_crit():
+    """Grip 0 .. 5 Delta: the round zone's opening is also the branch's largest approach; no other state of the
+    single-patch tables holds that approach -- the one that does lies within 1e-3 of eps_crit (a state solved
+    alone there, Brent in eps on the approach of cohesive_state, feasible), on the crossing
+    (jkrcyl.numerics.cohesive_crossing): the jump lands there and the cycle closes (was: a stop, no reason)."""
     pb = _problem()
     un = Units.normalised(pb)
     law = _law(pb)
     cy = cycle.cycle(pb, un, "grip", 5.0, 0.0, 200, lambda P, d: d)
     assert all(landing.dissipated(pb, un, j.before, j.after) >= 0 for j in cy.jumps)
-    if "crossing of the receding limit a_crit" not in cy.note:     # a solver that traces the crossing lands there
-        assert "no stable state" not in cy.note
-        return
-    held = float(cy.delta[-1] / un.Delta)
+    assert cy.note == ""
+    jump = cy.jumps[0]
+    held = jump.before.delta_over_Delta
     eps_crit = 2 * math.atan(solver(pb).a_crit)
     alone = lambda e: co.cohesive_state(e, *law, near=2.715 - e)
     e = roots.root(lambda e: alone(e).delta_over_Delta - held, eps_crit * (1 - 1e-3), eps_crit * (1 + 1e-3),
                    xtol=1e-15)
     assert co.gap_check(alone(e), 120).feasible and abs(e / eps_crit - 1) < 1e-3
+    assert jump.after.eps == pytest.approx(e, rel=1e-8) and jump.after.stable and jump.after.feasible
