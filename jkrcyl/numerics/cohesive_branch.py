@@ -279,7 +279,7 @@ def state_values(law, eps, c):
     """(p, delta/Delta, h(pi)/Delta) of the equilibrium (eps, c) (k = 0), without slopes."""
     if _bo.applies(law, eps, c):                  # the zone all round: regular at the degenerate contact
         p, delta, u = _bo.round_values(law, eps)
-        return p, delta, law.fixed(eps).gap(math.pi, delta, u, _co.zones_of(math.pi), law.s0)[0]
+        return p, delta, _bo.of(law, eps).fc.gap(math.pi, delta, u, _co.zones_of(math.pi), law.s0)[0]
     p, delta = load_approach(law, eps, c)
     fc = law.fixed(eps)
     zones = _co.zones_of(min(c, math.pi))
@@ -335,9 +335,10 @@ def point(law, eps, c, direction):
     """The per-point data at an equilibrium (eps, c) (c = pi: zones 'all'); direction = (d eps, d c) of
     increasing t (its orientation only)."""
     delta, dp_dt, ddn_dt, D_p, D_dn = _slopes(law, eps, c, direction)
-    fc = law.fixed(eps)
+    round_zone = _bo.applies(law, eps, c)
+    fc = _bo.of(law, eps).fc if round_zone else law.fixed(eps)
     zones = _co.zones_of(min(c, math.pi))
-    if _bo.applies(law, eps, c):
+    if round_zone:
         u = _bo.round_values(law, eps)[2]
     else:
         u = fc.fx[3] + delta * fc.fx[4] + law.s0 * fc.zone_unit(zones)
