@@ -36,7 +36,7 @@ from . import cohesive_round as _round
 from . import one_arc as _one
 
 START = 1e-3            # the trace starts at eps = START 2 m^(2/3) (at most 1e-3; below: Law.touch)
-JUNCTION_STEP = 2.0     # the largest trace step in log eps below eps_lo (from the touch: measured 7 points)
+JUNCTION_STEP = 2.0     # the spacing in log eps of the states below eps_lo (from the touch: 6 points at lambda 20)
 EPS_MARGIN = 1e-3       # below the receding limit (the pair's pole)
 P_CAP = 200.0           # the branch is traced up to p = P_CAP m^(4/3) (200 times the adhesion load scale, ~100
                         # times the pull-off; beyond, solve warns: jkrcyl.BranchLimitWarning)
@@ -180,17 +180,15 @@ def trace(law):
             return _round.trace(law, opens[0], lambda x: _inside(law, x), lambda e: state_values(law, e, math.pi)[2])
         eps = np.geomspace(law.eps_lo, law.eps_hi, ALL_POINTS)
         return np.column_stack([np.log(eps), np.zeros(eps.size)]), "all", ""
-    eps0, pre = law.touch[1], np.zeros((0, 2))      # from the zone-only pin's touch (eps -> 0), or eps_lo
-    x0 = np.array([math.log(eps0), math.log((start if eps0 == law.eps_lo else law.state(eps0)).c - eps0)])
-    if eps0 < law.eps_lo:       # up to eps_lo the branch runs straight in log eps (c - c_touch ~ eps^2): long steps
-        got = _fo.follow(law, x0, lambda x: _inside(law, x) and x[0] < math.log(law.eps_lo), h0=1.0,
-                         h_max=JUNCTION_STEP, done=lambda y: True)
-        if got.reason:
-            return got.points, "zone", got.reason
-        pre, x0 = got.points[:-1], got.points[-1]
+    # from the zone-only pin's touch (eps0 -> 0) up to eps_lo the branch runs straight in log eps (c - c_touch ~
+    # eps^2): its states solved at contacts JUNCTION_STEP apart, then traced from eps_lo
+    eps0 = law.touch[1]
+    pre = [[math.log(e), math.log(law.state(e).c - e)] for e in
+           np.geomspace(eps0, law.eps_lo, math.ceil(math.log(law.eps_lo / eps0) / JUNCTION_STEP) + 1)[:-1]]
+    x0 = np.array([math.log(law.eps_lo), math.log(start.c - law.eps_lo)])
     got = _fo.follow(law, x0, lambda x: _inside(law, x), margin=lambda x: _margin(law, x),
                      cheap=lambda x: _pushes(law, x))
-    return np.concatenate([pre, got.points]), "zone", got.reason
+    return np.concatenate([np.reshape(pre, (-1, 2)), got.points]), "zone", got.reason
 
 
 def opens_of(law):
