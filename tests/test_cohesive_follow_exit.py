@@ -1,7 +1,8 @@
 """The trace's end at the load cap (jkrcyl.numerics.cohesive_follow: the exit searched within the step that leaves
 the domain, points backed off before it, shorter steps on lines of fixed eps past the zero load) against the plain
 rule (a step that leaves is cut by 4 and regrown, no margin, no cheap: follow's defaults -- the route the trace
-took before): the points up to the zero-load contact are the same doubles (no pull-off can move), every point is
+took before), from eps_lo (the trace's states below it, from the zone-only pin's touch, are solved alone): the
+points up to the zero-load contact are the same doubles (no pull-off can move), every point is
 on the branch (the residual itself), the last one lies inside the domain within 64 H_MIN of the cap as the plain
 rule's does (both within 2 % of p_cap, from below), and the backed-off points shrink the last cells."""
 import math
@@ -33,12 +34,12 @@ def p_at(law, x):
 @pytest.mark.parametrize("lam, M, theta", [(10.0, 0.3, THETA), (300.0, 0.3, THETA), (1.0, 0.5, math.inf)])
 def test_the_exit_at_the_cap_keeps_the_pulling_part_of_the_trace(lam, M, theta):
     law = law_of(lam, M, theta)
-    start = law.state(law.eps_lo)
-    assert start.zones != "all"
-    x0 = np.array([math.log(law.eps_lo), math.log(start.c - law.eps_lo)])
+    assert law.state(law.eps_lo).zones != "all"
     inside = lambda x: cb._inside(law, x)
     new = cb.trace(law)[0]
-    plain, why = fo.follow(law, x0, inside)
+    new = new[new[:, 0] >= math.log(law.eps_lo)]     # the states below eps_lo: solved alone (its junction)
+    start = law.state(law.eps_lo)
+    plain, why = fo.follow(law, np.array([math.log(law.eps_lo), math.log(start.c - law.eps_lo)]), inside)
     assert why == ""
     p_new, p_plain = (np.array([p_at(law, x) for x in pts]) for pts in (new, plain))
     # up to the first state that pushes, the same doubles

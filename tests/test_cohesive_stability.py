@@ -77,7 +77,7 @@ def test_contact_flags_on_a_fixed_law():
     """M = 0.2, lambda = 3 (identical bodies): the energy route at five states of the branch, load unstable below
     the pull-off fold and stable above, grip stable beyond the smallest contacts."""
     c = contact(2.6e9, 0.3, 2.6e9, 0.3, 0.2, 3.0)
-    cv = c.curve(n=30)
+    cv = c.curve(n=50)      # ~40 % of the branch parameter lies below eps = 1e-3 (from the touch)
     law, scale = law_of(c), c.problem.scale
     seen = set()
     for i in np.nonzero(cv.feasible & (cv.eps > 0.02) & (cv.P_star < 3))[0][::4]:

@@ -12,8 +12,8 @@ P* and B*, the Dugdale interface energy by quadrature of the opening, -w over th
   super-critical branch along itself and onto full contact (eps -> pi: the difference is the adhesion of the
   closing gap, 2 m^2 (pi - eps), then nothing);
 * Maugis-Dugdale (lambda 20, 50): the free pin -> the zone-only pin as it enters the range (c -> 0, delta -> -h0)
-  -> along it to its touch (closed form in c) -> the contact branch from eps -> 0 (states solved alone: the trace
-  starts at eps_lo = 1e-3, the part below it is not traced) -> along it.
+  -> along it to its touch (closed form in c) -> the contact branch from its first state (the touch itself, to
+  1e-8) -> along it.
 
 The other junctions are tested where they are built: single patch -> two patches at the onsets and two patches ->
 full contact (tests/test_jump_energy.py), the law's single patch -> its top bridge -> two patches
@@ -119,10 +119,14 @@ def test_the_zone_only_pin_leaves_the_free_pins_level(lam):
 
 @pytest.mark.parametrize("lam", [20.0, 50.0])
 def test_the_contact_branch_starts_at_the_zone_only_pins_touch(lam):
-    """The contact branch solved alone at contacts eps from 1e-7 (in log eps) -- through the part the trace leaves
-    out (it starts at eps_lo = 1e-3: delta moves 0.0086 Delta below it at lambda 20, 0.086 at lambda 50) -- meets
-    the zone-only pin's touch (eps -> 0) at its potential, and the trace's first state (a = 2) at the end: the
-    potentials differ by int p d(delta) (measured 1e-9 relative), then along the branch to eps = 0.5."""
+    """The contact branch's first state (a = 2: its trace starts at eps = 1e-6 c_touch, cohesive_zones.JUNCTION)
+    is the zone-only pin's touch (a = 1), so a walk continuing from one onto the other keeps its held value: each
+    compared with its state solved alone -- the touch by Brent on h(0) = 0 of the closed form
+    (cohesive_zones.contactless_touch), the first contact by cohesive_state at its eps -- delta and P* agree to
+    1e-8 (measured 9e-12 and 2e-12 at lambda 20, 5e-12 and 6e-13 at lambda 50; with the trace from eps_lo = 1e-3
+    they were 0.0086 and 0.0016 / 0.086 and 0.0099 apart).  Along the branch (states solved alone at contacts
+    from the first one, in log eps) the potentials differ by int p d(delta) (measured 1e-9 relative) up to eps =
+    0.5, and the first state has the touch's potential."""
     pb = law_problem(lam)
     law, sv = solver(pb).law, solver(pb)
     at = {}
@@ -133,11 +137,15 @@ def test_the_contact_branch_starts_at_the_zone_only_pins_touch(lam):
         return at[e]
     p_of = lambda u: np.array([state(math.exp(x)).p for x in u])
     d_of = lambda u: np.array([state(math.exp(x)).delta_over_Delta for x in u])
-    touch = energy(pb, "contactless", 1.0)[0]
-    first = single(pb, "sub-critical", 2.0)[0]
-    assert first.eps == pytest.approx(law.eps_lo, rel=1e-12)
-    lo, start = math.log(1e-7), math.log(law.eps_lo)
-    assert cb.potential(state(1e-7)) == pytest.approx(touch, rel=1e-6)         # O(eps) from the touch
-    assert first.energy - touch == pytest.approx(work(p_of, d_of, lo, start, 60), rel=1e-6)
-    assert cb.potential(state(0.5)) - first.energy == pytest.approx(work(p_of, d_of, start, math.log(0.5), 60),
-                                                                    rel=1e-9)
+    touch = cz.contactless_touch(law.m, law.s0, THETA, GB)
+    zone_only, first = single(pb, "contactless", 1.0)[0], single(pb, "sub-critical", 2.0)[0]
+    alone = state(first.eps)
+    assert first.eps <= 1e-6 * touch.c * (1 + 1e-12) and zone_only.extra["c"] == pytest.approx(touch.c, rel=1e-12)
+    for got, ref in ((zone_only, touch), (first, alone), (first, touch)):
+        assert got.delta_over_Delta == pytest.approx(ref.delta_over_Delta, abs=1e-8)
+        assert got.P_star * THETA == pytest.approx(ref.p, abs=1e-8)         # p = vartheta P* (kernel scale)
+    assert first.energy == pytest.approx(zone_only.energy, rel=1e-8)
+    lo, mid = math.log(first.eps), math.log(law.eps_lo)
+    assert cb.potential(state(law.eps_lo)) - first.energy == pytest.approx(work(p_of, d_of, lo, mid, 60), rel=1e-6)
+    assert cb.potential(state(0.5)) - cb.potential(state(law.eps_lo)) == pytest.approx(
+        work(p_of, d_of, mid, math.log(0.5), 60), rel=1e-9)

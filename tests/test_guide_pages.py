@@ -143,8 +143,8 @@ def test_cohesive_as_stated():
     assert "0.31 um" in text and md.h0 == pytest.approx(0.31e-6, rel=0.02)
     assert "about -1553 N/m (JKR: -1555)" in text and md.pull_off("load").P == pytest.approx(-1553, abs=0.5)
     assert pin.sigma0 is None and pin.pull_off("load").P == pytest.approx(-1555, abs=0.5)
-    po = md.pull_off("grip-work")
-    assert "about -930 N/m (JKR: -839)" in text and po.P == pytest.approx(-930, abs=0.5) and "touch end" in po.reason
+    po = md.pull_off("grip-work")     # a fold at eps 8e-4 (delta_work least there: states solved alone)
+    assert "about -930 N/m (JKR: -839)" in text and po.P == pytest.approx(-930, abs=0.5) and "shrinks away" in po.reason
     assert pin.pull_off("grip-work").P == pytest.approx(-839, abs=0.5)
     assert "about 0.00798 J/m" in text and ns["cy_md"].dissipated == pytest.approx(0.00798, abs=5e-6)
     weak = ns["weak"]

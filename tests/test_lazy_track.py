@@ -36,7 +36,11 @@ def _same_walks(c, regime, side, control):
         for target in (-math.inf, math.inf, mid):
             got, want = _path.walk(lazy, i, target), _path.walk(eager, i, target)
             assert got[0] == want[0] and got[1] == want[1], (regime, side, control, i, target, got[:2], want[:2])
-            assert got[2].a == want[2].a and got[2].P == want[2].P, (got[2], want[2])
+            # to the root's tolerance: a walk ending on the flat part next to the zone-only pin's touch (dP/da ~ 1e-11:
+            # rigid pair, lambda 0.2) finds its root in a to Brent's xtol 1e-12 (cohesive.ROOT_XTOL) only, P the same
+            # to 1e-14, and the two tracks' values there come by different routes (the state's, the value's)
+            assert got[2].a == pytest.approx(want[2].a, rel=0, abs=1e-11), (got[2], want[2])
+            assert got[2].P == pytest.approx(want[2].P, rel=1e-12, abs=0), (got[2], want[2])
     return lazy.stable.computed + lazy.feasible.computed, n
 
 

@@ -173,13 +173,28 @@ def operator(centres, offsets, ac, ae, s, D, k0, k1, ar, out, col0):
 
 
 @njit(cache=True)
-def assemble(ac, ae, s, D, k0, k1, ar, xt, LD0, SD0, Lam, Sig, omega, gcs, gss, A, rhs):
+def image_moments(e, xt, out):
+    """out[p] = the log moments of the periodic images x -+ 2 pi/e of an arc's own row p, x = (e xt[p])/e as
+    assemble forms it (arcs._image_rows multiplies them by D)."""
+    images = 2 * PI / e
+    n = out.shape[1]
+    for p in range(xt.size):
+        x = (e * xt[p]) / e
+        for q in range(n):
+            out[p, q] = 0.0
+        _add_log_moments(x - images, n, out[p], 1.0)
+        _add_log_moments(x + images, n, out[p], 1.0)
+
+
+@njit(cache=True)
+def assemble(ac, ae, s, D, k0, k1, ar, xt, LD0, SD0, Lam, Sig, omega, gcs, gss, A, rhs, LDI):
     """The collocation matrix A of arcs.Arcs (operator columns, then enrichment columns when omega has rows)
     and the two right-hand sides of arcs.Linear, in one pass (cos t, sin t and the log factor shared).
 
     Rows: arc ir, table point p (centre ac[ir], offset ae[ir] xt[p]); xt = the nodes (alpha* = 0) or the
     nodes and the end points (arcs_enrich); LD0[p] = (log moments at xt[p]) @ D, SD0 (sign moments): the
-    same-arc rows, whose points offset/e are the table points."""
+    same-arc rows, whose points offset/e are the table points.  LDI[ia, p]: the same-arc rows' periodic images
+    (an arc wider than 1 rad) @ D, precomputed (arcs._image_rows); an array with no rows: computed here (O(n^3))."""
     n = s.size
     na = ac.size
     m = omega.shape[0]
@@ -215,7 +230,10 @@ def assemble(ac, ae, s, D, k0, k1, ar, xt, LD0, SD0, Lam, Sig, omega, gcs, gss, 
                 for k in range(n):
                     LD[k] = LD0[p, k]
                     SD[k] = SD0[p, k]
-                if images_on:
+                if images_on and LDI.shape[1] > p:
+                    for k in range(n):
+                        LD[k] += LDI[ia, p, k]
+                elif images_on:
                     for q in range(n):
                         L[q] = 0.0
                     _add_log_moments(x - images, n, L, 1.0)

@@ -64,6 +64,7 @@ at phi = pi; k: edge coefficient at the contact end (0: finite stress); B = int 
 the law; n: collocation nodes (0 without contact); fields: .gap(phi), .pressure(phi)."""
 
 LAMBDA_MAX = 1e4          # the transition parameter 4 s0/m^(2/3) supported (check_lambda)
+GAP_POINTS = 96           # potential: Gauss-Legendre points of int h over a zone (the interface energy)
 GAP_END_SKIP = 1e-6        # gap_check, alpha* != 0: see there
 GAP_TOL_REL = 1e-6         # gap_check: a violation must exceed this times the state's gap scale (max(h0, max |h|)):
                            # next to the ends the evaluated gap carries ~1e-8 of the engine's error (alpha* != 0,
@@ -266,3 +267,21 @@ def gap_check(state, n_points=400):
     free_min = h[~in_zone].min() if (~in_zone).any() else math.inf
     return GapCheck(h.min(), zone_max, free_min,
                     bool(h.min() >= -tol and zone_max <= h0 + tol and free_min >= h0 - tol))
+
+
+_XG, _WG = np.polynomial.legendre.leggauss(GAP_POINTS)
+
+
+def potential(st):
+    """Total potential in the kernel scale (units 4 pi Delta^2/beta*): the elastic energy (Clapeyron) plus the
+    Dugdale interface energy int (s0 h - m^2) over the zones and -m^2 over the contact:
+    [(1 + delta/Delta) p - B]/2 + (s0/2) int_zones h - m^2 (length of contact and zones)."""
+    eps, c = st.eps, min(st.c, math.pi)
+    t = np.pi * (_XG + 1) / 2
+    shape, jac = (1 - np.cos(t)) / 2, np.sin(t) * np.pi / 4
+    H = 2 * (c - eps) * np.sum(_WG * jac * st.fields.gap(eps + (c - eps) * shape))
+    length = 2 * c
+    if st.c_top > 0:
+        H += 2 * st.c_top * np.sum(_WG * jac * st.fields.gap(math.pi - st.c_top + st.c_top * shape))
+        length += 2 * st.c_top
+    return 0.5 * ((1 + st.delta_over_Delta) * st.p - st.B) + 0.5 * st.s0 * H - st.m ** 2 * length

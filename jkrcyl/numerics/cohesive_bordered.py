@@ -28,6 +28,7 @@ from . import cohesive_contact as _cc
 from . import cohesive_kernels as _ck
 
 FD_REL = 2e-4       # the step in eps of the slopes, relative (jkrcyl.numerics.cohesive_branch.FD_REL)
+ROUND_KEPT = 64     # bordered systems kept per law (of), the oldest dropped first
 
 
 class Bordered:
@@ -60,15 +61,18 @@ class Bordered:
 def applies(law, eps, c):
     """Whether the state (eps, c) is solved here: its zone all round, its contact without an end layer (the
     layered node count of thin zones: the affine route of jkrcyl.numerics.cohesive_branch then)."""
-    return c >= math.pi and not law.fixed(eps).layered
+    return c >= math.pi and not law.contact(eps)[1]
 
 
 def of(law, eps):
-    """The bordered system at the law's contact eps (kept on the law's cached fixed contact)."""
-    fc = law.fixed(eps)
-    if not hasattr(fc, "_bordered"):
-        fc._bordered = Bordered(fc)
-    return fc._bordered
+    """The bordered system at the law's contact eps, kept per law (ROUND_KEPT): its fixed contact assembled, not
+    factored (FixedContact factor=False: the bordered LU alone; was a third of a round-zone state's cost)."""
+    kept = law.__dict__.setdefault("_bordered", {})
+    if eps not in kept:
+        if len(kept) >= ROUND_KEPT:
+            kept.pop(next(iter(kept)))
+        kept[eps] = Bordered(_cc.FixedContact(eps, law.kernel, *law.contact(eps), factor=False))
+    return kept[eps]
 
 
 def round_values(law, eps):

@@ -30,23 +30,23 @@ from . import roots as _roots
 from . import cohesive_kernels as _ck
 from . import cohesive_contact as _cc
 from . import cohesive_follow as _fo
+from . import cohesive_zones as _cz
 from . import cohesive_bordered as _bo
 from . import cohesive_round as _round
 from . import one_arc as _one
 
-START = 1e-3            # the trace starts at eps = START times the half-plane scale 2 m^(2/3) (at most 1e-3)
+START = 1e-3            # the trace starts at eps = START 2 m^(2/3) (at most 1e-3; below: Law.touch)
+JUNCTION_STEP = 2.0     # the spacing in log eps of the states below eps_lo (from the touch: 6 points at lambda 20)
 EPS_MARGIN = 1e-3       # below the receding limit (the pair's pole)
 P_CAP = 200.0           # the branch is traced up to p = P_CAP m^(4/3) (200 times the adhesion load scale, ~100
                         # times the pull-off; beyond, solve warns: jkrcyl.BranchLimitWarning)
 FD_REL = 2e-4           # finite-difference steps: in eps at a fixed zone length, relative to eps; in c, to c - eps
 ZONE_FD = 5e-4          # ... in a shifted system (next to eps_s), extrapolated from h and 2h
-GAP_POINTS = 96         # Gauss-Legendre points of int h over the zone (the interface energy)
 ALL_POINTS = 160        # eps samples of a branch whose zone reaches round at the touch end
 ROUND_SCAN = 10         # contacts scanned for a zone that stops reaching round (top_opens)
 ROUND_JUMP = 1e-2       # a zone end this far below pi just past the opening is a jump (a continuous one -> pi)
 TOP_PROBE = 1e-2        # top_opens: the gap this fraction of the exterior below pi against h(pi) (a bridge: larger)
 NARROW = 1e-6           # top_opens: a round zone within this of h0 at the jump has ended there (a narrow S)
-_XG, _WG = np.polynomial.legendre.leggauss(GAP_POINTS)
 
 _PointData = namedtuple("_PointData", "eps c delta p B dp_dt ddn_dt D_p D_dn h_pi zones fields state")
 
@@ -83,6 +83,11 @@ class Law:
             lambda eps, shift: _co.FixedContact(eps, self.kernel, *self.contact(eps), shift=shift))
         self.residuals = {}          # the zone-end residual by (log eps, log(c - eps)): cohesive_follow.residual
         self.loads = {}              # p at k = 0 by (log eps, log(c - eps)): the trace's domain checks
+
+    @functools.cached_property
+    def touch(self):
+        """(the zone-only pin's touch or None, the contact the trace starts at): cohesive_zones.law_touch."""
+        return _cz.law_touch(self)
 
     def nodes(self, eps):
         """Nodes as a function of eps only (a smooth residual along the trace: jkrcyl.numerics.cohesive_pull_off)."""
@@ -175,10 +180,15 @@ def trace(law):
             return _round.trace(law, opens[0], lambda x: _inside(law, x), lambda e: state_values(law, e, math.pi)[2])
         eps = np.geomspace(law.eps_lo, law.eps_hi, ALL_POINTS)
         return np.column_stack([np.log(eps), np.zeros(eps.size)]), "all", ""
+    # from the zone-only pin's touch (eps0 -> 0) up to eps_lo the branch runs straight in log eps (c - c_touch ~
+    # eps^2): its states solved at contacts JUNCTION_STEP apart, then traced from eps_lo
+    eps0 = law.touch[1]
+    pre = [[math.log(e), math.log(law.state(e).c - e)] for e in
+           np.geomspace(eps0, law.eps_lo, math.ceil(math.log(law.eps_lo / eps0) / JUNCTION_STEP) + 1)[:-1]]
     x0 = np.array([math.log(law.eps_lo), math.log(start.c - law.eps_lo)])
     got = _fo.follow(law, x0, lambda x: _inside(law, x), margin=lambda x: _margin(law, x),
                      cheap=lambda x: _pushes(law, x))
-    return got.points, "zone", got.reason
+    return np.concatenate([np.reshape(pre, (-1, 2)), got.points]), "zone", got.reason
 
 
 def opens_of(law):
@@ -193,7 +203,7 @@ def opens_of(law):
 def _inside(law, x):
     """The domain of the traced zone branch: eps_lo <= eps < eps_hi, c < pi, p below the load cap."""
     eps, d = math.exp(x[0]), math.exp(x[1])
-    return law.eps_lo * 0.999 <= eps < law.eps_hi and eps + d < math.pi * (1 - 1e-9) and _load(law, x) < law.p_cap
+    return law.touch[1] * 0.999 <= eps < law.eps_hi and eps + d < math.pi * (1 - 1e-9) and _load(law, x) < law.p_cap
 
 
 def _load(law, x):
@@ -213,7 +223,7 @@ def _margin(law, x):
     it; NaN outside another bound and not beyond the cap (cohesive_follow then cuts the step as before)."""
     eps, d, p = math.exp(x[0]), math.exp(x[1]), _load(law, x)
     load = 1 - law.p_cap / p if p > 0 or (p < 0 and eps >= law.eps_hi) else -math.inf
-    other = not (law.eps_lo * 0.999 <= eps < law.eps_hi and eps + d < math.pi * (1 - 1e-9))
+    other = not (law.touch[1] * 0.999 <= eps < law.eps_hi and eps + d < math.pi * (1 - 1e-9))
     return np.array([math.nan if other and load <= 0 else load])
 
 
@@ -268,7 +278,7 @@ def state_values(law, eps, c):
     """(p, delta/Delta, h(pi)/Delta) of the equilibrium (eps, c) (k = 0), without slopes."""
     if _bo.applies(law, eps, c):                  # the zone all round: regular at the degenerate contact
         p, delta, u = _bo.round_values(law, eps)
-        return p, delta, law.fixed(eps).gap(math.pi, delta, u, _co.zones_of(math.pi), law.s0)[0]
+        return p, delta, _bo.of(law, eps).fc.gap(math.pi, delta, u, _co.zones_of(math.pi), law.s0)[0]
     p, delta = load_approach(law, eps, c)
     fc = law.fixed(eps)
     zones = _co.zones_of(min(c, math.pi))
@@ -324,9 +334,10 @@ def point(law, eps, c, direction):
     """The per-point data at an equilibrium (eps, c) (c = pi: zones 'all'); direction = (d eps, d c) of
     increasing t (its orientation only)."""
     delta, dp_dt, ddn_dt, D_p, D_dn = _slopes(law, eps, c, direction)
-    fc = law.fixed(eps)
+    round_zone = _bo.applies(law, eps, c)
+    fc = _bo.of(law, eps).fc if round_zone else law.fixed(eps)
     zones = _co.zones_of(min(c, math.pi))
-    if _bo.applies(law, eps, c):
+    if round_zone:
         u = _bo.round_values(law, eps)[2]
     else:
         u = fc.fx[3] + delta * fc.fx[4] + law.s0 * fc.zone_unit(zones)
@@ -335,16 +346,4 @@ def point(law, eps, c, direction):
                  st)
 
 
-def potential(st):
-    """Total potential in the kernel scale (units 4 pi Delta^2/beta*): the elastic energy (Clapeyron) plus the
-    Dugdale interface energy int (s0 h - m^2) over the zones and -m^2 over the contact:
-    [(1 + delta/Delta) p - B]/2 + (s0/2) int_zones h - m^2 (length of contact and zones)."""
-    eps, c = st.eps, min(st.c, math.pi)
-    t = np.pi * (_XG + 1) / 2
-    shape, jac = (1 - np.cos(t)) / 2, np.sin(t) * np.pi / 4
-    H = 2 * (c - eps) * np.sum(_WG * jac * st.fields.gap(eps + (c - eps) * shape))
-    length = 2 * c
-    if st.c_top > 0:
-        H += 2 * st.c_top * np.sum(_WG * jac * st.fields.gap(math.pi - st.c_top + st.c_top * shape))
-        length += 2 * st.c_top
-    return 0.5 * ((1 + st.delta_over_Delta) * st.p - st.B) + 0.5 * st.s0 * H - st.m ** 2 * length
+potential = _co.potential      # the total potential of a state (kept here: its readers name it so)

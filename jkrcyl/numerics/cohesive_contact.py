@@ -20,6 +20,7 @@ from . import cohesive_layer as _cl
 from . import cohesive_roots as _cr
 
 _BLAS = ThreadpoolController()
+_UNFACTORED = (np.zeros((0, 0)), np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0), np.zeros(0), math.nan, math.nan)
 _NO_LAYER = np.zeros(1)
 _NO_TABLE = np.zeros((0, _cl.N_SMOOTH))
 NODES_MIN = 24            # alpha* = 0: a contact far from its zone ends (spectral, ~1e-13)
@@ -59,9 +60,13 @@ class FixedContact:
     approach (Sherman-Morrison).  A is singular at one contact eps_s of a kernel (where k(U1) has a pole: see
     jkrcyl.numerics.cohesive_bordered); the shifted system is not, so the states next to eps_s are regular
     (:func:`regular` shifts where |k(U1)| >= SHIFT_K).
+
+    factor=False: the system assembled but not factored (no LU, unit solutions or k(U0), k(U1): those entries of
+    fx are empty, k NaN), for a solver that factors a system of its own (jkrcyl.numerics.cohesive_bordered): the
+    gap, the loads and the zone's right-hand side read the rest.
     """
 
-    def __init__(self, eps, kernel, n, layered=False, shift=0.0):
+    def __init__(self, eps, kernel, n, layered=False, shift=0.0, factor=True):
         eps = float(eps)
         if not 0.0 < eps < math.pi:                   # NaN too: arcs.Arcs would drop the arc (an empty system)
             raise ValueError(f"eps must be in (0, pi), got {eps!r}")
@@ -80,8 +85,11 @@ class FixedContact:
         ek[nn:] = -_en.G_END[:mm]
         self.ek = ek / math.sqrt(2 * self.eps)
         self.shift = float(shift)
-        lu, perm = _factor(sy.A - self.shift * np.outer(np.cos(phin), self.ek) if self.shift else sy.A)
-        U0, U1, kadj, k_0, k_1 = _ck.unit_solutions(lu, perm, phin, self.ek)
+        if factor:
+            lu, perm = _factor(sy.A - self.shift * np.outer(np.cos(phin), self.ek) if self.shift else sy.A)
+            U0, U1, kadj, k_0, k_1 = _ck.unit_solutions(lu, perm, phin, self.ek)
+        else:
+            lu, perm, U0, U1, kadj, k_0, k_1 = _UNFACTORED
         sf, gf = _arcs._fine_grid()
         if self.layered:                              # the layer's trig coefficients and smooth-moment table
             gc, gs = (sy._gcs[0], sy._gss[0]) if mm else _cl.trig_coefficients(self.eps, _en.K_TRIG)

@@ -24,8 +24,8 @@ from .cohesive_branch import Point
 def contactless_end(law):
     """(c, touches): where the contactless states (one bottom zone) end -- the touch c (h(0) = 0, joined to the
     contact branch), or just below pi/2 (the approach's pole) when the contact branch starts with zones 'all'."""
-    touch = _cz.contactless_touch(law.m, law.s0, law.theta, law.gb, law.ar)
-    if touch is None or abs(touch.c - math.pi / 2) < 1e-6 or abs(touch.fields.gap(0.0)[0]) > 1e-8 * (1 + law.h0):
+    touch = law.touch[0]
+    if touch is None:
         return math.pi / 2 * (1 - 1e-6), False         # no touch (or a sign change through the pole pi/2)
     return touch.c, True
 

@@ -151,10 +151,11 @@ def join_points(law, x_end, eps_join):
 
 def round_state(law, eps):
     """The contact |phi| < eps with its zone all round (zones 'all': k = 0 alone), as a CohesiveState."""
-    fc, zones = law.fixed(eps), _co.zones_of(math.pi)
+    zones = _co.zones_of(math.pi)
     if _bo.applies(law, eps, math.pi):       # regular at the degenerate contact (jkrcyl.numerics.cohesive_bordered)
-        dn, u = _bo.round_values(law, eps)[1:]
+        fc, (dn, u) = _bo.of(law, eps).fc, _bo.round_values(law, eps)[1:]
     else:
+        fc = law.fixed(eps)
         dn, u = fc.solve(zones, law.s0)
     return _co._state(eps, math.pi, fc, dn, u, zones, law.m, law.s0, law.kernel, law.gb, fc.sys.n)
 

@@ -46,7 +46,7 @@ RATIO_MIN = 1e-4          # trace: the step in c_top refined (square roots of th
 EPS_STEP = 1e-7           # bracket search in eps: the first step relative to eps, doubled
 EPS_XTOL = 1e-15          # the eps root to this relative tolerance
 SUPER_TOP = 0.05          # the super-critical side: contacts up to pi - SUPER_TOP (as its single patch)
-TOUCH = 1e-2              # the trace follows eps down to this times the law's smallest traced contact (the touch end)
+TOUCH = 1e-2              # the trace follows eps down to this times the law's eps_lo (its default first contact)
 HOLD_STEP = 1e-4          # zone_matrix: central differences, relative to each zone length
 SLOPE_STEP = 1e-3         # slopes: central differences relative to c_top and eps (the states' ~1e-12 noise over
 SLOPE_STEP_EPS = 1e-5     # the step against its truncation, which is large in eps past the receding limit: 1e-5
@@ -58,7 +58,7 @@ TopZoneBranch.__doc__ = """A traced top-zone family (jkrcyl.numerics.cohesive.Co
 
 junction: the single-patch state where h(pi) = h0 (c_top = 0); states: the family in increasing c_top; end: why
 the trace ended -- 'top closes' (h(pi) reaches 0: onset is that state, the top contact's onset), 'touch' (eps
-below 0.1 of the law's smallest traced contact: the family goes on without contact, the states of
+below 0.1 of the law's eps_lo: the family goes on without contact, the states of
 jkrcyl.numerics.cohesive_zones.contactless_states), 'receding limit' (the pole eps_crit, from either side), 'near full
 contact' (a super-critical family at eps = pi - SUPER_TOP), 'zones meet' (c + c_top -> pi), 'no root'
 (no eps root next to the last state: a fold in c_top) or 'points' (CT_MAX_POINTS states)."""
@@ -206,7 +206,7 @@ def _predict(states, ct, eps):
 
 def domain(law, eps):
     """(lo, hi): the contacts the family through eps may reach -- the sub-critical side of the receding limit
-    eps_crit (from TOUCH times the law's smallest traced contact to jkrcyl.numerics.cohesive_branch's eps_hi), or
+    eps_crit (from TOUCH times the law's eps_lo to jkrcyl.numerics.cohesive_branch's eps_hi), or
     the super-critical side (from eps_crit (1 + EPS_MARGIN) to pi - SUPER_TOP): a root is never bracketed
     across the pole."""
     crit = law.eps_hi / (1 - _cb.EPS_MARGIN)           # the receding contact (or above pi - 0.05: none below)

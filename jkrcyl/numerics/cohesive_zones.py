@@ -124,6 +124,22 @@ def contactless_touch(m, s0, theta, gb, ar=0.0, eps_small=1e-6):
     return None
 
 
+JUNCTION = 1e-6     # law_touch's first contact: this times the touch's zone end (the contact branch's trace starts
+                    # there: its states differ from the touch by ~(eps/c)^2, delta by 2.9e-8 at eps 1e-6 and
+                    # lambda 20, 6.0e-7 at lambda 50 (c 0.0144, 0.0023; M 0.1, vartheta 10, gb 1/2.8))
+
+
+def law_touch(law):
+    """(touch, eps_first): the zone-only pin touching the bottom (:func:`contactless_touch`) where the contact
+    branch of the law (jkrcyl.numerics.cohesive_branch.Law) starts from it, and the contact its trace starts at,
+    JUNCTION times the touch's zone end (at most law.eps_lo); (None, law.eps_lo) where there is no touch, it lies
+    at the approach's pole pi/2 or it is not refined to h(0) = 0."""
+    touch = contactless_touch(law.m, law.s0, law.theta, law.gb, law.ar)
+    if touch is None or abs(touch.c - math.pi / 2) < 1e-6 or abs(touch.fields.gap(0.0)[0]) > 1e-8 * (1 + law.h0):
+        return None, law.eps_lo
+    return touch, min(law.eps_lo, JUNCTION * touch.c)
+
+
 def floating_range(m, s0, theta, gb, ar=0.0):
     """(lo, hi) of delta/Delta of the states without contact whose zone is the whole circle (every gap in
     (0, h0]; h0 >= 2 less the uniform pull); p = 0 for all of them (a uniform traction has no resultant).  None if

@@ -65,7 +65,7 @@ def bordered_state_even(e, k_target, clearance, s, D, xt, LD0, SD0, Lam, Sig, om
         trig_coefficients(e, gcs[0], gss[0])
     A = np.empty((xt.size, n + m))
     rhs = np.empty((xt.size, 2))
-    _ak.assemble(ac, ae, s, D, k0, k1, ar, xt, LD0, SD0, Lam, Sig, omega, gcs, gss, A, rhs)
+    _ak.assemble(ac, ae, s, D, k0, k1, ar, xt, LD0, SD0, Lam, Sig, omega, gcs, gss, A, rhs, np.zeros((1, 0, n)))
     r = 1.0 / math.sqrt(2 * e)
     edge = np.empty(n + m)
     for k in range(n):
