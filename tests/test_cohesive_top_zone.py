@@ -213,12 +213,26 @@ def test_at_lambda_20_the_family_reaches_the_touch_without_the_top_closing():
 
 
 # --- two routes to the law's top onset ---------------------------------------------------------------------------
-@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(m=hst.floats(0.5, 2.0), theta=hst.floats(3.0, 20.0), gb=hst.just(0.0) | hst.floats(0.01, 0.6),
-       lam=hst.floats(20.0, 200.0))
+ONSET_LAWS = dict(m=hst.floats(0.5, 2.0), theta=hst.floats(3.0, 20.0), gb=hst.just(0.0) | hst.floats(0.01, 0.6),
+                  lam=hst.floats(20.0, 200.0))
+
+
+@settings(max_examples=2, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(**ONSET_LAWS)
 @example(m=1.0, theta=10.0, gb=1 / 2.8, lam=50.0)          # the grip cycle's junction (tests/test_cohesive_top_landing)
 @example(m=1.5, theta=15.0, gb=0.0, lam=20.0)              # past a turn: the first zone-end root is another branch's
 def test_the_walkers_top_onsets_are_the_junctions(m, theta, gb, lam):
+    _onsets_are_the_junctions(m, theta, gb, lam)
+
+
+@pytest.mark.slow                       # the same property over more laws (~1 s each)
+@settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(**ONSET_LAWS)
+def test_the_walkers_top_onsets_are_the_junctions_more_laws(m, theta, gb, lam):
+    _onsets_are_the_junctions(m, theta, gb, lam)
+
+
+def _onsets_are_the_junctions(m, theta, gb, lam):
     """The model core's onsets where the top adheres (jkrcyl.analysis.landing.top_onsets: the roots of h(pi) = h0 on
     the law's branch table, refined by the model's root finder -- what landing.top_onset and the confined
     classification use) against :func:`cohesive_top_zone.junctions` (the numerics' trace, Brent on the state at a

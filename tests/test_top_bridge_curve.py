@@ -274,6 +274,7 @@ NU = hst.just(0.0) | hst.floats(0.01, 0.49)           # 0 or above the validated
 MODULUS = hst.floats(1e8, 1e11) | hst.just(math.inf)
 
 
+@pytest.mark.slow                       # ~13 s: five law problems traced (the fast suite's budget)
 @settings(max_examples=2, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(E=MODULUS, nu=NU, E_I=MODULUS, nu_I=NU, m=hst.floats(0.5, 2.0), lam=hst.floats(20.0, 100.0))
 @example(E=2.6e9, nu=0.3, E_I=2.6e9, nu_I=0.3, m=0.67, lam=10.0)        # identical bodies: past the touch
