@@ -40,7 +40,10 @@ def _same_walks(c, regime, side, control):
             # rigid pair, lambda 0.2) finds its root in a to Brent's xtol 1e-12 (cohesive.ROOT_XTOL) only, P the same
             # to 1e-14, and the two tracks' values there come by different routes (the state's, the value's)
             assert got[2].a == pytest.approx(want[2].a, rel=0, abs=1e-11), (got[2], want[2])
-            assert got[2].P == pytest.approx(want[2].P, rel=1e-12, abs=0), (got[2], want[2])
+            # P to what that a allows: at the super-critical table's end at the load cap (identical bodies, lambda
+            # ~ 3, P 1.6e8 N/m) dP/da ~ 7e10 N/m: a equal to 1e-11 leaves P 4.5e-9 apart (the crossing's trace back
+            # to the cap, jkrcyl.numerics.cohesive_crossing); elsewhere it is 1e-14
+            assert got[2].P == pytest.approx(want[2].P, rel=1e-8, abs=0), (got[2], want[2])
     return lazy.stable.computed + lazy.feasible.computed, n
 
 
