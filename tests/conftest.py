@@ -11,7 +11,7 @@ import pathlib
 
 import numba
 import pytest
-from hypothesis import settings
+from hypothesis import Phase, settings
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 
@@ -55,15 +55,20 @@ def pytest_configure(config):
 
 def pytest_collection_modifyitems(config, items):
     """Scale every property test's own max_examples by the loaded profile (x10 under fuzz). A test's
-    ``@settings(max_examples=n)`` otherwise wins over any profile, and the suite sets it on every property test."""
+    ``@settings(max_examples=n)`` otherwise wins over any profile, and the suite sets it on every property test.
+    The slow property tests (seconds to a minute an example) report a failing example as found, unshrunk, outside
+    ``make fuzz``: shrinking one took longer than CI's whole budget (session 34, tests/test_loop_work.py)."""
     factor = settings.default.max_examples / DEFAULT_MAX_EXAMPLES
-    if factor == 1:
-        return
-    scaled = set()
+    fuzz = factor != 1
+    done = set()
     for item in items:
         test = getattr(item, "obj", None)
         own = getattr(test, "_hypothesis_internal_use_settings", None)   # where @settings/@given keep them
-        if own is None or id(test) in scaled:                           # parametrized: one function, many items
+        if own is None or id(test) in done:                             # parametrized: one function, many items
             continue
-        test._hypothesis_internal_use_settings = settings(own, max_examples=max(1, round(own.max_examples * factor)))
-        scaled.add(id(test))
+        changes = {"max_examples": max(1, round(own.max_examples * factor))} if fuzz else {}
+        if not fuzz and item.get_closest_marker("slow") is not None:
+            changes["phases"] = tuple(p for p in own.phases if p is not Phase.shrink)
+        if changes:
+            test._hypothesis_internal_use_settings = settings(own, **changes)
+        done.add(id(test))

@@ -70,7 +70,7 @@ class _Run:
             if s.branch == "separated" and self.control != "load":
                 lo, hi = _fw.solver(self.pb).free_range()      # where the free pin touches a side (or its range)
                 value = (hi if up else lo) * self.un.Delta
-                s = _fw.separated_state(self.pb, self.un, value / self.un.Delta, self.control)
+                s = _fw.separated_state(self.pb, self.un, hi if up else lo, self.control)   # the end itself
                 self.add(s, leg)
             to, kind = _land.land(self.pb, self.un, s, event, self.control, value, up)
             if to is None:

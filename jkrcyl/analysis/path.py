@@ -68,7 +68,24 @@ def _junction(track, i: int, sgn: int) -> bool:
     if regime is None or not 0 <= inner < size or sgn * (track.y[i] - track.y[inner]) <= 0:
         return False
     sv = solver(track.pb)
-    return sv.has(regime) and sv.continues(regime, float(track.a[i])) is not None
+    if not sv.has(regime):
+        return False
+    other = sv.continues(regime, float(track.a[i]))
+    return other is not None and _goes_on(track, other, sgn)
+
+
+def _goes_on(track, other, sgn: int) -> bool:
+    """Whether the branch a table's end continues as, other = (regime, a), takes the held quantity on the walk's way
+    from the junction; else the junction is a corner of the held quantity, a fold, and no end: the walk would go
+    back and forth between the two ends (rigid cradle round a rubber pin, lambda 3, h0 0.1 Delta, under grip: the
+    contact branch's touch end and the zone-only pin's are a minimum of delta, tests/test_lazy_track.py)."""
+    regime, a = other
+    if regime == "full-contact":                 # the bonded pin: no single-patch table (the round-zone tail's end)
+        return True
+    nxt = _tracks.track(track.pb, track.un, regime, track.side, track.control)
+    j = nxt.index(a)
+    inner = 1 if j == 0 else nxt.y.size - 2 if j == nxt.y.size - 1 else -1
+    return 0 <= inner < nxt.y.size and sgn * (nxt.y[inner] - nxt.y[j]) > 0
 
 
 def _fold(track, j: int, sgn: int):
@@ -195,8 +212,12 @@ def pull_path(pb: Problem, un: Units, control: str) -> PullPath:
     _, event, state = walk(track, track.index(start.a), -math.inf)
     if event in ("fold", "end") and state.a <= track.a[0] and solver(pb).floats_onto() == track.a[0]:
         return PullPath(start, "float", state)   # back at the touch end: the contact vanishes, the pin floats again
+    legs = {(start.branch, start.a)}
     while event == "end":                  # a branch going on as another (cohesive: contact -> zone-only pin)
         nxt = _land.continuation(pb, un, state, control)
+        if nxt is not None and (nxt.branch, nxt.a) in legs:   # never expected (walk's _goes_on): fail, not loop
+            raise RuntimeError(f"the pull path came back to the {nxt.branch} state at a = {nxt.a:g}")
+        legs.add((None, None) if nxt is None else (nxt.branch, nxt.a))
         if nxt is None:
             break                          # the branch just ends (JKR: the contact grows towards a_crit)
         if nxt.branch == "full-contact" and nxt.stable and nxt.feasible:

@@ -27,6 +27,7 @@ from . import cohesive_branch as _cb
 from . import cohesive_contact as _cc
 from . import cohesive_super as _csu
 from . import one_arc as _one
+from . import roots as _roots
 
 H_FIRST = 1e-5          # the first step in x (the traces stop 1e-3 from eps_crit; folds lie ~1e-4 from it)
 H_MAX = 0.05            # the largest step in x
@@ -62,18 +63,8 @@ def load(law, x):
 
 def _secant(f, a, b):
     """The root of f by secant from a, b to TOL, or to NOISE where f's rounding stops it (a thin zone: F's
-    noise ~1e-14 over its slope in log(c - eps) ~4e-3 at lambda 200), else None."""
-    fa, fb = f(a), f(b)
-    for _ in range(SECANT_STEPS):
-        if not (np.isfinite(fa) and np.isfinite(fb)):
-            return None
-        if fa == fb:
-            return b if abs(b - a) <= NOISE else None
-        a, fa, b = b, fb, b - fb * (b - a) / (fb - fa)
-        if abs(b - a) <= TOL * max(1.0, abs(b)):
-            return b
-        fb = f(b)
-    return b if abs(b - a) <= NOISE else None
+    noise ~1e-14 over its slope in log(c - eps) ~4e-3 at lambda 200), else None (jkrcyl.numerics.roots)."""
+    return _roots.secant_or_none(f, a, b, TOL, NOISE, SECANT_STEPS)
 
 
 def at_eps(law, le, ld):

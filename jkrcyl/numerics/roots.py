@@ -205,6 +205,23 @@ def secant(f, x0, x1, lo, hi, tol=1e-13, maxit=40):
     return x1, f1
 
 
+def secant_or_none(f, a, b, tol, noise, steps):
+    """Secant iterations for f(x) = 0 from a, b, unbounded, without raising: the root where a step is below tol
+    (relative to max(1, |x|)), or within noise where f's rounding stops it (equal values, or the steps run out)
+    -- else None (f not finite, or no convergence)."""
+    fa, fb = f(a), f(b)
+    for _ in range(steps):
+        if not (np.isfinite(fa) and np.isfinite(fb)):
+            return None
+        if fa == fb:
+            return b if abs(b - a) <= noise else None
+        a, fa, b = b, fb, b - fb * (b - a) / (fb - fa)
+        if abs(b - a) <= tol * max(1.0, abs(b)):
+            return b
+        fb = f(b)
+    return b if abs(b - a) <= noise else None
+
+
 def damped_newton(f, x, jacobian, scale, tol, largest, max_steps, halvings, floor=None, after_step=None):
     """Newton on a small system f(x) = 0 (f: a vector, or None outside its domain) with the Jacobian
     ``jacobian(x, r)`` (None: singular or not computable), each step scaled down to |dx_i| <= largest_i and halved
