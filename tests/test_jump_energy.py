@@ -74,6 +74,7 @@ def test_the_potential_is_continuous_where_the_arcs_meet(d, eps):
     assert abs(offset) < 1e-8 * abs(full.energy)
 
 
+@pytest.mark.slow                       # ~15 s (a 16-node quadrature of two-patch states): CI's fast budget
 def test_full_contact_level_from_the_release_rates_alone():
     """Pi(full) - Pi(two patches) at the fold's approach, from the fixed-arc edge coefficient of the top arc alone:
     int 2 vartheta^2 (pi^2 k_top^2 - M^2) d eps_top at fixed delta and eps, from the fold's top arc to the closed
