@@ -11,9 +11,11 @@ import math
 import numpy as np
 import pytest
 
+import jkrcyl
 from jkrcyl.analysis import pull_off as po
 from jkrcyl.laws import DugdaleEdge
 from jkrcyl.model.problem import Problem
+from jkrcyl.model.single_patch import solver
 from jkrcyl.numerics import cohesive as co
 from jkrcyl.numerics import cohesive_branch as cb
 from jkrcyl.numerics import cohesive_follow as fo
@@ -48,9 +50,9 @@ def start_and_domain(law):
     return np.array([math.log(law.eps_lo), math.log(start.c - law.eps_lo)]), inside
 
 
-def pseudo_arclength(law, x0, inside):
+def pseudo_arclength(law, x0, inside, h_min=1e-5):
     return cont.trace(lambda x: fo.residual(law, x), x0, np.array([1.0, 0.0]), inside, lambda a, b: (None, "end"),
-                      h0=0.1, h_max=0.25, h_min=1e-5).points
+                      h0=0.1, h_max=0.25, h_min=h_min).points
 
 
 @pytest.mark.parametrize("lam, M", [MONOTONE, TURNS_BACK])
@@ -58,11 +60,25 @@ def test_follow_traces_the_branch_of_the_pseudo_arclength_tracer(lam, M):
     """Every point of follow is on the branch (|h(c) - h0| <= 1e-9 (1 + h0)); its eps-range, its folds in eps and
     its end equal those of the pseudo-arclength trace (the fold's eps to 1e-3 in log eps: both sample the curve,
     the tip lies between samples; the end to 1e-2: follow stops within 64 H_MIN of the edge)."""
-    law = law_of(lam, M)
+    _against_pseudo_arclength(law_of(lam, M))
+
+
+def test_follow_goes_round_a_tight_turn_of_a_material_pair():
+    """vartheta 2.83, gb 0.694 (E 17.1 GPa, nu 0.234 round E_I 3.24 GPa, nu_I 0.407), lambda 3.87, M 0.488: the
+    branch turns back in eps at 0.01413 so tightly that follow stopped there with the step at 1e-5 ('the step fell
+    below H_MIN', every analysis of the contact refused; M 0.47 and 0.5 passed).  As the pseudo-arclength trace
+    (its smallest step 1e-7)."""
+    mat = jkrcyl.Materials.from_young(E=1.71e10, nu=0.234, E_I=3.24e9, nu_I=0.407)
+    w = (0.488 / jkrcyl.Contact(1e-2, 1e-5, 1.0, mat).M) ** 2
+    c = jkrcyl.Contact.with_lambda(1e-2, 1e-5, w, mat, 3.87)
+    _against_pseudo_arclength(solver(c.problem).law, h_min=1e-7)
+
+
+def _against_pseudo_arclength(law, h_min=1e-5):
     x0, inside = start_and_domain(law)
     got, why = fo.follow(law, x0, inside)
     assert why == ""
-    ref = pseudo_arclength(law, x0, inside)
+    ref = pseudo_arclength(law, x0, inside, h_min)
     res = np.array([fo.residual(law, x) for x in got[1:]])
     assert np.all(np.abs(res) <= 1e-9 * (1 + law.h0))
     turns = lambda x: int(np.sum(np.diff(np.sign(np.diff(x[:, 0]))) != 0))

@@ -46,7 +46,10 @@ def _residual(law, x):
 
 
 TURN = 0.9              # follow: the largest turn of the branch per step, as the cosine between tangents
-H_MIN = 1e-5            # follow: the smallest step in (log eps, log(c - eps))
+H_MIN = 1e-5            # follow: the smallest step in (log eps, log(c - eps)) towards the domain's edge
+TURN_MIN = 1e-6         # follow: the smallest step looking for the next point where the branch turns sharply
+#                         (vartheta 2.83, gb 0.694, lambda 3.87, M 0.488: 1e-5 stopped the sub-critical trace at
+#                         eps 0.0141, zone 0.728 rad, where M 0.47 and 0.5 passed; 1e-6 passes it)
 SECANT_STEPS = 12       # follow: secant iterations on a line of fixed zone length
 FIXED_EPS_SLOPE = 0.01  # follow: correct at fixed eps where the unit tangent has |d log eps| >= this
 FD_STEP = 1e-6          # follow: finite-difference step of the tangent in (log eps, log(c - eps))
@@ -57,7 +60,7 @@ def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None, prev=
     """The branch k = 0, h(c) = h0 through x0 = (log eps, log(c - eps)) (on it), leaving it along prev (a
     direction in x: by default towards growing eps), up to
     where it leaves the domain inside(x): a Followed (the points (n, 2) and '' -- or the reason it stopped
-    before: no tangent (the residual flat or not finite), the step below H_MIN without a point on the branch,
+    before: no tangent (the residual flat or not finite), the step below TURN_MIN without a point on the branch,
     or max_steps).
 
     Natural-parameter continuation with a switching parameter: predict along the tangent and correct on the
@@ -102,8 +105,8 @@ def follow(law, x0, inside, h0=0.1, h_max=0.25, max_steps=1500, done=None, prev=
         t_new, side_new = _tangent(law, y, t) if ok else (None, None)
         if t_new is None or not t_new @ t >= TURN:
             h /= 2
-            if h < H_MIN:
-                return Followed(np.array(pts), _stopped("the step fell below H_MIN without a point on the branch",
+            if h < TURN_MIN:
+                return Followed(np.array(pts), _stopped("the step fell below TURN_MIN without a point on the branch",
                                                         x))
             continue
         pts.append(y)
