@@ -201,3 +201,28 @@ def test_the_bond_breaking_with_no_branch_going_on_lands_on_the_largest_state():
     work = sum(j.before.P_star * (j.after.delta_over_Delta - j.before.delta_over_Delta) for j in loop)
     work += sum(_piece_work(pb, j.after, k.before) for j, k in zip(loop, loop[1:] + loop[:1]))
     assert cy.dissipated / pb.scale == pytest.approx(work, rel=1e-5)
+
+
+@pytest.mark.slow                       # ~6 s (a grip cycle of an alpha* != 0 pair under the law)
+def test_a_zip_whose_bonded_pin_cannot_hold_says_why():
+    """E 47.9 GPa, nu 0.302 round E_I 12.2 GPa, nu_I 0.395 at lambda 2, M 0.730, grip to -1.95 Delta: the top's
+    super-critical contact zips round where the bonded pin would pull past the bond limit; the cycle stopped with no
+    reason (found by a scan of random pairs, session 35).  Now it says so, and what it says holds by the public
+    route: at that approach Contact.solve lists full contact as infeasible and no stable, feasible state on the top
+    side or larger than the zipping contact."""
+    import jkrcyl
+    mat = jkrcyl.Materials.from_young(E=47857623382.04361, nu=0.3015702382169249, E_I=12232031767.623913,
+                                      nu_I=0.39487665615831213)
+    w = (0.7298 / jkrcyl.Contact(1e-2, 1e-5, 1.0, mat).M) ** 2
+    c = jkrcyl.Contact.with_lambda(1e-2, 1e-5, w, mat, 2.0)
+    cy = c.cycle(delta_max=0.0, delta_min=-1.95 * c.Delta, control="grip", n=10 ** 6)
+    assert cy.dissipated is None and "after the zip at" in cy.note and "past the bond limit" in cy.note, cy.note
+    need, limit = (float(x) for x in re.findall(r"P = (\S+) N/m in full contact, past the bond limit (\S+) N/m",
+                                                cy.note)[0])
+    assert abs(need) > abs(limit) > 0
+    delta = float(re.search(r"after the zip at .*?delta=(\S+) m", cy.note).group(1))
+    width = float(re.search(r"after the zip at .*?width=(\S+) m", cy.note).group(1))
+    states = c.solve(delta=delta)
+    assert any(s.branch == "full-contact" and not s.feasible for s in states), states
+    assert not [s for s in states if s.stable and s.feasible and (s.branch.endswith("-top") or
+                                                                   s.contact_width > width)], states

@@ -87,6 +87,8 @@ class _Run:
                                                                                                    value))
                 if not why and kind in ("zip", "top-contact") and self.pb.rigid_cradle:
                     why = _reasons.rigid_cradle()
+                if not why and kind == "zip":
+                    why = _reasons.bond_breaks(self.pb, self.un, s, self.control, value)
                 return None, f"leg {leg}: no stable state to jump to after the {kind} at {s!r}" + (
                     f" -- {why}" if why else "")
             if kind != "continue":                           # a branch going on as another is no jump

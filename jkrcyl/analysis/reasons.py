@@ -3,9 +3,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..model import full_contact as _full
 from ..model.problem import Problem
 from ..model.single_patch import solver
+from ..units import CONTROLS
 from . import branches as _br
+from . import forward as _fw
 
 
 def unmodelled(pb: Problem) -> str:
@@ -28,6 +31,20 @@ def rigid_cradle(what: str = "the contact growing round (two patches, full conta
     """Why a rigid cradle's pin has no state where its contact grows round: the wording pull_off and cycle print."""
     return f"a rigid cradle, vartheta = inf: {what} is not modelled, full contact and two patches needing a " \
         "finite vartheta"
+
+
+def bond_breaks(pb: Problem, un, s, control: str, value: float) -> str:
+    """Why a zip finds no state to land on where the law's bonded pin cannot hold at the held value (the full-
+    contact state there infeasible: its load past the bond limit) and no stable contact on the zipping one's side,
+    nor a larger one, takes the jump: where the bond then breaks is not modelled (no reason printed before:
+    E 47.9 GPa, nu 0.302 round E_I 12.2 GPa, nu_I 0.395, lambda 2, M 0.730, grip to -1.95 Delta)."""
+    full = _fw.full_contact_state(pb, un, CONTROLS[control].normalised, un.normalise(control, value), control)
+    if full is None or full.feasible:
+        return ""
+    limit = un.physical("load", _full.bond_limit(pb, full.P_star))
+    return (f"the pin drawn round from the {s.branch} contact would need P = {full.P:.6g} N/m in full contact, past "
+            f"the bond limit {limit:.6g} N/m, and no stable state on its side or larger takes the jump: where the "
+            "bond breaks as it zips is not modelled")
 
 
 def _single_patch_only(pb: Problem) -> str:
