@@ -69,8 +69,9 @@ class _Run:
                               f"{s.delta:.6g} m ({short}); the cycle stops there")
             if s.branch == "separated" and self.control != "load":
                 lo, hi = _fw.solver(self.pb).free_range()      # where the free pin touches a side (or its range)
-                value = (hi if up else lo) * self.un.Delta
-                s = _fw.separated_state(self.pb, self.un, hi if up else lo, self.control)   # the end itself
+                end = hi if up else lo
+                value = end * self.un.Delta
+                s = _fw.separated_state(self.pb, self.un, end, self.control)   # the end itself, not through metres
                 self.add(s, leg)
             to, kind = _land.land(self.pb, self.un, s, event, self.control, value, up)
             if to is None:

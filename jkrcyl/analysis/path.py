@@ -63,9 +63,8 @@ def _junction(track, i: int, sgn: int) -> bool:
     branch goes on as another there (SinglePatch.continues: the cohesive zone-only pin's touch and the contact
     branch's; a walk from a state between the last two points starts at the nearest, the end: lambda 1.2, M 0.04,
     vartheta 10 under grip read it as a fold, 'no stable state to jump to after the snap-in')."""
-    size, regime = track.y.size, getattr(track, "regime", None)
-    inner = 1 if i == 0 else size - 2 if i == size - 1 else -1
-    if regime is None or not 0 <= inner < size or sgn * (track.y[i] - track.y[inner]) <= 0:
+    regime, inner = getattr(track, "regime", None), _inner(track, i)
+    if regime is None or inner is None or sgn * (track.y[i] - track.y[inner]) <= 0:
         return False
     sv = solver(track.pb)
     if not sv.has(regime):
@@ -84,8 +83,15 @@ def _goes_on(track, other, sgn: int) -> bool:
         return True
     nxt = _tracks.track(track.pb, track.un, regime, track.side, track.control)
     j = nxt.index(a)
-    inner = 1 if j == 0 else nxt.y.size - 2 if j == nxt.y.size - 1 else -1
-    return 0 <= inner < nxt.y.size and sgn * (nxt.y[inner] - nxt.y[j]) > 0
+    inner = _inner(nxt, j)
+    return inner is not None and sgn * (nxt.y[inner] - nxt.y[j]) > 0
+
+
+def _inner(track, i: int):
+    """The grid index next to i inside the table where i is one of its ends, else None."""
+    size = track.y.size
+    inner = 1 if i == 0 else size - 2 if i == size - 1 else -1
+    return inner if 0 <= inner < size else None
 
 
 def _fold(track, j: int, sgn: int):
@@ -215,11 +221,11 @@ def pull_path(pb: Problem, un: Units, control: str) -> PullPath:
     legs = {(start.branch, start.a)}
     while event == "end":                  # a branch going on as another (cohesive: contact -> zone-only pin)
         nxt = _land.continuation(pb, un, state, control)
-        if nxt is not None and (nxt.branch, nxt.a) in legs:   # never expected (walk's _goes_on): fail, not loop
-            raise RuntimeError(f"the pull path came back to the {nxt.branch} state at a = {nxt.a:g}")
-        legs.add((None, None) if nxt is None else (nxt.branch, nxt.a))
         if nxt is None:
             break                          # the branch just ends (JKR: the contact grows towards a_crit)
+        if (nxt.branch, nxt.a) in legs:    # never expected (walk's _goes_on): fail, not loop
+            raise RuntimeError(f"the pull path came back to the {nxt.branch} state at a = {nxt.a:g}")
+        legs.add((nxt.branch, nxt.a))
         if nxt.branch == "full-contact" and nxt.stable and nxt.feasible:
             return PullPath(start, "round", nxt)     # a cohesive round-zone tail closing into the bonded pin
         if not (nxt.stable and nxt.feasible):
