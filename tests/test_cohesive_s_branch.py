@@ -520,3 +520,32 @@ def test_a_grip_cycle_jumps_across_the_narrow_s():
     for j in grip.jumps:
         assert j.before.delta == pytest.approx(j.after.delta, rel=1e-9, abs=1e-15)
         assert _gibbs_drop(j, "grip") >= -1e-12 * abs(j.before.energy), j
+
+
+def test_a_round_zone_that_goes_on_is_not_a_top_bridge():
+    """A rigid cradle round a pin E_I 6.93 GPa, nu_I 0 (gb 1/2, alpha*/beta* -1/2), lambda 2, M_R* 0.526 (session
+    35's scan was told 'a top bridge'): the round zone's gap is least at the top, but just past the jump it lies
+    below h0 all round (below 0: the zone's traction swells the pin past the clearance, it overlaps the top), so no
+    zone parts beside the top.  Independent: a sign scan of h(c) - h0 over the whole exterior at fixed contacts
+    (the approach from k = 0, no trace) finds no zone end 1e-3 below the jump and two 1e-4 above it, near the
+    jump's c: a pair born at a fold in eps (measured: already 1e-4 below the jump, c 1.704 and 1.713 -- the first
+    root's solver sees the pair a little after its birth) -- 'second zone family', refused by the analyses."""
+    law = (0.526, scales.zone_strength(2.0, 0.526), math.inf, 0.5, -0.5)
+    h0 = cb.Law(*law).h0
+    eps, c, kind = cb.top_opens(cb.Law(*law))
+    assert kind == "second zone family"
+    above = co.cohesive_state(eps * (1 + 1e-9), *law)
+    assert above.zones == "all" or above.c < math.pi - 1.0
+    round_zone = co.cohesive_state(eps * (1 - 1e-9), *law)
+    gap = round_zone.fields.gap(np.linspace(eps, math.pi, 400))
+    assert round_zone.zones == "all" and gap.max() < 0.1 * h0 and gap[-1] < -0.3     # overlapping the top
+
+    def ends(e):
+        x = np.linspace(e * (1 + 1e-6), math.pi - 1e-6, 600)
+        g = np.array([_zone_end_residual(law, e, v) for v in x])
+        return x[:-1][np.sign(g[:-1]) != np.sign(g[1:])]
+    assert len(ends(eps * (1 - 1e-3))) == 0
+    pair = ends(eps * (1 + 1e-4))
+    assert len(pair) == 2 and np.all(abs(pair - c) < 0.05), pair
+    pin = solver(jkrcyl.equilibria.problem(0.526, math.inf, 0.5, alpha_ratio=-0.5, s0=law[1]))
+    assert "second zone family" in pin.unmodelled

@@ -32,7 +32,8 @@ zone end grows with the zone).  The total potential (elastic + Dugdale interface
 dE = p d(delta/Delta) along the branches.  A zone reaching round at the touch end that stops reaching round by a
 jump of its first zone-end root (jkrcyl.numerics.cohesive_branch.top_opens) is an S-shaped branch, narrow or not
 (the round zone, the root near the top back to a fold, the first root), traced whole (jkrcyl.numerics.cohesive_round);
-a round zone that would part beside the top instead (none found) is refused (:attr:`unmodelled`).  The top bridge
+a round zone that would part beside the top instead (none found), or that goes on while a second zone family
+is born at a fold (cohesive_branch.top_opens), is refused (:attr:`unmodelled`).  The top bridge
 (a zone at the top held by its own traction, from where the single patch's h(pi) = h0): :attr:`top_bridges`,
 jkrcyl.model.cohesive_bridge.  Full contact: the bonded pin of
 jkrcyl.model.full_contact (tension below s0); two patches: jkrcyl.analysis.cohesive_two_patch.

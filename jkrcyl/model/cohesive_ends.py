@@ -140,7 +140,8 @@ class CohesiveEnds:
     @functools.cached_property
     def unmodelled(self):
         """Why the analyses cannot follow the branch ('' when they can): the trace stopped before the branch's end
-        (cohesive_follow says why), or its zone jumps to a top bridge (cohesive_branch.top_opens)."""
+        (cohesive_follow says why), or its round zone's first root jumps other than onto an S-shaped branch (a top
+        bridge or a second zone family: cohesive_branch.top_opens)."""
         if self._sub.reason:                 # the trace stopped before the branch's end: no silent answer
             return self._sub.reason
         opens = _cb.opens_of(self.law) if self._sub.kind == "all" else None     # 'zone': an S traced whole

@@ -83,6 +83,13 @@ def round_values(law, eps):
     return float(p), delta, u
 
 
+def round_gap(law, eps, phi):
+    """h/Delta of the round-zone state at the contact eps, at the exterior angles phi (eps <= phi <= pi)."""
+    b = of(law, eps)
+    delta, u = b.state(law.s0)
+    return b.fc.gap(np.asarray(phi, dtype=float), delta, u, _co.zones_of(math.pi), law.s0)
+
+
 def round_slopes(law, eps):
     """(delta/Delta, dp/dt, d(delta/Delta)/dt, D_p, D_dn) of the round-zone branch at eps, t = log eps (as
     jkrcyl.numerics.cohesive_branch._slopes gives them): the slopes by central differences of the bordered states

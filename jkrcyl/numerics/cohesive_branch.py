@@ -38,8 +38,7 @@ from . import one_arc as _one
 START = 1e-3            # the trace starts at eps = START 2 m^(2/3) (at most 1e-3; below: Law.touch)
 JUNCTION_STEP = 2.0     # the spacing in log eps of the states below eps_lo (from the touch: 6 points at lambda 20)
 EPS_MARGIN = 1e-3       # below the receding limit (the pair's pole)
-P_CAP = 200.0           # the branch is traced up to p = P_CAP m^(4/3) (200 times the adhesion load scale, ~100
-                        # times the pull-off; beyond, solve warns: jkrcyl.BranchLimitWarning)
+P_CAP = 200.0           # traced up to p = P_CAP m^(4/3) (~100 pull-offs; beyond, jkrcyl.BranchLimitWarning)
 FD_REL = 2e-4           # finite-difference steps: in eps at a fixed zone length, relative to eps; in c, to c - eps
 ZONE_FD = 5e-4          # ... in a shifted system (next to eps_s), extrapolated from h and 2h
 ALL_POINTS = 160        # eps samples of a branch whose zone reaches round at the touch end
@@ -47,6 +46,7 @@ ROUND_SCAN = 10         # contacts scanned for a zone that stops reaching round 
 ROUND_JUMP = 1e-2       # a zone end this far below pi just past the opening is a jump (a continuous one -> pi)
 TOP_PROBE = 1e-2        # top_opens: the gap this fraction of the exterior below pi against h(pi) (a bridge: larger)
 NARROW = 1e-6           # top_opens: a round zone within this of h0 at the jump has ended there (a narrow S)
+PARTING_POINTS = 257    # top_opens: exterior angles where the round zone's gap is checked against h0
 
 _PointData = namedtuple("_PointData", "eps c delta p B dp_dt ddn_dt D_p D_dn h_pi zones fields state")
 
@@ -131,18 +131,17 @@ def top_opens(law, points=ROUND_SCAN):
     """For a branch whose zone reaches round at its touch end (zones 'all' at eps_lo): (eps, c, kind) where the
     first zone-end root of jkrcyl.numerics.cohesive.cohesive_state stops short of the top with a jump to c
     (pi - c > ROUND_JUMP just past eps, and as large with the opening bracketed 1e4 times closer), or None when
-    the zone stays round or opens continuously (c -> pi, as a square root).  Two kinds of jump, told apart by
-    where the round zone's gap is largest: 'S-shaped branch' -- at the top (h(pi) is the largest gap), so the
-    round-zone states go on until h(pi) = h0, where a zone end comes in from pi and runs back in eps to a fold
-    onto the first root (traced whole: jkrcyl.numerics.cohesive_round, where the round zone ends past the jump);
-    'narrow S-shaped branch' where the round zone has reached the range already at the jump the scan sees (h(pi)
-    >= (1 - NARROW) h0 there: at M 0.70, lambda 1.47 (gb 1/2.8) the two zone-end roots near the top, pi - c =
-    1e-3 and 2e-2 at 1e-4 below the opening, meet ~3e-4 below it in eps: traced with the zone part next to the
-    top parametrised by pi - c, jkrcyl.numerics.cohesive_round.near_top); 'top bridge' -- beside the top (h has
-    a local minimum at pi), so the zone would part beside the top and keep a zone at the top apart from the
-    bottom one (not traced; none found yet: the two cases once called so, M 0.70 at lambda 1.47 and M 0.093 at
-    lambda 0.05, are S-shaped).  A scan of ``points`` contacts (geometric in eps up to eps_hi: the top gap grows
-    with the contact), the first short one bisected to 1e-10 in log eps."""
+    the zone stays round or opens continuously (c -> pi, as a square root).  The kinds of jump:
+    'S-shaped branch' -- the round zone's largest gap at the top: the round-zone states go on until h(pi) = h0,
+    where a zone end comes in from pi and runs back in eps to a fold onto the first root (traced whole:
+    jkrcyl.numerics.cohesive_round); 'narrow S-shaped branch' where h(pi) >= (1 - NARROW) h0 at the jump already
+    (M 0.70, lambda 1.47, gb 1/2.8: two zone-end roots near the top meet ~3e-4 below the opening in eps; traced
+    with pi - c as parameter, cohesive_round.near_top).  Where h has a local minimum at pi: 'top bridge' if the
+    round zone's gap reaches h0 beside the top at the jump (it would part there, a zone at the top apart from the
+    bottom one; none found yet), else 'second zone family': the round zone goes on (its gap below h0 at
+    PARTING_POINTS angles) and the jump is to a zone family born at a fold in eps (rigid cradle round E_I 6.93
+    GPa, nu_I 0, lambda 2, M 0.526: round-zone states overlapping the top up to the receding limit's pole);
+    neither traced.  A scan of ``points`` contacts (geometric in eps to eps_hi), the first short one bisected."""
     c_at = lambda e: law.state(e).c
     eps = np.geomspace(law.eps_lo, law.eps_hi, points)
     if c_at(eps[0]) < math.pi:
@@ -163,7 +162,10 @@ def top_opens(law, points=ROUND_SCAN):
     below = law.state(math.exp(lo))
     beside = below.fields.gap(math.pi - TOP_PROBE * (math.pi - below.eps))[0]
     ended = state_values(law, math.exp(hi), math.pi)[2] >= (1 - NARROW) * law.h0    # the round zone, at the jump
-    kind = "top bridge" if beside > below.h_pi_over_Delta else "narrow S-shaped branch" if ended else "S-shaped branch"
+    kind = "narrow S-shaped branch" if ended else "S-shaped branch"
+    if beside > below.h_pi_over_Delta:          # the gap's least at the top: the zone parts beside it, or goes on
+        gap = _bo.round_gap(law, math.exp(hi), np.linspace(math.exp(hi), math.pi, PARTING_POINTS))
+        kind = "top bridge" if gap.max() >= (1 - NARROW) * law.h0 else "second zone family"
     return math.exp(hi), math.pi - opening[1], kind
 
 
@@ -192,9 +194,8 @@ def trace(law):
 
 
 def opens_of(law):
-    """:func:`top_opens` of a law whose range reaches round at the touch end (else None), computed once per law.
-    Asked at any range: at h0 >= 2 Delta no state pulls, but pushed the round zone still jumps (vartheta 10, gb 0,
-    lambda 3.155, M 0.246: h0 4.21, the S traced whole by cohesive_round, not sampled in eps across its jump)."""
+    """:func:`top_opens` of a law whose range reaches round at the touch end (else None), once per law; at any
+    range (h0 >= 2 Delta: nothing pulls, but pushed the round zone jumps: vartheta 10, gb 0, lambda 3.155, M 0.246)."""
     if not hasattr(law, "_opens"):
         law._opens = top_opens(law) if law.state(law.eps_lo).zones == "all" else None
     return law._opens

@@ -40,7 +40,9 @@ def jump_reason(jump):
     eps, c, kind = jump
     return (f"not modelled: the zone reaches round the hole at small contacts and its zone end jumps to "
             f"c = {c:.6g} rad at eps = {eps:.6g} rad -- a {kind} "
-            + ("(a zone at the top apart from the bottom one)" if kind == "top bridge" else
+            + {"top bridge": "(a zone at the top apart from the bottom one)",
+               "second zone family": "(a zone end born at a fold in the contact size, while the round-zone states "
+                                     "go on with their gap below the range all round)"}.get(kind,
                "(the round-zone states turn back in the contact size before joining the states that tend to JKR)")
             + ", not traced by the solver")
 
