@@ -124,6 +124,7 @@ def test_a_load_cycle_jumps_at_the_opening_and_crosses_a_crit_back():
     assert b.eps == pytest.approx(eps_open, rel=1e-9)
     assert b.P_star * pb.scale == pytest.approx(_round(law, eps_open).p, rel=1e-8)
     assert t.branch == "super-critical" and t.stable and t.feasible and t.P == pytest.approx(b.P, rel=1e-9)
+    assert jump.kind == "snap-in" and t.contact_width > b.contact_width      # pushed: not a 'pull-off' (was)
     assert landing.dissipated(pb, un, b, t) > 0        # the potential less the load's work falls (kernel units)
     assert cy.note == ""                                # closed: the crossing of eps_crit is traced
     eps_crit = 2 * math.atan(solver(pb).a_crit)

@@ -134,6 +134,8 @@ def land(pb: Problem, un: Units, s, event: str, control: str, value: float, up: 
     nearest = lambda xs: min(xs, key=lambda x: abs(x.size - s.size)) if xs else None
     if event == "fold" and s.branch.startswith("sub-critical") and up:
         got = nearest([x for x in cands if x.side == s.side])
+        if got is None and first != names:    # pushed past a round zone's opening (h0 4.21: vartheta 10, gb 0,
+            got = nearest([x for x in candidates(names) if x.side == s.side])   # lambda 3.155): super-critical
         if got is not None:
             return got, "snap-in"
     if event == "fold" and s.branch.startswith("sub-critical"):
