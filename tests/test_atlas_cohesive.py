@@ -68,6 +68,7 @@ def _law_vs_jkr(lam, pairs):
             assert abs(a - jkr["event_a"][0, 0]) <= 2 * h0, (M, th, a, jkr["event_a"][0, 0], h0)
 
 
+@pytest.mark.slow           # 89 s on a 2-core AMD EPYC (the longest of make test there)
 def test_classes_equal_jkr_at_lambda_50():
     """Reference: JKR's atlas (closed forms, numba); pairs >= 0.02 in M from JKR's boundaries (measured shifts
     there < 1.2e-6, module docstring, except the first-contact window near a_crit, which these pairs avoid)."""

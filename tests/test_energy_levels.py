@@ -97,7 +97,7 @@ def test_jkr_super_critical_branch_meets_full_contact():
 
 
 # --- the Maugis-Dugdale law ----------------------------------------------------------------------------------------
-@pytest.mark.parametrize("lam", [20.0, 50.0])
+@pytest.mark.parametrize("lam", [pytest.param(20.0, marks=pytest.mark.slow), 50.0])     # 20: 65 s, slow
 def test_the_zone_only_pin_leaves_the_free_pins_level(lam):
     """The pin entering the range (zone |phi| < c, c -> 0, delta -> -h0) has the free pin's potential 0, and
     along the zone-only branch to its touch (closed form in c: p = -2 s0 sin c, delta from h(c) = h0) the
