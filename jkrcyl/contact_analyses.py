@@ -112,7 +112,7 @@ class Analyses:
         Raises
         ------
         ValueError
-            For a rigid cradle (vartheta = inf: no top contact), Delta = 0, a law without two patches (naming its
+            For Delta = 0, a law without two patches (naming its
             parameter), materials with alpha* != 0 under the Maugis-Dugdale law, or n out of range.
 
         Examples
@@ -147,7 +147,7 @@ class Analyses:
         'detachment'
         """
         pb = self.problem.require("two-patch-branches", "confined_events() is")
-        return _confined.confined_events(_two.require_finite_theta(pb))
+        return _confined.confined_events(_two.require_two_patch(pb))
 
     # --- forward problems and paths (jkrcyl.analysis) -----------------------------------------------------
     def solve(self, P: Optional[float] = None, delta: Optional[float] = None,

@@ -107,7 +107,7 @@ def confined_events(M: float, theta: float, *, gb: float, alpha_ratio: float = 0
     """
     pb = Problem(M, theta, gb, alpha_ratio, edge_of_strength(s0)).require("two-patch-branches",
                                                                           "confined_events() is")
-    return _confined.confined_events(_two.require_finite_theta(pb))
+    return _confined.confined_events(_two.require_two_patch(pb))
 
 
 def full_contact(theta: float, P_star: Optional[float] = None, delta_over_Delta: Optional[float] = None, *,

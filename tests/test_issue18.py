@@ -118,14 +118,17 @@ def test_9_no_zero_load_contact_means_bonded_everywhere():
 def test_9_rigid_cradle_without_zero_load_contact_says_why():
     """Rubber roller (2 MPa, nu 0.45) in a rigid cradle, R 5 mm, Delta 2 um, w 0.1: M_R* = 3.98, the load of the
     single patch (Contact.state, a route apart from the walker) is negative up to the receding limit, so the pin
-    zips round at first touch; full contact needs a finite vartheta, so pull_off and cycle say so (no number)."""
+    zips round at first touch into full contact (a compressible pin fills the rigid hole: alpha*/beta* -1/11), which
+    JKR's bond holds at any load: pull_off says so (no number), the cycle snaps into full contact at P = 0 and
+    stays (the approach there: delta/Delta = -1 of the bonded pin at zero load, model.full_contact)."""
     c = jkrcyl.Contact(R=5e-3, Delta=2e-6, w=0.1,
                        materials=jkrcyl.Materials.from_young(E=math.inf, nu=0.3, E_I=2e6, nu_I=0.45))
     assert np.all(c.state(np.linspace(0.01, 0.999, 40) * c.a_crit).P < 0)
     po = c.pull_off()
-    assert po.P is None and "rigid cradle" in po.reason
+    assert po.P is None and "zips round into full contact" in po.reason and "does not detach" in po.reason
     cy = c.cycle(P_max=100.0, P_min=-100.0, n=20)
-    assert cy.jumps == [] and cy.dissipated is None and "rigid cradle" in cy.note
+    assert [(j.kind, j.after.branch) for j in cy.jumps] == [("snap-in", "full-contact")] and cy.dissipated == 0.0
+    assert cy.jumps[0].after.delta == pytest.approx(-c.Delta, rel=1e-12)
 
 
 def test_10_inputs():

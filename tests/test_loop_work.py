@@ -82,6 +82,8 @@ def test_jkr_cycle_dissipates_its_loop_work(pair, M, control):
 @settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(E=MODULUS, nu=NU, E_I=MODULUS, nu_I=NU, M=st.floats(0.05, 1.2), P_lo=st.sampled_from([-1.0, -3.0, -20.0]),
        control=st.sampled_from(["load", "grip", "grip-work"]))
+@example(E=math.inf, nu=0.0, E_I=3.576e9, nu_I=0.0, M=0.6537, P_lo=-1.0, control="grip-work")   # a rigid cradle: zip
+@example(E=math.inf, nu=0.3, E_I=2e6, nu_I=0.5, M=2.0, P_lo=-20.0, control="load")   # section 7.2's rubbery cylinder
 def test_jkr_cycle_dissipates_its_loop_work_wide(E, nu, E_I, nu_I, M, P_lo, control):
     """JKR up to M 1.2 (zips onto full contact, two patches), loads down to P* -20."""
     c = contact(E, nu, E_I, nu_I, M, None)

@@ -36,7 +36,7 @@ _DESCENT = {"full": "snap-in-full", "transfer": "snap-in-transfer", "two-patch":
 @functools.lru_cache(maxsize=32)
 def confined_events(pb: Problem) -> ConfinedEvents:
     """Classify the confined regime of a problem (finite vartheta, M > 0): see the module docstring."""
-    _two.require_finite_theta(pb)
+    _two.require_two_patch(pb)
     un = Units.normalised(pb, K_edge=1.0)           # normalised: P = P*, delta = delta/Delta
     law = not pb.models("two-patch")                # a law landing on its traced branch (the cohesive one)
     bs = _family(pb, "confined_events() is").branches() if law else _tr.branches(pb)
@@ -78,10 +78,10 @@ def confined_events(pb: Problem) -> ConfinedEvents:
 def outcomes(pb: Problem, points):
     """Point.outcome of fixed-load adherence points: what a further pull does there -- the fold rule where
     feasible (the fixed-arc dp/dk: 'detachment' or 'zip-full'), the confined analysis where the gap closes
-    first ('gap-closes-first' where it does not apply: vartheta = inf, M = 0, or a cohesive law)."""
+    first ('gap-closes-first' where it does not apply: M = 0, or a cohesive law)."""
     regime = None
     if any(not p.feasible for p in points):
-        regime = ("gap-closes-first" if pb.rigid_cradle or pb.M == 0 or not pb.models("two-patch")
+        regime = ("gap-closes-first" if pb.M == 0 or not pb.models("two-patch")
                   else confined_events(pb).regime)           # (a law: its confined_events costs its branches)
     return [replace(p, outcome=(regime if not p.feasible else
                                 "zip-full" if _po.grows_under_pull(pb, p.a, "load") else "detachment"))

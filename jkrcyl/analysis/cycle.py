@@ -86,8 +86,6 @@ class _Run:
                     why = _land.POLE
                 why = why or _land.across_a_crit(self.pb, self.un, self.control, self.un.normalise(self.control,
                                                                                                    value))
-                if not why and kind in ("zip", "top-contact") and self.pb.rigid_cradle:
-                    why = _reasons.rigid_cradle()
                 if not why and kind == "zip":
                     why = _reasons.bond_breaks(self.pb, self.un, s, self.control, value)
                 return None, f"leg {leg}: no stable state to jump to after the {kind} at {s!r}" + (

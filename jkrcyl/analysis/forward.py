@@ -132,7 +132,7 @@ def _warn_past_table(pb, un, regime, field, target, side):
 
 def confined(pb: Problem) -> bool:
     """True when some single-patch state closes the gap at phi = pi (h(pi) = 0 of (5.10)): two-patch states
-    exist (finite vartheta, M > 0).  False where two patches are not modelled (the cohesive law)."""
+    exist (M > 0).  False where two patches are not modelled (the cohesive law)."""
     return pb.models("two-patch") and bool(_tr.onset_angles(pb))
 
 
@@ -154,7 +154,7 @@ def _two_patch_solver(pb: Problem, un: Units, key: str, target: float, control: 
 def two_patch_states(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
     """The states of the law's traced two-patch branches (any law with 'two-patch-branches'): the two-patch branch
     of a solve that names it (:func:`solve_normalised` with by_name)."""
-    if not pb.models("two-patch-branches") or pb.rigid_cradle or pb.M <= 0:
+    if not pb.models("two-patch-branches") or pb.M <= 0 or (pb.rigid_cradle and not pb.models("two-patch")):
         return []
     try:
         states = _family(pb).states_at(key, target)
@@ -180,8 +180,8 @@ def full_contact_state(pb: Problem, un: Units, key: str, target: float, control:
 
 def _full_contact_solver(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
     # a law with two patches reaches full contact through them (the confined regime); one without (the cohesive
-    # law) from its contact branches' ends and at first touch: the bonded pin at any finite vartheta
-    if not (confined(pb) if pb.models("two-patch") else pb.models("full-contact") and not pb.rigid_cradle):
+    # law) from its contact branches' ends and at first touch: the bonded pin (a rigid cradle: a compressible pin)
+    if not (confined(pb) if pb.models("two-patch") else pb.models("full-contact")):
         return []
     s = full_contact_state(pb, un, key, target, control)
     return [] if s is None else [s]

@@ -22,15 +22,7 @@ def no_first_contact_reason(pb: Problem, control: str = "load") -> str:
     if not pb.models("two-patch"):      # e.g. the cohesive law: one patch, traced on its sub-critical branch
         return why + (_single_patch_only(pb) if control == "load" else "") + (
             f" (on the branches modelled for the {pb.edge.name} law: two patches are not)")
-    if pb.rigid_cradle:      # full contact and two patches need a finite vartheta (model.full_contact)
-        why += " (" + rigid_cradle("a pin that zips round into full contact at first touch") + ")"
     return why
-
-
-def rigid_cradle(what: str = "the contact growing round (two patches, full contact)") -> str:
-    """Why a rigid cradle's pin has no state where its contact grows round: the wording pull_off and cycle print."""
-    return f"a rigid cradle, vartheta = inf: {what} is not modelled, full contact and two patches needing a " \
-        "finite vartheta"
 
 
 def bond_breaks(pb: Problem, un, s, control: str, value: float) -> str:

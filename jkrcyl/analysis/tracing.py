@@ -33,8 +33,8 @@ LOG_AXIS = math.log(EPS_AXIS)
 @functools.lru_cache(maxsize=64)
 def onset_angles(pb: Problem) -> tuple:
     """Half-angles eps where a single-patch equilibrium has h(pi) = 0 (sub- and super-critical branches);
-    () without two-patch states (vartheta = inf or M = 0)."""
-    if pb.rigid_cradle or pb.M <= 0:
+    () without two-patch states (M = 0)."""
+    if pb.M <= 0:
         return ()
     return tuple(sorted(2 * math.atan(r) for reg in solver(pb).regimes() for r, _ in _br.roots(pb, reg, "h")))
 
@@ -156,7 +156,7 @@ def _from_rows(fx, f, clip, found):
 @functools.lru_cache(maxsize=16)
 def traced(pb: Problem, nodes: int = _two.N_NODES) -> tuple:
     """Every two-patch branch as (points (k, 2) in half-angles, ends), cached per problem."""
-    _two.require_finite_theta(pb)
+    _two.require_two_patch(pb)
     fx, f = _residuals(pb, nodes)
     clip = _clipper(f)
     found = []

@@ -22,7 +22,7 @@ class JKRTwoPatch:
     (a state at a half-angle, the second variation)."""
 
     def __init__(self, pb: Problem):
-        self.pb = _two.require_finite_theta(pb)
+        self.pb = _two.require_two_patch(pb)
 
     def branches(self, n=None) -> tuple:
         return _tr.branches(self.pb, n)

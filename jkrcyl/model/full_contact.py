@@ -36,13 +36,14 @@ def law(pb: Problem):
     kn = _arcs.Kernel(pb.theta, pb.gb, pb.alpha_ratio)
     mode0 = 2 * math.pi * (kn.k0 - 1.0 + kn.ar)
     mode1 = math.pi * (kn.k1 - 0.5 + 0.5 * kn.ar)
-    return 1.0 / (pb.theta * mode0), -pb.theta * mode1 / math.pi
+    if not mode0 < 0:        # a rigid cradle (scale 1, k0 = 1): 2 pi ar, the pin's compressibility fills the gap
+        raise ValueError(f"alpha_ratio: no full contact in a rigid cradle at alpha*/beta* = {pb.alpha_ratio!r} >= 0 "
+                         "(an incompressible pin cannot fill the clearance: the tension would be unbounded)")
+    return 1.0 / (pb.scale * mode0), -pb.scale * mode1 / math.pi
 
 
 def state(pb: Problem, P_star=None, delta_over_Delta=None) -> FullContact:
     """Full contact at a given load P* or approach delta/Delta (exactly one of them)."""
-    if pb.rigid_cradle:
-        raise ValueError("theta: full contact needs a finite vartheta (n and P* normalise by vartheta)")
     if (P_star is None) == (delta_over_Delta is None):
         raise ValueError("P_star: give exactly one of P_star and delta_over_Delta")
     N0, c = law(pb.require_material_pair())
@@ -73,12 +74,12 @@ def holds(pb: Problem, fc: FullContact) -> bool:
     """Whether the bond holds under the edge law: the largest tension vartheta (|N1| - N0) (kernel scale, at phi = 0
     or pi) is at most the law's bond strength (module docstring; always for JKR), to BOND_RTOL: the cohesive
     round-zone tail closes into the bonded pin at its limit, so the state the branch continues as holds there."""
-    return pb.theta * (abs(fc.N1) - fc.N0) <= pb.edge.bond_strength() * (1 + BOND_RTOL)
+    return pb.scale * (abs(fc.N1) - fc.N0) <= pb.edge.bond_strength() * (1 + BOND_RTOL)
 
 
 def bond_limit(pb: Problem, sign: float) -> float:
     """P* (of the sign of ``sign``) where the bond stops holding, vartheta (|N1| - N0) = bond strength with
     N1 = P*/pi: pi (strength/vartheta + N0) in magnitude (inf for JKR); nan where it never holds."""
     N0, _ = law(pb)
-    size = math.pi * (pb.edge.bond_strength() / pb.theta + N0)
+    size = math.pi * (pb.edge.bond_strength() / pb.scale + N0)
     return math.copysign(size, sign) if size >= 0 else math.nan

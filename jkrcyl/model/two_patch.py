@@ -47,9 +47,9 @@ GAP_SAMPLES = 128       # exterior angles per state for the gap check h >= 0 (Ch
 SOLVE_GAP = 0.1         # solve() keeps the unknown half-angle this far from full contact
 
 
-def require_finite_theta(pb: Problem):
-    if pb.rigid_cradle:
-        raise ValueError("theta: two-patch states need a finite vartheta (M, P* normalise by vartheta)")
+def require_two_patch(pb: Problem):
+    """pb, validated for two-patch states (M > 0, a material pair); a rigid cradle (vartheta = inf) in the
+    kernel scale (M_R*, P_R* = p: numerics.arcs.Linear normalises by pb.scale = 1)."""
     if pb.M <= 0:
         raise ValueError(f"M must be in (0, inf) for two-patch states (Griffith at both ends), got {pb.M!r}")
     return pb.require_material_pair()
@@ -119,7 +119,7 @@ def solve(pb: Problem, eps_top=None, eps=None, guess=None, n=N_NODES, tol=1e-13)
 
     guess: starting value of the unknown half-angle.  ValueError if it does not converge (no equilibrium near
     the guess)."""
-    require_finite_theta(pb)
+    require_two_patch(pb)
     if (eps_top is None) == (eps is None):
         raise ValueError("eps_top: give exactly one of eps_top and eps")
     name, given = ("eps_top", eps_top) if eps is None else ("eps", eps)
@@ -162,7 +162,7 @@ def hessian(pb: Problem, eps, eps_top, delta_over_Delta, n=N_NODES, h=1e-6, lin=
     dkP[:, 0] = (kP(eps + h0, eps_top) - kP(eps - h0, eps_top)) / (2 * h0)
     if eps_top > 0:          # eps_top = 0: the single arc; the top row/column is decoupled (the identity)
         dkP[:, 1] = (kP(eps, eps_top + h1) - kP(eps, eps_top - h1)) / (2 * h1)
-    c = 4 * pb.theta * math.pi ** 2
+    c = 4 * pb.scale * math.pi ** 2
     H = np.empty((3, 3))
     He = c * kk[:, None] * dkP[:2]
     H[:2, :2] = 0.5 * (He + He.T)
