@@ -32,7 +32,9 @@ def law(pb: Problem):
     int K cos(t) dt = pi (k1 - 1/2 + ar/2), so N0 = 1/(vartheta int K dt) and
     delta/Delta + 1 = -vartheta (k1 - 1/2 + ar/2) P* (k0, k1: the engine's derived constants, so the law follows
     its definition of delta; at alpha* = 0, k1 = gb: c = 0 is the degeneracy gb = 1/2).  tests/test_twopatch.py
-    checks both integrals by quadrature and the law as the limit of closing gaps."""
+    checks both integrals by quadrature and the law as the limit of closing gaps.  A rigid cradle: vartheta -> scale
+    1 (n = nu, P* = p), int K dt = 2 pi ar, so N0 = 1/(2 pi ar), finite for a compressible pin (ar < 0) -- the limit
+    of a stiff cradle (tests/test_rigid_confined.py)."""
     kn = _arcs.Kernel(pb.theta, pb.gb, pb.alpha_ratio)
     mode0 = 2 * math.pi * (kn.k0 - 1.0 + kn.ar)
     mode1 = math.pi * (kn.k1 - 0.5 + 0.5 * kn.ar)
