@@ -18,8 +18,9 @@ keeps F smooth there).
 
 Energy (per unit length, in units 4 pi Delta^2 vartheta/beta*; vartheta here is pb.scale, 1 for a rigid cradle):
 U* = [(1 + delta/Delta) P* - B*]/2, half the work of the pressure on the rigid overlap (5.1).  Then
-dU*/d(delta/Delta) = P* (load and approach conjugate) and dU*/d eps = 2 vartheta pi^2 k_bot^2 = 2 vartheta M^2 G/w (energy release at fixed grip), which the tests check by
-finite differences.  Stability: the total potential Pi* = U* - 2 vartheta M^2 (eps + eps_top) (minus P* delta/Delta
+dU*/d(delta/Delta) = P* (load and approach conjugate) and dU*/d eps = 2 vartheta pi^2 k_bot^2 = 2 vartheta M^2 G/w
+(energy release at fixed grip), which the tests check by finite differences.  Stability: the total potential
+Pi* = U* - 2 vartheta M^2 (eps + eps_top) (minus P* delta/Delta
 under load control) must be a minimum (:func:`hessian`, jkrcyl.model.stability.two_patch_flags).
 
 Mirror: turning the picture upside down (phi -> phi + pi) swaps the arcs and maps P* -> -P*,
