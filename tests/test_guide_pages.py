@@ -132,6 +132,7 @@ def test_fit_example_as_stated():
     assert (ns["_cwd"] / "fit.png").stat().st_size > 1000
 
 
+@pytest.mark.slow           # 39 s on a 2-core AMD EPYC; the other guide pages stay in make test
 def test_cohesive_as_stated():
     """cohesive.md: the numbers in the comments are what the library returns; the JKR values quoted beside them
     are the README pin's own (sigma0 = None)."""

@@ -95,6 +95,7 @@ def test_full_contact_level_from_the_release_rates_alone():
     assert level > 9.0
 
 
+@pytest.mark.slow           # 21 s on a 2-core AMD EPYC
 def test_the_grip_walk_leaves_the_two_patch_fold_onto_the_bottom_patch():
     """The case of the docstring: the top arc lets go at the fold, the pin lands on the stable bottom patch at
     that approach (the closed form's), the jump dissipating the potential difference (0.316)."""
