@@ -84,10 +84,9 @@ def round_values(law, eps):
 
 
 def round_gap(law, eps, phi):
-    """h/Delta of the round-zone state at the contact eps, at the exterior angles phi (eps <= phi <= pi)."""
-    b = of(law, eps)
-    delta, u = b.state(law.s0)
-    return b.fc.gap(np.asarray(phi, dtype=float), delta, u, _co.zones_of(math.pi), law.s0)
+    """h/Delta of the round-zone state at the contact eps (:func:`round_values`), at the exterior angles phi."""
+    _, delta, u = round_values(law, eps)
+    return of(law, eps).fc.gap(np.asarray(phi, dtype=float), delta, u, _co.zones_of(math.pi), law.s0)
 
 
 def round_slopes(law, eps):
