@@ -136,8 +136,8 @@ class Analyses:
         Raises
         ------
         ValueError
-            For a rigid cradle, Delta = 0 or a law without two patches (the Maugis-Dugdale law: naming sigma0
-            where its two-patch branches are not followed, jkrcyl.analysis.cohesive_two_patch).
+            For Delta = 0 or a law without two patches (the Maugis-Dugdale law: naming sigma0 where its
+            two-patch branches are not followed, jkrcyl.analysis.cohesive_two_patch).
 
         Examples
         --------

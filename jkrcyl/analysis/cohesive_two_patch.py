@@ -45,9 +45,6 @@ class CohesiveTwoPatch:
 
     def __init__(self, pb: Problem):
         _two.require_two_patch(pb)
-        if pb.rigid_cradle:      # JKR's: the stiff cradle's limit (tests/test_rigid_confined.py); the law's unchecked
-            raise ValueError("theta: the Maugis-Dugdale law's two patches are modelled for a finite vartheta only "
-                             "(JKR's for a rigid cradle too)")
         _cb.require_alpha_zero(pb.alpha_ratio)
         self.pb = pb
         self.jkr = Problem(pb.M, pb.theta, pb.gb, pb.alpha_ratio)

@@ -154,7 +154,7 @@ def _two_patch_solver(pb: Problem, un: Units, key: str, target: float, control: 
 def two_patch_states(pb: Problem, un: Units, key: str, target: float, control: str) -> List[Equilibrium]:
     """The states of the law's traced two-patch branches (any law with 'two-patch-branches'): the two-patch branch
     of a solve that names it (:func:`solve_normalised` with by_name)."""
-    if not pb.models("two-patch-branches") or pb.M <= 0 or (pb.rigid_cradle and not pb.models("two-patch")):
+    if not pb.models("two-patch-branches") or pb.M <= 0:
         return []
     try:
         states = _family(pb).states_at(key, target)
