@@ -20,7 +20,7 @@ from ..results import TwoPatchCurve
 from . import branches as _br
 
 EPS_AXIS = 1e-12        # smallest half-angle traced: a branch reaching it ends on the single-patch state
-GAP_FULL = 0.02         # eps + eps_top >= pi - GAP_FULL: the branch has run into full contact
+GAP_FULL = _two.GAP_FULL   # eps + eps_top >= pi - GAP_FULL: the branch has run into full contact
 SCAN_TOP = (0.05, 0.3, 0.7, 1.2, 1.8, 2.5)    # eps_top rows scanned for branches not reached otherwise
 SCAN_POINTS = 32
 SCAN_GAP = 0.1          # rows stop this far from full contact (F keeps one sign there)

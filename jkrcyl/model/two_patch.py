@@ -45,7 +45,8 @@ from .problem import Problem
 N_NODES = _two.N_NODES
 GAP_SAMPLES = 128       # exterior angles per state for the gap check h >= 0 (Chebyshev points of the open gap,
                         # clustered at the arc ends where h ~ distance^(3/2) is smallest)
-SOLVE_GAP = 0.1         # solve() keeps the unknown half-angle this far from full contact
+F_NOISE = 1e-11         # F's rounding near full contact (~5e-13 at a gap of 0.06; 1e-8 is an equilibrium)
+GAP_FULL = 0.02         # eps + eps_top >= pi - GAP_FULL: full contact (traced branches end there, solve() stays short)
 
 
 def require_two_patch(pb: Problem):
@@ -56,14 +57,15 @@ def require_two_patch(pb: Problem):
     return pb.require_material_pair()
 
 
-def linear(pb: Problem, eps, eps_top, n=N_NODES):
-    """Affine pieces at fixed arcs: q0, q1 = [P*, B*, k_bot, k_top] for (Delta-case, unit delta/Delta)."""
-    return _two.linear(eps, eps_top, pb.theta, pb.gb, pb.alpha_ratio, n)
+def linear(pb: Problem, eps, eps_top, n=N_NODES, exact=False):
+    """Affine pieces at fixed arcs: q0, q1 = [P*, B*, k_bot, k_top] for (Delta-case, unit delta/Delta); at least
+    n nodes per arc (the node policy of numerics.two_arcs.nodes), or exactly n."""
+    return _two.linear(eps, eps_top, pb.theta, pb.gb, pb.alpha_ratio, n, exact)
 
 
-def residual_pieces(pb: Problem, eps, eps_top, n=N_NODES):
+def residual_pieces(pb: Problem, eps, eps_top, n=N_NODES, exact=False):
     """(F, Linear) at the half-angles: F of the module docstring, distance-like (units of k)."""
-    lin = linear(pb, eps, eps_top, n)
+    lin = linear(pb, eps, eps_top, n, exact)
     q0, q1 = lin.q0, lin.q1
     m = pb.M / math.pi
     D = (q0[2] - m) * q1[3] - (q0[3] - m) * q1[2]
@@ -127,21 +129,33 @@ def solve(pb: Problem, eps_top=None, eps=None, guess=None, n=N_NODES, tol=1e-13)
     given = finite_scalar(name, given, low=0.0, low_open=True)
     if given >= math.pi:
         raise ValueError(f"{name} must be in (0, pi), got {given!r}")
+    pair = (lambda x: (x, given)) if eps is None else (lambda x: (given, x))
+    x = float(guess) if guess is not None else 0.5 * (math.pi - given)
+    policy = lambda x: _two.nodes(*pair(x), n, pb.alpha_ratio)       # nodes per arc at half-angles pair(x)
+    for _ in range(3):      # F's sign (det's) holds at one node count: the policy's at the start, then at the root
+        count = policy(x)
+        x, fx, lin = _secant(pb, pair, x, count, math.pi - given - GAP_FULL, tol)
+        if policy(x) == count:
+            break
+    if not abs(fx) < 1e-8:
+        raise ValueError(f"guess: no two-patch equilibrium found near {x!r}")
+    return fixed_arcs(pb, *pair(x), griffith_delta(lin, pb.M), n, lin=lin)
+
+
+def _secant(pb, pair, x0, count, hi, tol):
+    """(x, F, Linear) of the secant on F(pair(x)) = 0 in (0, hi) from x0, count nodes per arc exactly (F with
+    the policy's count per point jumps in sign where the count steps: session 37's hypothesis test of a rigid
+    cradle, M_R* 0.219 -- 22 of 26 states at a load missed)."""
     last = {}
 
     def f(x):                                           # keeps each solve for the final state
-        e, et = (x, given) if eps is None else (given, x)
-        r, last[x] = residual_pieces(pb, e, et, n)
+        r, last[x] = residual_pieces(pb, *pair(x), count, exact=True)
         return r
-    x0 = float(guess) if guess is not None else 0.5 * (math.pi - given)
     try:
-        x, fx = _roots.secant(f, x0, x0 * (1 + 1e-4), 0.0, math.pi - given - SOLVE_GAP, tol=tol)
+        x, fx = _roots.secant(f, x0, x0 * (1 + 1e-4), 0.0, hi, tol=tol, noise=F_NOISE)
     except ValueError:
         raise ValueError(f"guess: no two-patch equilibrium found near {x0!r}") from None
-    if not abs(fx) < 1e-8:
-        raise ValueError(f"guess: no two-patch equilibrium found near {x!r}")
-    e, et = (x, given) if eps is None else (given, x)
-    return fixed_arcs(pb, e, et, griffith_delta(last[x], pb.M), n, lin=last[x])
+    return x, fx, last[x]
 
 
 def hessian(pb: Problem, eps, eps_top, delta_over_Delta, n=N_NODES, h=1e-6, lin=None):

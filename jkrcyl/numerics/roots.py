@@ -187,11 +187,13 @@ def roots_on_grid(values, grid, refine):
     return sorted(out)
 
 
-def secant(f, x0, x1, lo, hi, tol=1e-13, maxit=40):
+def secant(f, x0, x1, lo, hi, tol=1e-13, maxit=40, noise=0.0):
     """Secant iterations for f(x) = 0 from x0, x1, kept in [lo, hi] (halving towards the previous iterate
-    when a step leaves it).  Returns (x, f(x)) of the last evaluated iterate; raises ValueError without
+    when a step leaves it).  Returns (x, f(x)) of the last evaluated iterate -- or, once |f| <= noise stops
+    falling (f's rounding: the steps then wander far above tol), of the best one; raises ValueError without
     convergence."""
     f0, f1 = f(x0), f(x1)
+    best = min((abs(f0), x0, f0), (abs(f1), x1, f1))
     for _ in range(maxit):
         if f1 == f0:
             break
@@ -200,6 +202,9 @@ def secant(f, x0, x1, lo, hi, tol=1e-13, maxit=40):
         if abs(x1 - x0) <= tol * abs(x1):
             return x0, f0
         f1 = f(x1)
+        if abs(f1) <= noise and abs(f1) >= best[0]:
+            return best[1], best[2]
+        best = min(best, (abs(f1), x1, f1))
     else:
         raise ValueError(f"secant: no convergence near {x1!r}")
     return x1, f1

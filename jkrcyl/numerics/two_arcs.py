@@ -33,9 +33,11 @@ def nodes(eps, eps_top, n, ar):
     return min(8 * math.ceil(max(n, N_NODES_ALPHA, AR_NODES_FACTOR * need) / 8), 256)
 
 
-def linear(eps, eps_top, theta, gb, ar, n=N_NODES):
-    """numerics.arcs.Linear at the half-angles: q0, q1 = [P*, B*, k_bot, k_top] of the (Delta, unit delta) cases."""
-    return _arcs.two_patch_linear(eps, eps_top, theta, gb, nodes(eps, eps_top, n, ar), ar)
+def linear(eps, eps_top, theta, gb, ar, n=N_NODES, exact=False):
+    """numerics.arcs.Linear at the half-angles: q0, q1 = [P*, B*, k_bot, k_top] of the (Delta, unit delta) cases;
+    at least n nodes per arc (:func:`nodes`), or exactly n (a root search's one discretisation: the sign of det A
+    relative to :func:`reference_sign` holds at a fixed count only)."""
+    return _arcs.two_patch_linear(eps, eps_top, theta, gb, n if exact else nodes(eps, eps_top, n, ar), ar)
 
 
 @functools.lru_cache(maxsize=None)
