@@ -20,6 +20,7 @@ from jkrcyl.analysis import tracing
 from jkrcyl.model.problem import Problem
 from jkrcyl.numerics.roots import sign_changes
 
+pytestmark = pytest.mark.filterwarnings("error::jkrcyl.notices.BranchLimitWarning")     # a state not solved
 GB, AR = 0.7713874977909054, -0.22861250220909446      # a rigid hole round a pin (hypothesis's draw)
 
 

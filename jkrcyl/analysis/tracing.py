@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import functools
 import math
+import warnings
 
 import numpy as np
 
@@ -14,6 +15,7 @@ from .._validate import count
 from ..model import two_patch as _two
 from ..model.problem import Problem
 from ..model.single_patch import solver
+from ..notices import BranchLimitWarning
 from ..numerics import continuation as _cont
 from ..numerics import roots as _roots
 from ..results import TwoPatchCurve
@@ -233,6 +235,8 @@ def states_at(pb: Problem, key: str, target: float):
             try:
                 x = _roots.brent(f, min(lo, hi), max(lo, hi))
                 out.append(state(x))
-            except ValueError:
-                continue
+            except ValueError as why:        # said, not dropped silently (session 37: 22 of 26 levels were)
+                warnings.warn(f"two-patch state at {key} = {target:.6g} not solved between the traced points "
+                              f"({e0:.6g}, {t0:.6g}) and ({e1:.6g}, {t1:.6g}): {why}", BranchLimitWarning,
+                              stacklevel=2)
     return out
