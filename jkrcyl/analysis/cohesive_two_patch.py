@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import functools
 import math
+import warnings
 
 import numpy as np
 
@@ -33,6 +34,7 @@ from ..numerics import roots as _roots
 from ..model import two_patch as _two
 from ..model.problem import Problem
 from ..model.single_patch import solver
+from ..notices import BranchLimitWarning
 from ..results import TwoPatchCurve, TwoPatchState
 from . import tracing as _tr
 
@@ -139,7 +141,10 @@ class CohesiveTwoPatch:
             v = np.asarray(getattr(b, key)) - target
             for i in _roots.sign_changes(v):
                 s = self._refine(b, i, key, target, self.n)
-                if s is not None:
+                if s is None:              # said, not dropped silently (as jkrcyl.analysis.tracing.states_at)
+                    warnings.warn(f"two-patch state at {key} = {target:.6g} not solved between the traced points "
+                                  f"{i} and {i + 1}", BranchLimitWarning, stacklevel=2)
+                else:
                     out.append(s)
         return out
 
@@ -182,9 +187,12 @@ class CohesiveTwoPatch:
         """The state in the bracket (i, i + 1) of branch b (:meth:`along`); Brent in x on key - target.  None
         where the bracket holds no state."""
         state, xs = self.along(b, i, i + 1, n)
+        ends = np.asarray(getattr(b, key))[[i, i + 1]] - target        # the traced states' values: not re-solved
         try:
+            _warm(state, xs)
+            lo, hi = (0, 1) if xs[0] < xs[1] else (1, 0)
             return self.result(state(_roots.brent(lambda x, _: self._held_numeric(state(x), key) - target,
-                                                  min(xs), max(xs), xtol=1e-13 * max(xs))))
+                                                  xs[lo], xs[hi], (), ends[lo], ends[hi], xtol=1e-13 * max(xs))))
         except ValueError:
             return None
 
@@ -247,6 +255,16 @@ def land_two_patch(pb: Problem, control: str, value: float) -> list:
 def gap_min(st) -> float:
     """min h/Delta outside both arcs (Chebyshev points of the open gap, clustered at the arc ends)."""
     return float(np.min(st.fields.gap(_two.exterior_angles(st.eps, st.eps_top, GAP_SAMPLES))))
+
+
+def _warm(state, xs):
+    """Solve the bracket's first end (else its second) so that the search's states start warm from it: cold from the
+    chord a tiny top arc's end may not be found (vartheta inf, gb 1/2, lambda 20, M_R* 0.5: eps_top 0.0091 -- its
+    zones far from the Dugdale estimate), and one state at a level was dropped."""
+    try:
+        state(xs[0])
+    except ValueError:
+        state(xs[1])
 
 
 @functools.lru_cache(maxsize=16)
