@@ -202,6 +202,7 @@ class CohesiveTwoPatch:
         or (state, 'target') where the fold lies past target (sgn * (key - target) > 0): the state at target
         between point i and the fold (Brent)."""
         state, xs = self.along(b, i, k)
+        _warm(state, xs)
         x, f = self._largest(state, xs, key, sgn)
         if sgn * (self._held_numeric(f, key) - target) <= 0:
             return self.result(f), "fold"
