@@ -261,11 +261,14 @@ def gap_min(st) -> float:
 def _warm(state, xs):
     """Solve the bracket's first end (else its second) so that the search's states start warm from it: cold from the
     chord a tiny top arc's end may not be found (vartheta inf, gb 1/2, lambda 20, M_R* 0.5: eps_top 0.0091 -- its
-    zones far from the Dugdale estimate), and one state at a level was dropped."""
-    try:
-        state(xs[0])
-    except ValueError:
-        state(xs[1])
+    zones far from the Dugdale estimate), and one state at a level was dropped.  Neither found: the search starts
+    cold, as before."""
+    for x in xs:
+        try:
+            state(x)
+            return
+        except ValueError:
+            continue
 
 
 @functools.lru_cache(maxsize=16)
