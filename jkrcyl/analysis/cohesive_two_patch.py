@@ -152,7 +152,8 @@ class CohesiveTwoPatch:
         """(state(x), xs) between points i and k of branch b: the half-angle that varies most held at x (xs: its
         values at i and k), the other solved -- from the chord for the first x, then warm from the state solved
         last (its offset from the chord, its zones, its Jacobian column: a search's states are close).  state(x)
-        is the numerics state (cohesive_two.TwoPatchCohesive; :meth:`result` makes it a TwoPatchState)."""
+        is the numerics state (cohesive_two.TwoPatchCohesive; :meth:`result` makes it a TwoPatchState); the
+        bracket's end is solved first (:func:`_warm`)."""
         e, et = b.eps[[i, k]], b.eps_top[[i, k]]
         held = int(abs(math.log(et[1] / et[0])) > abs(math.log(e[1] / e[0])))
         xs, ys = (e, et) if held == 0 else (et, e)
@@ -175,6 +176,7 @@ class CohesiveTwoPatch:
                     memo[x] = self._solve(held, x, chord(x), n)
                 last[:] = [(memo[x][0], memo[x][1], x)]
             return memo[x][0]
+        _warm(state, xs)
         return state, xs
 
     def _held_numeric(self, st, key: str) -> float:
@@ -189,7 +191,6 @@ class CohesiveTwoPatch:
         state, xs = self.along(b, i, i + 1, n)
         ends = np.asarray(getattr(b, key))[[i, i + 1]] - target        # the traced states' values: not re-solved
         try:
-            _warm(state, xs)
             lo, hi = (0, 1) if xs[0] < xs[1] else (1, 0)
             return self.result(state(_roots.brent(lambda x, _: self._held_numeric(state(x), key) - target,
                                                   xs[lo], xs[hi], (), ends[lo], ends[hi], xtol=1e-13 * max(xs))))
@@ -202,7 +203,6 @@ class CohesiveTwoPatch:
         or (state, 'target') where the fold lies past target (sgn * (key - target) > 0): the state at target
         between point i and the fold (Brent)."""
         state, xs = self.along(b, i, k)
-        _warm(state, xs)
         x, f = self._largest(state, xs, key, sgn)
         if sgn * (self._held_numeric(f, key) - target) <= 0:
             return self.result(f), "fold"
